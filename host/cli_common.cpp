@@ -1,0 +1,100 @@
+#include "cli_common.h"
+#include "error.h"
+#include <cstdlib>
+
+namespace tf {
+
+std::vector<FlagSpec> texture_flags()
+{
+    return {{"--texture", "T|PATH", "procedural texture (checker, zoneplate, grid, noise, mipcolors) or an image file"},
+            {"--texture-size", "N", "side of a procedural texture in texels (default 256)"},
+            {"--linear", "", "the image file holds data/linear values: no sRGB decode"}};
+}
+
+std::vector<FlagSpec> sampler_flags()
+{
+    return {{"--filter", "F", "nearest, bilinear, trilinear, nearest-mip, bilinear-mip, hw-nearest, hw-bilinear, "
+                              "hw-trilinear, hw-aniso"},
+            {"--wrap", "W", "repeat (default), clamp or mirror"},
+            {"--aniso", "N", "hw-aniso: maximum anisotropy, 1..16 (default 16)"},
+            {"--lod-bias", "B", "added to the LOD (default 0)"},
+            {"--lod-min", "L", "lowest LOD used (default 0)"},
+            {"--lod-max", "L", "highest LOD used (default: the last level)"},
+            {"--backend", "B", "vulkan (default) or reference (the CPU reference)"}};
+}
+
+std::vector<FlagSpec> device_flags()
+{
+    return {{"--device", "NAME|INDEX", "Vulkan device by index or part of its name (default: lavapipe)"},
+            {"--validate", "", "enable the Vulkan validation layers; any message is an error"},
+            {"--help", "", "show this help"}};
+}
+
+std::vector<FlagSpec> join(std::vector<std::vector<FlagSpec>> groups)
+{
+    std::vector<FlagSpec> out;
+    for (auto& g : groups)
+        out.insert(out.end(), g.begin(), g.end());
+    return out;
+}
+
+TextureSource texture_source_from(const Args& args)
+{
+    TextureSource source;
+    source.name_or_path = args.require("--texture");
+    source.procedural_size = args.get_int("--texture-size", 256, 1, max_texture_dimension);
+    source.color = args.has("--linear") ? ColorSpace::linear : ColorSpace::automatic;
+    return source;
+}
+
+SamplerOptions sampler_options_from(const Args& args)
+{
+    SamplerOptions options;
+    options.filter = parse_filter(args.require("--filter"));
+    options.wrap = parse_wrap(args.get("--wrap", "repeat"));
+    options.aniso = args.get_int("--aniso", 16, 1, 16);
+    options.lod_bias = float(args.get_double("--lod-bias", 0.0, -16.0, 16.0));
+    options.lod_min = float(args.get_double("--lod-min", 0.0, 0.0, 1000.0));
+    options.lod_max = float(args.get_double("--lod-max", 1000.0, 0.0, 1000.0));
+    if (options.lod_min > options.lod_max)
+        throw Error("bad values: --lod-min " + args.get("--lod-min", "0") + " is above --lod-max " +
+                    args.get("--lod-max", "1000"));
+    return options;
+}
+
+ContextOptions context_options_from(const Args& args)
+{
+    ContextOptions options;
+    options.device = args.get("--device", "");
+    const char* env = std::getenv("TEXFILTER_VALIDATE");
+    options.validate = args.has("--validate") || (env && std::string(env) == "1");
+    return options;
+}
+
+Backend backend_from(const Args& args)
+{
+    std::string name = args.get("--backend", "vulkan");
+    if (name == "vulkan")
+        return Backend::vulkan;
+    if (name == "reference")
+        return Backend::reference;
+    throw Error("bad value for --backend: '" + name + "' (expected vulkan or reference)");
+}
+
+void check_validation_clean()
+{
+    if (int n = validation_message_count(); n > 0)
+        throw Error(std::to_string(n) + " Vulkan validation message(s) reported (printed above); no output written");
+}
+
+GpuSession::GpuSession(const ContextOptions& options) : context(create_context(options)) {}
+
+GpuSession::~GpuSession() { destroy_context(context); }
+
+void GpuSession::finish()
+{
+    destroy_context(context);
+    check_validation_clean();
+}
+
+} // namespace tf

@@ -1,0 +1,37 @@
+#pragma once
+// Flags and helpers shared by the CLI commands (render, sample, golden, info).
+#include "args.h"
+#include "filter.h"
+#include "texture_source.h"
+#include "vk_context.h"
+#include <vector>
+
+namespace tf {
+
+enum class Backend { vulkan, reference };
+
+std::vector<FlagSpec> texture_flags();
+std::vector<FlagSpec> sampler_flags();
+std::vector<FlagSpec> device_flags();
+std::vector<FlagSpec> join(std::vector<std::vector<FlagSpec>> groups);
+
+TextureSource texture_source_from(const Args& args);
+SamplerOptions sampler_options_from(const Args& args);
+ContextOptions context_options_from(const Args& args);
+Backend backend_from(const Args& args);
+
+// A Vulkan context for one command. finish() destroys it and turns any validation message into an
+// error, so a command can check before it writes its output file.
+struct GpuSession {
+    VulkanContext context;
+    explicit GpuSession(const ContextOptions& options);
+    ~GpuSession();
+    void finish();
+    GpuSession(const GpuSession&) = delete;
+    GpuSession& operator=(const GpuSession&) = delete;
+};
+
+// Throws tf::Error if the validation layers reported anything so far.
+void check_validation_clean();
+
+} // namespace tf

@@ -1,0 +1,136 @@
+#include "cli_common.h"
+#include "commands.h"
+#include "error.h"
+#include "golden.h"
+#include "gpu_backend.h"
+#include "image_io.h"
+#include "reference_render.h"
+#include "report.h"
+#include <cstdio>
+#include <filesystem>
+
+#ifndef TEXFILTER_SOURCE_DIR
+#define TEXFILTER_SOURCE_DIR "."
+#endif
+
+namespace tf {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct GoldenRun {
+    std::string golden_dir, out_dir;
+    std::vector<GoldenCase> cases;
+};
+
+void update_goldens(const GoldenRun& run)
+{
+    for (const GoldenCase& c : run.cases) {
+        MipChain chain = load_texture(c.texture);
+        SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
+        std::string path = run.golden_dir + "/" + c.name + ".png";
+        write_image(path, reference_render(scene, chain, c.sampler));
+        std::printf("updated %s (CPU reference)\n", path.c_str());
+    }
+}
+
+int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
+{
+    GpuSession gpu(context_options);
+    std::vector<ReportCase> report;
+    int failures = 0;
+    fs::create_directories(run.out_dir);
+    for (const GoldenCase& c : run.cases) {
+        MipChain chain = load_texture(c.texture);
+        SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
+        GpuTexture texture = upload_texture(gpu.context, chain);
+        Image actual;
+        try {
+            actual = gpu_render(gpu.context, texture, scene, c.sampler);
+        } catch (...) {
+            destroy_texture(gpu.context, texture);
+            throw;
+        }
+        destroy_texture(gpu.context, texture);
+
+        std::string golden_path = run.golden_dir + "/" + c.name + ".png";
+        Image golden = read_image_raw(golden_path);
+        if (golden.width != c.width || golden.height != c.height)
+            throw Error(golden_path + ": is " + std::to_string(golden.width) + "x" + std::to_string(golden.height) +
+                        ", the case renders " + std::to_string(c.width) + "x" + std::to_string(c.height) +
+                        " (run texfilter golden --update)");
+        Image encoded = encode_srgb(actual);
+        DiffResult result = diff_images(encoded, golden, c.thresholds);
+        ReportCase entry{c.name, result.pass, describe(result, c.thresholds), "", "", ""};
+        if (!result.pass) {
+            ++failures;
+            for (const char* sub : {"actual", "golden", "diff"})
+                fs::create_directories(run.out_dir + "/" + sub);
+            entry.actual_png = "actual/" + c.name + ".png";
+            entry.golden_png = "golden/" + c.name + ".png";
+            entry.diff_png = "diff/" + c.name + ".png";
+            write_image(run.out_dir + "/" + entry.actual_png, actual);
+            fs::copy_file(golden_path, run.out_dir + "/" + entry.golden_png, fs::copy_options::overwrite_existing);
+            // Amplified so that one 8-bit step shows; the diff is of sRGB-encoded values.
+            write_image(run.out_dir + "/" + entry.diff_png, diff_image(encoded, golden, 32.0));
+        }
+        std::printf("%-40s %s  max %.5f  over %.3f%%\n", c.name.c_str(), result.pass ? "PASS" : "FAIL",
+                    result.max_error, result.fail_percent);
+        std::fflush(stdout);
+        report.push_back(entry);
+    }
+    std::string device_name = gpu.context.info.name;
+    gpu.finish();
+    std::string report_path = run.out_dir + "/report.html";
+    write_html_report(report_path, "texfilter golden regression on " + device_name, report);
+    std::printf("%zu cases, %d failed; report: %s\n", run.cases.size(), failures, report_path.c_str());
+    return failures == 0 ? 0 : 1;
+}
+
+} // namespace
+
+int run_golden(const std::vector<std::string>& argv)
+{
+    std::vector<FlagSpec> specs = join({{{"--update", "", "regenerate the golden images from the CPU reference"},
+                                         {"--case", "NAME", "only this case (repeat with commas: a,b)"},
+                                         {"--golden-dir", "DIR", "where manifest.txt and the images are (default: "
+                                                                 "the source tree's golden/)"},
+                                         {"--out", "DIR", "where failures and report.html go (default golden-out)"}},
+                                        device_flags()});
+    Args args = parse_args("golden", argv, specs, 0);
+    if (args.has("--help")) {
+        std::fputs(format_help("texfilter golden [--update] [--case NAME] [--out DIR]", specs).c_str(), stdout);
+        return 0;
+    }
+    GoldenRun run;
+    run.golden_dir = args.get("--golden-dir", std::string(TEXFILTER_SOURCE_DIR) + "/golden");
+    run.out_dir = args.get("--out", "golden-out");
+    std::vector<GoldenCase> all = read_manifest(run.golden_dir + "/manifest.txt");
+    if (args.has("--case")) {
+        std::string list = args.get("--case", "") + ",";
+        for (size_t start = 0, comma; (comma = list.find(',', start)) != std::string::npos; start = comma + 1) {
+            std::string name = list.substr(start, comma - start);
+            bool found = false;
+            for (const GoldenCase& c : all)
+                if (c.name == name) {
+                    run.cases.push_back(c);
+                    found = true;
+                }
+            if (!found)
+                throw Error("bad value for --case: no golden case named '" + name + "' in " + run.golden_dir +
+                            "/manifest.txt");
+        }
+    } else {
+        run.cases = all;
+    }
+    if (!image_io_available())
+        throw Error("golden needs image I/O, which was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON)");
+    if (args.has("--update")) {
+        update_goldens(run);
+        return 0;
+    }
+    return check_goldens(run, context_options_from(args));
+}
+
+} // namespace tf

@@ -1,0 +1,62 @@
+#include "cli_common.h"
+#include "commands.h"
+#include "error.h"
+#include "gpu_backend.h"
+#include "image_io.h"
+#include "reference_render.h"
+#include "scene.h"
+#include <cstdio>
+
+namespace tf {
+
+int run_render(const std::vector<std::string>& argv)
+{
+    std::vector<FlagSpec> specs = join(
+        {{{"--scene", "S", "plane, tunnel, zoom, minify or slanted"}},
+         texture_flags(),
+         sampler_flags(),
+         {{"--size", "WxH", "image size, even sides (default 256x256)"}, {"-o", "OUT", "output .png (8-bit sRGB) or .exr (linear half)"}},
+         device_flags()});
+    Args args = parse_args("render", argv, specs, 0);
+    if (args.has("--help")) {
+        std::fputs(format_help("texfilter render --scene S --texture T|PATH --filter F [--size WxH] "
+                               "[--backend vulkan|reference] [--aniso N] -o OUT.png|OUT.exr",
+                               specs)
+                       .c_str(),
+                   stdout);
+        return 0;
+    }
+    SceneKind kind = parse_scene(args.require("--scene"));
+    SamplerOptions options = sampler_options_from(args);
+    Backend backend = backend_from(args);
+    auto [width, height] = parse_size("--size", args.get("--size", "256x256"), 2, 8192);
+    if (width % 2 || height % 2)
+        throw Error("bad value for --size: '" + args.get("--size", "") + "' (sides must be even: derivatives come from 2x2 quads)");
+    std::string out = args.require("-o");
+    if (!image_io_available())
+        throw Error(out + ": image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON)");
+    TextureSource source = texture_source_from(args);
+    MipChain chain = load_texture(source);
+    SceneParams scene = make_scene(kind, width, height, chain.levels[0].width);
+
+    Image image;
+    if (backend == Backend::reference) {
+        image = reference_render(scene, chain, options);
+    } else {
+        GpuSession gpu(context_options_from(args));
+        GpuTexture texture = upload_texture(gpu.context, chain);
+        try {
+            image = gpu_render(gpu.context, texture, scene, options);
+        } catch (...) {
+            destroy_texture(gpu.context, texture);
+            throw;
+        }
+        destroy_texture(gpu.context, texture);
+        gpu.finish();
+    }
+    write_image(out, image);
+    std::printf("%s\n", out.c_str());
+    return 0;
+}
+
+} // namespace tf

@@ -1,0 +1,29 @@
+#pragma once
+// Golden regression cases: golden/manifest.txt lists scene x texture x filter x options with
+// idiff-style thresholds; golden/<name>.png holds the CPU reference's image (8-bit sRGB).
+#include "diff.h"
+#include "filter.h"
+#include "scene.h"
+#include "texture_source.h"
+#include <string>
+#include <vector>
+
+namespace tf {
+
+struct GoldenCase {
+    std::string name;
+    SceneKind scene = SceneKind::plane;
+    TextureSource texture;
+    SamplerOptions sampler;
+    int width = 256, height = 256;
+    DiffThresholds thresholds; // in sRGB-encoded units, compared before 8-bit quantisation of the GPU side
+};
+
+// One case a line: NAME SCENE TEXTURE FILTER [key=value ...]; keys: wrap, lod-bias, lod-min, lod-max,
+// texture-size, size (WxH), fail, failpercent, hardfail. '#' starts a comment. Throws naming file:line.
+std::vector<GoldenCase> read_manifest(const std::string& path);
+
+// Linear image -> sRGB-encoded values in float (no quantisation), alpha unchanged.
+Image encode_srgb(const Image& linear);
+
+} // namespace tf

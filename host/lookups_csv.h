@@ -1,0 +1,21 @@
+#pragma once
+// The `sample` command's files: lookups in (u,v,dudx,dvdx,dudy,dvdy), colours out (r,g,b,a).
+#include "reference.h"
+#include <glm/vec4.hpp>
+#include <string>
+#include <vector>
+
+namespace tf {
+
+// Throws tf::Error naming the file and line for a missing/empty file, a wrong header, a row without
+// six numbers, or more than max_lookups rows. "nan" and "inf" are accepted: filters must cope.
+std::vector<Lookup> read_lookups_csv(const std::string& path);
+constexpr size_t max_lookups = 16u << 20;
+
+// Writes "r,g,b,a" rows (9 significant digits) atomically: temp file, then rename.
+void write_colors_csv(const std::string& path, const std::vector<glm::dvec4>& colors);
+
+// Writes text to path via a temporary file and a rename, so a failure leaves no partial file.
+void write_file_atomic(const std::string& path, const std::string& content);
+
+} // namespace tf

@@ -1,0 +1,124 @@
+#include "reference.h"
+
+#include "error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace tf {
+
+namespace {
+
+// Beyond 2^52 every double is an integer and fractions vanish; clamping there keeps the
+// conversion to long long defined for any finite uv (e.g. 1e30) without changing the result's form.
+constexpr double kMaxTexel = 4503599627370496.0; // 2^52
+
+double clamp_texel(double x) { return std::clamp(x, -kMaxTexel, kMaxTexel); }
+
+glm::dvec4 fetch(const Image& level, long long i, long long j, Wrap wrap) {
+    return glm::dvec4(level.at(wrap_texel(i, level.width, wrap), wrap_texel(j, level.height, wrap)));
+}
+
+const Image& level_at(const MipChain& chain, int l) {
+    const int last = int(chain.levels.size()) - 1;
+    return chain.levels[size_t(std::clamp(l, 0, last))];
+}
+
+// The LOD after the sampler's clamps: [lod_min, lod_max], then [0, levels-1].
+double clamped_lod(const MipChain& chain, const Lookup& lookup, const SamplerOptions& options) {
+    double d = reference_lod(chain, lookup, options);
+    d = std::min(std::max(d, double(options.lod_min)), double(options.lod_max));
+    if (std::isnan(d)) d = INFINITY; // e.g. -inf + inf bias: fall back to the coarsest level, like non-finite input
+    const double top = double(chain.levels.size() - 1);
+    return std::min(std::max(d, 0.0), top);
+}
+
+} // namespace
+
+int wrap_texel(long long i, int size, Wrap wrap) {
+    if (size < 1) throw Error("wrap_texel: size " + std::to_string(size) + " < 1");
+    const long long n = size;
+    switch (wrap) {
+    case Wrap::repeat:
+        return int(((i % n) + n) % n);
+    case Wrap::clamp:
+        return int(std::clamp(i, 0LL, n - 1));
+    case Wrap::mirror: {
+        // Vulkan mirrored repeat: period 2n, second half reversed.
+        const long long t = ((i % (2 * n)) + 2 * n) % (2 * n);
+        return int(t < n ? t : 2 * n - 1 - t);
+    }
+    }
+    throw Error("wrap_texel: invalid wrap mode");
+}
+
+double reference_lod(const MipChain& chain, const Lookup& lookup, const SamplerOptions& options) {
+    if (chain.levels.empty()) throw Error("reference_lod: empty MIP chain");
+    if (!std::isfinite(lookup.dudx) || !std::isfinite(lookup.dvdx) || !std::isfinite(lookup.dudy) ||
+        !std::isfinite(lookup.dvdy))
+        return INFINITY;
+    const double w0 = chain.levels[0].width, h0 = chain.levels[0].height;
+    const double rho_x = std::hypot(lookup.dudx * w0, lookup.dvdx * h0);
+    const double rho_y = std::hypot(lookup.dudy * w0, lookup.dvdy * h0);
+    const double rho = std::max(rho_x, rho_y);
+    if (rho == 0.0) return -INFINITY;
+    return std::log2(rho) + double(options.lod_bias);
+}
+
+glm::dvec4 reference_nearest(const Image& level, double u, double v, Wrap wrap) {
+    if (!std::isfinite(u) || !std::isfinite(v)) return glm::dvec4(0.0);
+    const auto i = (long long)std::floor(clamp_texel(u * level.width));
+    const auto j = (long long)std::floor(clamp_texel(v * level.height));
+    return fetch(level, i, j, wrap);
+}
+
+glm::dvec4 reference_bilinear(const Image& level, double u, double v, Wrap wrap) {
+    if (!std::isfinite(u) || !std::isfinite(v)) return glm::dvec4(0.0);
+    const double x = clamp_texel(u * level.width - 0.5), y = clamp_texel(v * level.height - 0.5);
+    const double fx = std::floor(x), fy = std::floor(y);
+    const double a = x - fx, b = y - fy;
+    const auto i0 = (long long)fx, j0 = (long long)fy;
+    return (1 - a) * (1 - b) * fetch(level, i0, j0, wrap) + a * (1 - b) * fetch(level, i0 + 1, j0, wrap) +
+           (1 - a) * b * fetch(level, i0, j0 + 1, wrap) + a * b * fetch(level, i0 + 1, j0 + 1, wrap);
+}
+
+glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
+    if (chain.levels.empty()) throw Error("reference_sample: empty MIP chain");
+    if (options.filter == Filter::hw_aniso)
+        throw Error("hw-aniso has no CPU reference: anisotropic filtering is implementation-defined in Vulkan");
+    if (!std::isfinite(lookup.u) || !std::isfinite(lookup.v)) return glm::dvec4(0.0);
+
+    const Image& base = chain.levels[0];
+    switch (options.filter) {
+    case Filter::nearest:
+    case Filter::hw_nearest:
+        return reference_nearest(base, lookup.u, lookup.v, options.wrap);
+    case Filter::bilinear:
+    case Filter::hw_bilinear:
+        return reference_bilinear(base, lookup.u, lookup.v, options.wrap);
+    case Filter::nearest_mip:
+    case Filter::bilinear_mip: {
+        // Vulkan mipmapMode NEAREST: level = ceil(d + 1/2) - 1, so d = 0.5 still picks level 0.
+        const double d = clamped_lod(chain, lookup, options);
+        const Image& level = level_at(chain, int(std::ceil(d + 0.5)) - 1);
+        return options.filter == Filter::nearest_mip ? reference_nearest(level, lookup.u, lookup.v, options.wrap)
+                                                     : reference_bilinear(level, lookup.u, lookup.v, options.wrap);
+    }
+    case Filter::trilinear:
+    case Filter::hw_trilinear: {
+        const double d = clamped_lod(chain, lookup, options);
+        const int lo = int(std::floor(d));
+        const double f = d - lo;
+        const glm::dvec4 low = reference_bilinear(level_at(chain, lo), lookup.u, lookup.v, options.wrap);
+        if (f == 0.0 || lo + 1 >= int(chain.levels.size())) return low;
+        const glm::dvec4 high = reference_bilinear(level_at(chain, lo + 1), lookup.u, lookup.v, options.wrap);
+        return (1 - f) * low + f * high;
+    }
+    case Filter::hw_aniso:
+        break;
+    }
+    throw Error("reference_sample: invalid filter");
+}
+
+} // namespace tf

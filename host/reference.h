@@ -1,0 +1,31 @@
+#pragma once
+// The CPU reference: every filter written from the Vulkan spec's texel-filtering math in double
+// precision, independently of the GLSL. Goldens come from here and nowhere else.
+#include "filter.h"
+#include "mip.h"
+#include <glm/vec4.hpp>
+
+namespace tf {
+
+// One point lookup: uv in [0,1] texture space, gradients per pixel (d(u,v)/dx and d(u,v)/dy) in uv units.
+struct Lookup {
+    double u = 0, v = 0;
+    double dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
+};
+
+// Integer texel coordinate wrapped into [0, size) (Vulkan repeat, clamp-to-edge, mirrored repeat).
+int wrap_texel(long long i, int size, Wrap wrap);
+
+// Unclamped LOD: log2(rho) + bias, rho = max(|J e_x|, |J e_y|) with J in level-0 texels.
+// Zero gradients give -inf; non-finite gradients give +inf (the coarsest level: safe, never a hang).
+double reference_lod(const MipChain& chain, const Lookup& lookup, const SamplerOptions& options);
+
+// Nearest / bilinear on one level (u_l = u * w_l; linear uses i0 = floor(u_l - 0.5), alpha = frac).
+glm::dvec4 reference_nearest(const Image& level, double u, double v, Wrap wrap);
+glm::dvec4 reference_bilinear(const Image& level, double u, double v, Wrap wrap);
+
+// The full filter. hw-* filters map to the spec formula of the same mode (hw-nearest = nearest, ...);
+// hw-aniso throws tf::Error (its footprint is implementation-defined). Non-finite uv returns (0,0,0,0).
+glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+
+} // namespace tf

@@ -1,0 +1,15 @@
+#pragma once
+// The CPU reference applied to whole scenes and lookup lists (multithreaded over rows / chunks).
+#include "reference.h"
+#include "scene.h"
+#include <glm/vec4.hpp>
+#include <vector>
+
+namespace tf {
+
+Image reference_render(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options);
+
+std::vector<glm::dvec4> reference_sample_all(const MipChain& chain, const std::vector<Lookup>& lookups,
+                                             const SamplerOptions& options);
+
+} // namespace tf

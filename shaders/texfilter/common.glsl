@@ -1,0 +1,57 @@
+// texfilter/common.glsl — shared pieces of every texfilter include: sampler options, wrap modes,
+// wrapped texel fetch.
+//
+// Use:     #include "texfilter/common.glsl" (the filter includes pull it in themselves).
+// Options: none. Conventions (DESIGN.md §3): texel space u = s·w_l with w_l = max(1, w >> l);
+//          wrap modes act on integer texel coordinates before texelFetch, so any sampler2D works.
+// Example: tf_Sampler s = tf_sampler(TF_WRAP_REPEAT);
+//          vec4 c = tf_fetch(tex, ivec2(-1, 3), 0, s.wrap); // texel (w-1, 3) of level 0
+#ifndef TF_COMMON_GLSL
+#define TF_COMMON_GLSL
+
+#define TF_WRAP_REPEAT 0
+#define TF_WRAP_CLAMP 1  // clamp to edge
+#define TF_WRAP_MIRROR 2 // mirrored repeat
+
+// Everything that selects how a lookup is filtered, apart from the filter itself.
+struct tf_Sampler {
+    int wrap;      // TF_WRAP_*
+    float lodBias; // added to log2(rho)
+    float lodMin;  // the biased LOD is clamped to [lodMin, lodMax], then to [0, levels-1]
+    float lodMax;
+};
+
+tf_Sampler tf_sampler(int wrap) { return tf_Sampler(wrap, 0.0, 0.0, 1000.0); }
+
+// Texel coordinates past ±2^24 carry no information in float; clamping there keeps int math defined.
+const float TF_MAX_TEXEL_COORD = 16777216.0;
+
+// Wraps an integer-valued float texel coordinate into [0, size). GLSL's % is undefined for negative
+// operands, so the coordinate is shifted positive first.
+int tf_wrap(float i, int size, int wrapMode)
+{
+    int t = int(clamp(i, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD));
+    if (wrapMode == TF_WRAP_CLAMP)
+        return clamp(t, 0, size - 1);
+    if (wrapMode == TF_WRAP_MIRROR) {
+        int period = 2 * size;
+        int m = (t + (16777216 / period + 1) * period) % period;
+        return m < size ? m : period - 1 - m;
+    }
+    return (t + (16777216 / size + 1) * size) % size;
+}
+
+// Size of a MIP level by the Vulkan floor rule. Derived from level 0 on purpose: textureSize() with a
+// level that differs across a SIMD batch returned the wrong lane's size on lavapipe (Mesa 22.3).
+ivec2 tf_level_size(sampler2D tex, int level) { return max(textureSize(tex, 0) >> level, ivec2(1)); }
+
+vec4 tf_fetch(sampler2D tex, ivec2 texel, int level, int wrapMode)
+{
+    ivec2 size = tf_level_size(tex, level);
+    return texelFetch(tex, ivec2(tf_wrap(float(texel.x), size.x, wrapMode),
+                                 tf_wrap(float(texel.y), size.y, wrapMode)), level);
+}
+
+bool tf_finite(vec2 v) { return !any(isnan(v)) && !any(isinf(v)); }
+
+#endif
