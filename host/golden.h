@@ -16,7 +16,9 @@ struct GoldenCase {
     TextureSource texture;
     SamplerOptions sampler;
     int width = 256, height = 256;
-    DiffThresholds thresholds; // in sRGB-encoded units, compared before 8-bit quantisation of the GPU side
+    // In sRGB-encoded units, GPU side not quantised. Default: half an 8-bit step (the golden's own
+    // rounding) plus float32 error; no pixel may be further off unless the manifest allows it.
+    DiffThresholds thresholds{0.0025, 0.0, 0.0025};
 };
 
 // One case a line: NAME SCENE TEXTURE FILTER [key=value ...]; keys: wrap, lod-bias, lod-min, lod-max,

@@ -1,0 +1,204 @@
+// Manual filters (GLSL includes) vs the hardware sampler, through `texfilter sample` on random lookups.
+// The hardware is allowed exactly what Vulkan lets it round: texel weights to subTexelPrecisionBits
+// (8 on lavapipe) and the level blend to mipmapPrecisionBits (4), plus lavapipe's approximate log2
+// in the LOD (measured ~0.04, DESIGN.md section 4). Anything beyond that is a bug in one of the two.
+#include "lookups_csv.h"
+#include "procedural.h"
+#include "reference.h"
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+#include <glm/glm.hpp>
+#include <unistd.h>
+
+using namespace tf;
+
+namespace {
+
+const double sub_texel_step = 1.0 / 256.0;      // 2^-subTexelPrecisionBits, truncation worst case
+const double lod_error = 1.0 / 16.0 + 0.04;     // 2^-mipmapPrecisionBits + approximate log2
+const double float_error = 2e-6;
+
+std::string texfilter;
+std::filesystem::path work;
+int failures = 0;
+
+std::vector<glm::dvec4> run_sample(const std::string& texture, const std::string& filter, const std::string& wrap,
+                                   const std::string& lookups)
+{
+    std::string out = (work / (texture + "-" + filter + "-" + wrap + ".csv")).string();
+    std::string command = "'" + texfilter + "' sample --validate --texture " + texture + " --filter " + filter +
+                          " --wrap " + wrap + " --lookups '" + lookups + "' -o '" + out + "' > /dev/null";
+    if (std::system(command.c_str()) != 0) {
+        std::fprintf(stderr, "FAIL: command failed: %s\n", command.c_str());
+        std::exit(1);
+    }
+    std::ifstream in(out);
+    std::string line;
+    std::getline(in, line); // header
+    std::vector<glm::dvec4> colors;
+    while (std::getline(in, line)) {
+        glm::dvec4 c;
+        std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &c.r, &c.g, &c.b, &c.a);
+        colors.push_back(c);
+    }
+    return colors;
+}
+
+double max_channel_diff(glm::dvec4 a, glm::dvec4 b)
+{
+    glm::dvec4 d = glm::abs(a - b);
+    return std::max(std::max(d.r, d.g), std::max(d.b, d.a));
+}
+
+// How far 8-bit weights can move a bilinear lookup: one weight step times the texel differences.
+double bilinear_tolerance(const Image& level, double u, double v, Wrap wrap)
+{
+    double x = u * level.width - 0.5, y = v * level.height - 0.5;
+    long long i0 = (long long)std::floor(x), j0 = (long long)std::floor(y);
+    glm::dvec4 t[2][2];
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+            t[j][i] = glm::dvec4(level.at(wrap_texel(i0 + i, level.width, wrap), wrap_texel(j0 + j, level.height, wrap)));
+    double across = std::max(max_channel_diff(t[0][0], t[0][1]), max_channel_diff(t[1][0], t[1][1]));
+    double down = std::max(max_channel_diff(t[0][0], t[1][0]), max_channel_diff(t[0][1], t[1][1]));
+    // A step in alpha moves both rows, a step in beta moves between rows (themselves moved by alpha).
+    return sub_texel_step * (across + down + across) + float_error;
+}
+
+std::vector<Lookup> random_lookups(int count, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> uv(-1.0, 2.0), angle(0.0, 6.283185307179586), octaves(-4.0, 9.0),
+        stretch(0.0, 2.0);
+    std::vector<Lookup> lookups;
+    for (int i = 0; i < count; ++i) {
+        double size = std::exp2(octaves(rng)) / 256.0; // footprint from 1/16 texel to 512 texels
+        double a = angle(rng), ratio = std::exp2(stretch(rng));
+        lookups.push_back({uv(rng), uv(rng), size * std::cos(a), size * std::sin(a), -size / ratio * std::sin(a),
+                           size / ratio * std::cos(a)});
+    }
+    return lookups;
+}
+
+void write_lookups(const std::string& path, const std::vector<Lookup>& lookups)
+{
+    std::ofstream out(path);
+    out << "u,v,dudx,dvdx,dudy,dvdy\n";
+    out.precision(9);
+    // Written as float: the GPU sees exactly these numbers, and so does the reference below.
+    for (const Lookup& l : lookups)
+        out << float(l.u) << "," << float(l.v) << "," << float(l.dudx) << "," << float(l.dvdx) << ","
+            << float(l.dudy) << "," << float(l.dvdy) << "\n";
+}
+
+struct Tally {
+    std::string name;
+    int checked = 0, over = 0;
+    double worst_ratio = 0;
+    void add(double error, double tolerance)
+    {
+        ++checked;
+        worst_ratio = std::max(worst_ratio, error / tolerance);
+        if (error > tolerance)
+            ++over;
+    }
+    void report()
+    {
+        std::printf("%-44s %5d lookups, worst error/tolerance %.3f, %d over -> %s\n", name.c_str(), checked,
+                    worst_ratio, over, over ? "FAIL" : "PASS");
+        if (over || checked == 0)
+            ++failures;
+    }
+};
+
+void compare(const std::string& texture, Wrap wrap, const std::vector<Lookup>& lookups, const std::string& path)
+{
+    std::string w = to_string(wrap);
+    MipChain chain = make_procedural(texture, 256);
+    SamplerOptions options;
+    options.wrap = wrap;
+
+    // nearest: identical except where the texel coordinate sits within one sub-texel step of an edge.
+    {
+        auto manual = run_sample(texture, "nearest", w, path), hw = run_sample(texture, "hw-nearest", w, path);
+        Tally tally{"nearest vs hw-nearest (" + texture + ", " + w + ")"};
+        for (size_t i = 0; i < lookups.size(); ++i) {
+            double fx = lookups[i].u * 256.0, fy = lookups[i].v * 256.0;
+            double edge = std::min(std::abs(fx - std::round(fx)), std::abs(fy - std::round(fy)));
+            if (edge > sub_texel_step)
+                tally.add(max_channel_diff(manual[i], hw[i]), float_error);
+        }
+        tally.report();
+    }
+    // bilinear: level 0 only on both sides.
+    {
+        auto manual = run_sample(texture, "bilinear", w, path), hw = run_sample(texture, "hw-bilinear", w, path);
+        Tally tally{"bilinear vs hw-bilinear (" + texture + ", " + w + ")"};
+        for (size_t i = 0; i < lookups.size(); ++i)
+            tally.add(max_channel_diff(manual[i], hw[i]),
+                      bilinear_tolerance(chain.levels[0], lookups[i].u, lookups[i].v, wrap));
+        tally.report();
+    }
+    // trilinear: the hardware may sit anywhere in [lambda - e, lambda + e]; trilinear is piecewise
+    // linear in lambda, so its extremes there are at the ends or at whole levels in between.
+    {
+        auto manual = run_sample(texture, "trilinear", w, path), hw = run_sample(texture, "hw-trilinear", w, path);
+        Tally tally{"trilinear vs hw-trilinear (" + texture + ", " + w + ")"};
+        int top = int(chain.levels.size()) - 1;
+        for (size_t i = 0; i < lookups.size(); ++i) {
+            const Lookup& l = lookups[i];
+            double lambda = std::clamp(reference_lod(chain, l, options), 0.0, double(top));
+            auto at = [&](double d) {
+                d = std::clamp(d, 0.0, double(top));
+                int lo = int(std::floor(d));
+                int hi = std::min(lo + 1, top);
+                double f = d - lo;
+                return (1 - f) * reference_bilinear(chain.levels[size_t(lo)], l.u, l.v, wrap) +
+                       f * reference_bilinear(chain.levels[size_t(hi)], l.u, l.v, wrap);
+            };
+            glm::dvec4 centre = at(lambda);
+            double spread = 0, weights = 0;
+            std::vector<double> probes = {lambda - lod_error, lambda + lod_error};
+            for (int k = int(std::ceil(lambda - lod_error)); k <= int(std::floor(lambda + lod_error)); ++k)
+                probes.push_back(k);
+            for (double d : probes)
+                spread = std::max(spread, max_channel_diff(at(d), centre));
+            for (int level = std::max(0, int(lambda - lod_error)); level <= std::min(top, int(lambda + lod_error) + 1); ++level)
+                weights = std::max(weights, bilinear_tolerance(chain.levels[size_t(level)], l.u, l.v, wrap));
+            tally.add(max_channel_diff(manual[i], hw[i]), spread + weights);
+        }
+        tally.report();
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: test_hw_vs_manual PATH/TO/texfilter\n");
+        return 2;
+    }
+    texfilter = argv[1];
+    work = std::filesystem::temp_directory_path() / ("texfilter-hw-vs-manual-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(work);
+    std::vector<Lookup> lookups = random_lookups(4096, 2026);
+    for (Lookup& l : lookups) // the reference sees the float-rounded values the GPU sees
+        l = {float(l.u), float(l.v), float(l.dudx), float(l.dvdx), float(l.dudy), float(l.dvdy)};
+    std::string path = (work / "lookups.csv").string();
+    write_lookups(path, lookups);
+    compare("noise", Wrap::repeat, lookups, path);
+    compare("checker", Wrap::clamp, lookups, path);
+    compare("zoneplate", Wrap::mirror, lookups, path);
+    std::filesystem::remove_all(work);
+    std::printf("%s\n", failures ? "FAILED" : "all passed");
+    return failures ? 1 : 0;
+}
