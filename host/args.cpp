@@ -1,6 +1,7 @@
 #include "args.h"
 #include "error.h"
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace tf {
@@ -15,7 +16,7 @@ std::string Args::require(const std::string& flag) const
 {
     auto it = values.find(flag);
     if (it == values.end())
-        throw Error("texfilter " + command + ": missing required flag " + flag + " (see --help)");
+        throw Error(command + ": missing required flag " + flag + " (see --help)");
     return it->second;
 }
 
@@ -32,6 +33,15 @@ int Args::get_int(const std::string& flag, int fallback, int min, int max) const
     return int(value);
 }
 
+namespace {
+std::string format_number(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof(text), "%g", value);
+    return text;
+}
+} // namespace
+
 double Args::get_double(const std::string& flag, double fallback, double min, double max) const
 {
     if (!has(flag))
@@ -40,8 +50,8 @@ double Args::get_double(const std::string& flag, double fallback, double min, do
     char* end = nullptr;
     double value = std::strtod(text.c_str(), &end);
     if (text.empty() || *end != '\0' || !std::isfinite(value) || value < min || value > max)
-        throw Error("bad value for " + flag + ": '" + text + "' (expected a number in [" + std::to_string(min) +
-                    ", " + std::to_string(max) + "])");
+        throw Error("bad value for " + flag + ": '" + text + "' (expected a number in [" + format_number(min) +
+                    ", " + format_number(max) + "])");
     return value;
 }
 
@@ -54,7 +64,7 @@ Args parse_args(const std::string& command, const std::vector<std::string>& argv
         std::string token = argv[i];
         if (token.size() < 2 || token[0] != '-') {
             if (args.positional.size() >= max_positional)
-                throw Error("texfilter " + command + ": unexpected argument '" + token + "' (see --help)");
+                throw Error(command + ": unexpected argument '" + token + "' (see --help)");
             args.positional.push_back(token);
             continue;
         }
@@ -70,18 +80,18 @@ Args parse_args(const std::string& command, const std::vector<std::string>& argv
             if (s.name == token)
                 spec = &s;
         if (!spec)
-            throw Error("texfilter " + command + ": unknown flag " + token + " (see --help)");
+            throw Error(command + ": unknown flag " + token + " (see --help)");
         if (args.has(token))
-            throw Error("texfilter " + command + ": flag " + token + " given twice");
+            throw Error(command + ": flag " + token + " given twice");
         if (spec->value.empty()) {
             if (has_inline)
-                throw Error("texfilter " + command + ": flag " + token + " takes no value");
+                throw Error(command + ": flag " + token + " takes no value");
             args.values[token] = "";
         } else if (has_inline) {
             args.values[token] = inline_value;
         } else {
             if (i + 1 >= argv.size())
-                throw Error("texfilter " + command + ": flag " + token + " needs a value (" + spec->value + ")");
+                throw Error(command + ": flag " + token + " needs a value (" + spec->value + ")");
             args.values[token] = argv[++i];
         }
     }

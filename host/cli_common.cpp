@@ -50,8 +50,8 @@ TextureSource texture_source_from(const Args& args)
 SamplerOptions sampler_options_from(const Args& args)
 {
     SamplerOptions options;
-    options.filter = parse_filter(args.require("--filter"));
-    options.wrap = parse_wrap(args.get("--wrap", "repeat"));
+    options.filter = parse_flag(args, "--filter", "", parse_filter);
+    options.wrap = parse_flag(args, "--wrap", "repeat", parse_wrap);
     options.aniso = args.get_int("--aniso", 16, 1, 16);
     options.lod_bias = float(args.get_double("--lod-bias", 0.0, -16.0, 16.0));
     options.lod_min = float(args.get_double("--lod-min", 0.0, 0.0, 1000.0));

@@ -1,6 +1,7 @@
 #pragma once
 // Flags and helpers shared by the CLI commands (render, sample, golden, info).
 #include "args.h"
+#include "error.h"
 #include "filter.h"
 #include "texture_source.h"
 #include "vk_context.h"
@@ -19,6 +20,18 @@ TextureSource texture_source_from(const Args& args);
 SamplerOptions sampler_options_from(const Args& args);
 ContextOptions context_options_from(const Args& args);
 Backend backend_from(const Args& args);
+
+// parse(value of flag), with the flag's name put in front of any error ("bad value for --filter: ...").
+template <typename Parse>
+auto parse_flag(const Args& args, const std::string& flag, const std::string& fallback, Parse parse)
+{
+    std::string value = fallback.empty() ? args.require(flag) : args.get(flag, fallback);
+    try {
+        return parse(value);
+    } catch (const Error& e) {
+        throw Error("bad value for " + flag + ": " + e.what());
+    }
+}
 
 // A Vulkan context for one command. finish() destroys it and turns any validation message into an
 // error, so a command can check before it writes its output file.

@@ -3,6 +3,7 @@
 #include "diff.h"
 #include "error.h"
 #include "image_io.h"
+#include "output_path.h"
 #include <cstdio>
 #include <limits>
 
@@ -27,12 +28,14 @@ int run_diff(const std::vector<std::string>& argv)
             return 0;
         }
         if (args.positional.size() != 2)
-            throw Error("texfilter diff: needs two images, A and B");
+            throw Error("diff: needs two images, A and B");
         DiffThresholds thresholds;
         thresholds.fail = args.get_double("--fail", 1e-6, 0.0, 1e30);
         thresholds.fail_percent = args.get_double("--failpercent", 0.0, 0.0, 100.0);
         thresholds.hard_fail = args.get_double("--hardfail", std::numeric_limits<double>::infinity(), 0.0,
                                                std::numeric_limits<double>::infinity());
+        if (args.has("-o"))
+            check_output_path(args.get("-o", ""), {".png", ".exr"});
         Image a = read_image_raw(args.positional[0]);
         Image b = read_image_raw(args.positional[1]);
         if (a.width != b.width || a.height != b.height)

@@ -3,6 +3,7 @@
 #include "error.h"
 #include "gpu_backend.h"
 #include "image_io.h"
+#include "output_path.h"
 #include "reference_render.h"
 #include "scene.h"
 #include <cstdio>
@@ -26,7 +27,7 @@ int run_render(const std::vector<std::string>& argv)
                    stdout);
         return 0;
     }
-    SceneKind kind = parse_scene(args.require("--scene"));
+    SceneKind kind = parse_flag(args, "--scene", "", parse_scene);
     SamplerOptions options = sampler_options_from(args);
     Backend backend = backend_from(args);
     auto [width, height] = parse_size("--size", args.get("--size", "256x256"), 2, 8192);
@@ -35,6 +36,7 @@ int run_render(const std::vector<std::string>& argv)
     std::string out = args.require("-o");
     if (!image_io_available())
         throw Error(out + ": image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON)");
+    check_output_path(out, {".png", ".exr"});
     TextureSource source = texture_source_from(args);
     MipChain chain = load_texture(source);
     SceneParams scene = make_scene(kind, width, height, chain.levels[0].width);

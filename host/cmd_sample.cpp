@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "gpu_backend.h"
 #include "lookups_csv.h"
+#include "output_path.h"
 #include "reference_render.h"
 #include <cstdio>
 
@@ -26,6 +27,7 @@ int run_sample(const std::vector<std::string>& argv)
     SamplerOptions options = sampler_options_from(args);
     Backend backend = backend_from(args);
     std::string out = args.require("-o");
+    check_output_path(out, {".csv"});
     std::vector<Lookup> lookups = read_lookups_csv(args.require("--lookups"));
     MipChain chain = load_texture(texture_source_from(args));
 

@@ -38,6 +38,8 @@ std::string lower(std::string s) {
 // complain at exit, so every failure path drains the relevant queue into our message.
 std::string oiio_message(std::string text) {
     while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+    // One message, one line: OIIO joins several library errors with newlines.
+    for (size_t at; (at = text.find('\n')) != std::string::npos;) text.replace(at, 1, "; ");
     return text.empty() ? std::string("unknown OpenImageIO error") : text;
 }
 

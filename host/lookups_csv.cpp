@@ -22,6 +22,8 @@ std::string trim(const std::string& s)
 std::vector<Lookup> read_lookups_csv(const std::string& path)
 {
     std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw Error(path + ": is a directory, not a lookups file");
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(path + ": no such lookups file");
     std::ifstream in(path);
