@@ -1,6 +1,7 @@
 // Image files through OpenImageIO. OIIO stays inside this file so that the rest of the project
 // (and a lean build with image_io_stub.cpp instead) never sees its headers.
 #include "image_io.h"
+#include "output_path.h"
 
 #include "error.h"
 
@@ -15,14 +16,6 @@
 #include <string>
 #include <system_error>
 #include <vector>
-
-#ifdef _WIN32
-#include <process.h>
-#define TF_GETPID _getpid
-#else
-#include <unistd.h>
-#define TF_GETPID getpid
-#endif
 
 namespace tf {
 namespace {
@@ -231,7 +224,7 @@ void write_image(const std::string& path, const Image& image) {
         spec.attribute("compression", "zip");
     }
 
-    const std::string temp = path + ".tmp-" + std::to_string(long(TF_GETPID()));
+    const std::string temp = temporary_path_for(path);
     auto give_up = [&](const std::string& what) {
         if (out) {
             out->geterror();

@@ -2,10 +2,10 @@
 #include "error.h"
 #include <cstdio>
 #include <cstdlib>
+#include "output_path.h"
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 namespace tf {
 
@@ -63,27 +63,6 @@ std::vector<Lookup> read_lookups_csv(const std::string& path)
         lookups.push_back({values[0], values[1], values[2], values[3], values[4], values[5]});
     }
     return lookups;
-}
-
-void write_file_atomic(const std::string& path, const std::string& content)
-{
-    std::string temp = path + ".tmp-" + std::to_string(getpid());
-    {
-        std::ofstream out(temp, std::ios::binary);
-        if (out)
-            out << content;
-        out.close();
-        if (!out) {
-            std::remove(temp.c_str());
-            throw Error(path + ": cannot write the file");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::remove(temp.c_str());
-        throw Error(path + ": cannot write the file (" + ec.message() + ")");
-    }
 }
 
 void write_colors_csv(const std::string& path, const std::vector<glm::dvec4>& colors)

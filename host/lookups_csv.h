@@ -15,7 +15,4 @@ constexpr size_t max_lookups = 16u << 20;
 // Writes "r,g,b,a" rows (9 significant digits) atomically: temp file, then rename.
 void write_colors_csv(const std::string& path, const std::vector<glm::dvec4>& colors);
 
-// Writes text to path via a temporary file and a rename, so a failure leaves no partial file.
-void write_file_atomic(const std::string& path, const std::string& content);
-
 } // namespace tf

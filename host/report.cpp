@@ -1,4 +1,5 @@
 #include "report.h"
+#include "output_path.h"
 
 #include "error.h"
 
@@ -6,14 +7,6 @@
 #include <fstream>
 #include <sstream>
 #include <system_error>
-
-#ifdef _WIN32
-#include <process.h>
-#define TF_GETPID _getpid
-#else
-#include <unistd.h>
-#define TF_GETPID getpid
-#endif
 
 namespace tf {
 namespace {
@@ -97,24 +90,7 @@ std::string render(const std::string& title, const std::vector<ReportCase>& case
 } // namespace
 
 void write_html_report(const std::string& path, const std::string& title, const std::vector<ReportCase>& cases) {
-    const std::string text = render(title, cases);
-    const std::string temp = path + ".tmp-" + std::to_string(long(TF_GETPID()));
-    std::error_code ec;
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (out) out.write(text.data(), std::streamsize(text.size()));
-        out.close();
-        if (!out) {
-            std::filesystem::remove(temp, ec);
-            throw Error(path + ": cannot write the report");
-        }
-    }
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        throw Error(path + ": cannot move the report into place: " + ec.message());
-    }
+    write_file_atomic(path, render(title, cases));
 }
 
 } // namespace tf
