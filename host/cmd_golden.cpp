@@ -41,6 +41,8 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
     std::vector<ReportCase> report;
     int failures = 0;
     fs::create_directories(run.out_dir);
+    for (const char* sub : {"actual", "golden", "diff"}) // images of an earlier run would mislead
+        fs::remove_all(run.out_dir + "/" + sub);
     for (const GoldenCase& c : run.cases) {
         MipChain chain = load_texture(c.texture);
         SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
