@@ -46,7 +46,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
     for (const GoldenCase& c : run.cases) {
         MipChain chain = load_texture(c.texture);
         SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
-        GpuTexture texture = upload_texture(gpu.context, chain);
+        GpuTexture texture = upload_texture(gpu.context, chain, needs_sat(c.sampler.filter));
         Image actual;
         try {
             actual = gpu_render(gpu.context, texture, scene, c.sampler);

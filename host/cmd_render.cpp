@@ -46,7 +46,7 @@ int run_render(const std::vector<std::string>& argv)
         image = reference_render(scene, chain, options);
     } else {
         GpuSession gpu(context_options_from(args));
-        GpuTexture texture = upload_texture(gpu.context, chain);
+        GpuTexture texture = upload_texture(gpu.context, chain, needs_sat(options.filter));
         try {
             image = gpu_render(gpu.context, texture, scene, options);
         } catch (...) {

@@ -36,7 +36,7 @@ int run_sample(const std::vector<std::string>& argv)
         colors = reference_sample_all(chain, lookups, options);
     } else {
         GpuSession gpu(context_options_from(args));
-        GpuTexture texture = upload_texture(gpu.context, chain);
+        GpuTexture texture = upload_texture(gpu.context, chain, needs_sat(options.filter));
         std::vector<glm::vec4> results;
         try {
             results = gpu_sample(gpu.context, texture, lookups, options);

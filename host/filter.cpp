@@ -19,7 +19,15 @@ const std::pair<Filter, const char*> kFilterNames[] = {
     {Filter::hw_bilinear, "hw-bilinear"},
     {Filter::hw_trilinear, "hw-trilinear"},
     {Filter::hw_aniso, "hw-aniso"},
+    {Filter::brilinear, "brilinear"},
+    {Filter::aniso, "aniso"},
+    {Filter::ewa, "ewa"},
+    {Filter::sat, "sat"},
+    {Filter::sat_assembly, "sat-assembly"},
 };
+
+const std::pair<AnisoShape, const char*> kShapeNames[] = {{AnisoShape::gpu, "gpu"}, {AnisoShape::feline, "feline"}};
+const std::pair<Taps, const char*> kTapsNames[] = {{Taps::manual, "manual"}, {Taps::hardware, "hardware"}};
 
 const std::pair<Wrap, const char*> kWrapNames[] = {
     {Wrap::repeat, "repeat"},
@@ -37,19 +45,30 @@ std::string name_list(const Table& table) {
     return list;
 }
 
+template <typename Enum, size_t N>
+Enum parse_name(const std::pair<Enum, const char*> (&table)[N], const std::string& name, const char* what) {
+    for (const auto& [value, text] : table)
+        if (name == text) return value;
+    throw Error(std::string("unknown ") + what + " '" + name + "' (expected one of: " + name_list(table) + ")");
+}
+
+template <typename Enum, size_t N>
+std::string name_of(const std::pair<Enum, const char*> (&table)[N], Enum value, const char* what) {
+    for (const auto& [v, text] : table)
+        if (v == value) return text;
+    throw Error(std::string("invalid ") + what + " value " + std::to_string(int(value)));
+}
+
 } // namespace
 
-Filter parse_filter(const std::string& name) {
-    for (const auto& [filter, text] : kFilterNames)
-        if (name == text) return filter;
-    throw Error("unknown filter '" + name + "' (expected one of: " + name_list(kFilterNames) + ")");
-}
-
-std::string to_string(Filter filter) {
-    for (const auto& [f, text] : kFilterNames)
-        if (f == filter) return text;
-    throw Error("invalid Filter value " + std::to_string(int(filter)));
-}
+Filter parse_filter(const std::string& name) { return parse_name(kFilterNames, name, "filter"); }
+std::string to_string(Filter filter) { return name_of(kFilterNames, filter, "filter"); }
+Wrap parse_wrap(const std::string& name) { return parse_name(kWrapNames, name, "wrap mode"); }
+std::string to_string(Wrap wrap) { return name_of(kWrapNames, wrap, "wrap mode"); }
+AnisoShape parse_aniso_shape(const std::string& name) { return parse_name(kShapeNames, name, "aniso shape"); }
+std::string to_string(AnisoShape shape) { return name_of(kShapeNames, shape, "aniso shape"); }
+Taps parse_taps(const std::string& name) { return parse_name(kTapsNames, name, "taps form"); }
+std::string to_string(Taps taps) { return name_of(kTapsNames, taps, "taps form"); }
 
 const std::vector<Filter>& all_filters() {
     static const std::vector<Filter> filters = [] {
@@ -70,18 +89,6 @@ bool is_hardware(Filter filter) {
     default:
         return false;
     }
-}
-
-Wrap parse_wrap(const std::string& name) {
-    for (const auto& [wrap, text] : kWrapNames)
-        if (name == text) return wrap;
-    throw Error("unknown wrap mode '" + name + "' (expected one of: " + name_list(kWrapNames) + ")");
-}
-
-std::string to_string(Wrap wrap) {
-    for (const auto& [w, text] : kWrapNames)
-        if (w == wrap) return text;
-    throw Error("invalid Wrap value " + std::to_string(int(wrap)));
 }
 
 } // namespace tf

@@ -15,9 +15,19 @@ enum class Filter {
     hw_bilinear,
     hw_trilinear,
     hw_aniso,     // hardware anisotropic, maxAnisotropy = --aniso
+    brilinear,    // trilinear only in a band around level transitions (--band)
+    aniso,        // N trilinear probes along the major axis (--probes, --aniso-shape, --taps)
+    ewa,          // elliptical weighted average, Gaussian (--alpha, --max-aniso, --taps)
+    sat,          // summed-area table: box over the footprint's bounding box
+    sat_assembly, // summed-area table: K boxes along the major axis (--boxes)
 };
 
 enum class Wrap { repeat, clamp, mirror };
+
+// aniso: where probes go and how they are weighted (see shaders/texfilter/aniso.glsl).
+enum class AnisoShape { gpu, feline };
+// Multi-tap filters: taps from texelFetch (exact everywhere) or hardware bilinear/trilinear lookups.
+enum class Taps { manual, hardware };
 
 Filter parse_filter(const std::string& name); // throws tf::Error listing the valid names
 std::string to_string(Filter filter);
@@ -26,6 +36,10 @@ bool is_hardware(Filter filter);
 
 Wrap parse_wrap(const std::string& name);
 std::string to_string(Wrap wrap);
+AnisoShape parse_aniso_shape(const std::string& name);
+std::string to_string(AnisoShape shape);
+Taps parse_taps(const std::string& name);
+std::string to_string(Taps taps);
 
 // Everything that selects how one lookup is filtered. Matches the GLSL side (shaders/harness/config.h).
 struct SamplerOptions {
@@ -35,6 +49,13 @@ struct SamplerOptions {
     float lod_min = 0.0f;  // clamp of the biased LOD, then clamped to [0, levels-1]
     float lod_max = 1000.0f;
     int aniso = 16;        // hw-aniso only: maxAnisotropy
+    float band = 0.25f;    // brilinear: width of the trilinear band around each transition, 0..1
+    int probes = 16;       // aniso: maximum number of probes, 1..16
+    AnisoShape aniso_shape = AnisoShape::gpu;
+    Taps taps = Taps::manual; // aniso, ewa
+    float alpha = 2.0f;    // ewa: Gaussian exp(-alpha r^2)
+    float max_aniso = 16.0f; // ewa: eccentricity clamp (minor axis grown to major / max_aniso)
+    int boxes = 4;         // sat-assembly: boxes along the major axis, 1..16
 };
 
 } // namespace tf

@@ -1,6 +1,7 @@
 #include "gpu_backend.h"
 #include "../shaders/harness/config.h"
 #include "error.h"
+#include "sat.h"
 #include "vk_resources.h"
 #include <cstring>
 #include <functional>
@@ -34,6 +35,37 @@ VkDescriptorSetLayout create_set_layout(const VulkanContext& context, const std:
     return layout;
 }
 
+// The three textures every harness shader declares: the MIP chain and the two SAT words.
+std::vector<VkDescriptorSetLayoutBinding> texture_bindings(VkShaderStageFlags stage)
+{
+    return {{TF_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr},
+            {TF_BINDING_SAT_LOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr},
+            {TF_BINDING_SAT_HIGH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr}};
+}
+
+// Samplers for one pass: the filter's (see create_sampler) and a nearest one for the integer SAT.
+struct PassSamplers {
+    VkSampler texture = VK_NULL_HANDLE, table = VK_NULL_HANDLE;
+    VkDescriptorImageInfo infos[3];
+};
+
+void create_pass_samplers(const VulkanContext& context, const GpuTexture& texture, const SamplerOptions& options,
+                          PassSamplers& samplers, Cleanup& cleanup)
+{
+    VkDevice device = context.device;
+    samplers.texture = create_sampler(context, options, texture.levels);
+    VkSampler texture_sampler = samplers.texture;
+    cleanup.add([=] { vkDestroySampler(device, texture_sampler, nullptr); });
+    SamplerOptions nearest;
+    nearest.filter = Filter::hw_nearest;
+    samplers.table = create_sampler(context, nearest, 1);
+    VkSampler table_sampler = samplers.table;
+    cleanup.add([=] { vkDestroySampler(device, table_sampler, nullptr); });
+    samplers.infos[0] = {samplers.texture, texture.chain.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    samplers.infos[1] = {samplers.table, texture.sat_low.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    samplers.infos[2] = {samplers.table, texture.sat_high.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+}
+
 VkPipelineLayout create_pipeline_layout(const VulkanContext& context, VkDescriptorSetLayout set_layout,
                                         VkShaderStageFlags push_stages)
 {
@@ -48,15 +80,26 @@ VkPipelineLayout create_pipeline_layout(const VulkanContext& context, VkDescript
     return layout;
 }
 
-VkWriteDescriptorSet write_texture(VkDescriptorSet set, const VkDescriptorImageInfo* image)
+VkWriteDescriptorSet write_texture(VkDescriptorSet set, uint32_t binding, const VkDescriptorImageInfo* image)
 {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstSet = set;
-    w.dstBinding = TF_BINDING_TEXTURE;
+    w.dstBinding = binding;
     w.descriptorCount = 1;
     w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     w.pImageInfo = image;
     return w;
+}
+
+void destroy_image(const VulkanContext& context, GpuImage& image)
+{
+    if (image.view)
+        vkDestroyImageView(context.device, image.view, nullptr);
+    if (image.image)
+        vkDestroyImage(context.device, image.image, nullptr);
+    if (image.memory)
+        vkFreeMemory(context.device, image.memory, nullptr);
+    image = GpuImage{};
 }
 
 VkWriteDescriptorSet write_buffer(VkDescriptorSet set, uint32_t binding, VkDescriptorType type,
@@ -71,9 +114,83 @@ VkWriteDescriptorSet write_buffer(VkDescriptorSet set, uint32_t binding, VkDescr
     return w;
 }
 
+// A device-local sampled image with `levels` levels, filled from tightly packed level data.
+GpuImage upload_image(const VulkanContext& context, VkFormat format, const std::vector<VkExtent2D>& extents,
+                      const std::vector<const void*>& data, const std::vector<size_t>& bytes)
+{
+    VkDevice device = context.device;
+    GpuImage g;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {extents[0].width, extents[0].height, 1};
+    info.mipLevels = uint32_t(extents.size());
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    try {
+        TF_VK(vkCreateImage(device, &info, nullptr, &g.image));
+        VkMemoryRequirements requirements{};
+        vkGetImageMemoryRequirements(device, g.image, &requirements);
+        VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        allocate.allocationSize = requirements.size;
+        allocate.memoryTypeIndex =
+            find_memory_type(context, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        if (vkAllocateMemory(device, &allocate, nullptr, &g.memory) != VK_SUCCESS)
+            throw Error("out of device memory for a " + std::to_string(extents[0].width) + "x" +
+                        std::to_string(extents[0].height) + " texture on " + context.info.name);
+        TF_VK(vkBindImageMemory(device, g.image, g.memory, 0));
+
+        VkDeviceSize total = 0;
+        for (size_t b : bytes)
+            total += b;
+        Buffer staging = create_host_buffer(context, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        Cleanup cleanup;
+        cleanup.add([&] { destroy_buffer(context, staging); });
+        std::vector<VkBufferImageCopy> copies;
+        VkDeviceSize offset = 0;
+        for (size_t l = 0; l < extents.size(); ++l) {
+            std::memcpy(static_cast<char*>(staging.mapped) + offset, data[l], bytes[l]);
+            VkBufferImageCopy copy{};
+            copy.bufferOffset = offset;
+            copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, uint32_t(l), 0, 1};
+            copy.imageExtent = {extents[l].width, extents[l].height, 1};
+            copies.push_back(copy);
+            offset += bytes[l];
+        }
+        uint32_t levels = uint32_t(extents.size());
+        submit_and_wait(context, [&](VkCommandBuffer cb) {
+            image_barrier(cb, g.image, levels, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+                          VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT);
+            vkCmdCopyBufferToImage(cb, staging.buffer, g.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                   uint32_t(copies.size()), copies.data());
+            image_barrier(cb, g.image, levels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                          VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+        });
+
+        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        view.image = g.image;
+        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        view.format = format;
+        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, 1};
+        TF_VK(vkCreateImageView(device, &view, nullptr, &g.view));
+    } catch (...) {
+        destroy_image(context, g);
+        throw;
+    }
+    return g;
+}
+
 } // namespace
 
-GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain)
+bool needs_sat(Filter filter) { return filter == Filter::sat || filter == Filter::sat_assembly; }
+
+GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat)
 {
     const Image& base = chain.levels.at(0);
     uint32_t limit = context.info.max_image_dimension_2d;
@@ -84,67 +201,32 @@ GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain)
     t.width = base.width;
     t.height = base.height;
     t.levels = int(chain.levels.size());
-
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-    info.extent = {uint32_t(t.width), uint32_t(t.height), 1};
-    info.mipLevels = uint32_t(t.levels);
-    info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     try {
-        TF_VK(vkCreateImage(context.device, &info, nullptr, &t.image));
-        VkMemoryRequirements requirements{};
-        vkGetImageMemoryRequirements(context.device, t.image, &requirements);
-        VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-        allocate.allocationSize = requirements.size;
-        allocate.memoryTypeIndex =
-            find_memory_type(context, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        if (vkAllocateMemory(context.device, &allocate, nullptr, &t.memory) != VK_SUCCESS)
-            throw Error("out of device memory for a " + std::to_string(t.width) + "x" + std::to_string(t.height) +
-                        " RGBA32F texture on " + context.info.name);
-        TF_VK(vkBindImageMemory(context.device, t.image, t.memory, 0));
-
-        VkDeviceSize total = 0;
-        for (const Image& level : chain.levels)
-            total += VkDeviceSize(level.texels.size()) * sizeof(glm::vec4);
-        Buffer staging = create_host_buffer(context, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-        Cleanup cleanup;
-        cleanup.add([&] { destroy_buffer(context, staging); });
-        std::vector<VkBufferImageCopy> copies;
-        VkDeviceSize offset = 0;
-        for (size_t l = 0; l < chain.levels.size(); ++l) {
-            const Image& level = chain.levels[l];
-            size_t bytes = level.texels.size() * sizeof(glm::vec4);
-            std::memcpy(static_cast<char*>(staging.mapped) + offset, level.texels.data(), bytes);
-            VkBufferImageCopy copy{};
-            copy.bufferOffset = offset;
-            copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, uint32_t(l), 0, 1};
-            copy.imageExtent = {uint32_t(level.width), uint32_t(level.height), 1};
-            copies.push_back(copy);
-            offset += bytes;
+        std::vector<VkExtent2D> extents;
+        std::vector<const void*> data;
+        std::vector<size_t> bytes;
+        for (const Image& level : chain.levels) {
+            extents.push_back({uint32_t(level.width), uint32_t(level.height)});
+            data.push_back(level.texels.data());
+            bytes.push_back(level.texels.size() * sizeof(glm::vec4));
         }
-        submit_and_wait(context, [&](VkCommandBuffer cb) {
-            image_barrier(cb, t.image, uint32_t(t.levels), VK_IMAGE_LAYOUT_UNDEFINED,
-                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
-                          VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-            vkCmdCopyBufferToImage(cb, staging.buffer, t.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                   uint32_t(copies.size()), copies.data());
-            image_barrier(cb, t.image, uint32_t(t.levels), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                          VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-        });
+        t.chain = upload_image(context, VK_FORMAT_R32G32B32A32_SFLOAT, extents, data, bytes);
 
-        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-        view.image = t.image;
-        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-        view.format = info.format;
-        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, uint32_t(t.levels), 0, 1};
-        TF_VK(vkCreateImageView(context.device, &view, nullptr, &t.view));
+        SatTable sat;
+        if (with_sat) {
+            sat = build_sat(base);
+        } else { // a 1x1 zero table keeps the descriptor set valid for every filter
+            sat.low.assign(4, 0u);
+            sat.high.assign(1, 0u);
+        }
+        VkExtent2D sat_extent{uint32_t(sat.width + 1), uint32_t(sat.height + 1)};
+        if (!with_sat)
+            sat_extent = {1, 1};
+        t.sat_scale = sat.scale;
+        t.sat_low = upload_image(context, VK_FORMAT_R32G32B32A32_UINT, {sat_extent}, {sat.low.data()},
+                                 {sat.low.size() * sizeof(uint32_t)});
+        t.sat_high = upload_image(context, VK_FORMAT_R32_UINT, {sat_extent}, {sat.high.data()},
+                                  {sat.high.size() * sizeof(uint32_t)});
     } catch (...) {
         destroy_texture(context, t);
         throw;
@@ -154,12 +236,9 @@ GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain)
 
 void destroy_texture(const VulkanContext& context, GpuTexture& texture)
 {
-    if (texture.view)
-        vkDestroyImageView(context.device, texture.view, nullptr);
-    if (texture.image)
-        vkDestroyImage(context.device, texture.image, nullptr);
-    if (texture.memory)
-        vkFreeMemory(context.device, texture.memory, nullptr);
+    destroy_image(context, texture.chain);
+    destroy_image(context, texture.sat_low);
+    destroy_image(context, texture.sat_high);
     texture = GpuTexture{};
 }
 
@@ -208,12 +287,12 @@ Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const 
     cleanup.add([&] { destroy_buffer(context, uniforms); });
     std::memcpy(uniforms.mapped, &scene, sizeof(SceneParams));
 
-    VkSampler sampler = create_sampler(context, options, texture.levels);
-    cleanup.add([=] { vkDestroySampler(device, sampler, nullptr); });
+    PassSamplers samplers;
+    create_pass_samplers(context, texture, options, samplers, cleanup);
 
-    VkDescriptorSetLayout set_layout = create_set_layout(
-        context, {{TF_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-                  {TF_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
+    std::vector<VkDescriptorSetLayoutBinding> bindings = texture_bindings(VK_SHADER_STAGE_FRAGMENT_BIT);
+    bindings.push_back({TF_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+    VkDescriptorSetLayout set_layout = create_set_layout(context, bindings);
     cleanup.add([=] { vkDestroyDescriptorSetLayout(device, set_layout, nullptr); });
     VkPipelineLayout pipeline_layout = create_pipeline_layout(context, set_layout, VK_SHADER_STAGE_FRAGMENT_BIT);
     cleanup.add([=] { vkDestroyPipelineLayout(device, pipeline_layout, nullptr); });
@@ -273,14 +352,15 @@ Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const 
 
     DescriptorSet descriptors = allocate_descriptor_set(context, set_layout);
     cleanup.add([=] { vkDestroyDescriptorPool(device, descriptors.pool, nullptr); });
-    VkDescriptorImageInfo image_info{sampler, texture.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorBufferInfo uniform_info{uniforms.buffer, 0, sizeof(SceneParams)};
     VkWriteDescriptorSet writes[] = {
-        write_texture(descriptors.set, &image_info),
+        write_texture(descriptors.set, TF_BINDING_TEXTURE, &samplers.infos[0]),
+        write_texture(descriptors.set, TF_BINDING_SAT_LOW, &samplers.infos[1]),
+        write_texture(descriptors.set, TF_BINDING_SAT_HIGH, &samplers.infos[2]),
         write_buffer(descriptors.set, TF_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &uniform_info)};
-    vkUpdateDescriptorSets(device, 2, writes, 0, nullptr);
+    vkUpdateDescriptorSets(device, 4, writes, 0, nullptr);
 
-    PushConstants push = make_push_constants(options, 0);
+    PushConstants push = make_push_constants(options, 0, texture.sat_scale);
     submit_and_wait(context, [&](VkCommandBuffer cb) {
         image_barrier(cb, target, 1, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, 0,
                       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
@@ -321,7 +401,8 @@ Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const 
 }
 
 std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture& texture,
-                                  const std::vector<Lookup>& lookups, const SamplerOptions& options)
+                                  const std::vector<Lookup>& lookups, const SamplerOptions& options,
+                                  std::vector<LookupStats>* stats)
 {
     VkDevice device = context.device;
     Cleanup cleanup;
@@ -330,6 +411,8 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
     cleanup.add([&] { destroy_buffer(context, input); });
     Buffer output = create_host_buffer(context, VkDeviceSize(count) * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     cleanup.add([&] { destroy_buffer(context, output); });
+    Buffer counts = create_host_buffer(context, VkDeviceSize(count) * sizeof(LookupStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    cleanup.add([&] { destroy_buffer(context, counts); });
     float* in = static_cast<float*>(input.mapped);
     for (uint32_t i = 0; i < count; ++i) {
         const Lookup& l = lookups[i];
@@ -338,12 +421,12 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
             in[6 * i + k] = float(values[k]);
     }
 
-    VkSampler sampler = create_sampler(context, options, texture.levels);
-    cleanup.add([=] { vkDestroySampler(device, sampler, nullptr); });
-    VkDescriptorSetLayout set_layout = create_set_layout(
-        context, {{TF_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-                  {TF_BINDING_LOOKUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-                  {TF_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}});
+    PassSamplers samplers;
+    create_pass_samplers(context, texture, options, samplers, cleanup);
+    std::vector<VkDescriptorSetLayoutBinding> bindings = texture_bindings(VK_SHADER_STAGE_COMPUTE_BIT);
+    for (uint32_t binding : {TF_BINDING_LOOKUPS, TF_BINDING_RESULTS, TF_BINDING_STATS})
+        bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+    VkDescriptorSetLayout set_layout = create_set_layout(context, bindings);
     cleanup.add([=] { vkDestroyDescriptorSetLayout(device, set_layout, nullptr); });
     VkPipelineLayout pipeline_layout = create_pipeline_layout(context, set_layout, VK_SHADER_STAGE_COMPUTE_BIT);
     cleanup.add([=] { vkDestroyPipelineLayout(device, pipeline_layout, nullptr); });
@@ -361,16 +444,19 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
 
     DescriptorSet descriptors = allocate_descriptor_set(context, set_layout);
     cleanup.add([=] { vkDestroyDescriptorPool(device, descriptors.pool, nullptr); });
-    VkDescriptorImageInfo image_info{sampler, texture.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorBufferInfo in_info{input.buffer, 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo out_info{output.buffer, 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo stats_info{counts.buffer, 0, VK_WHOLE_SIZE};
     VkWriteDescriptorSet writes[] = {
-        write_texture(descriptors.set, &image_info),
+        write_texture(descriptors.set, TF_BINDING_TEXTURE, &samplers.infos[0]),
+        write_texture(descriptors.set, TF_BINDING_SAT_LOW, &samplers.infos[1]),
+        write_texture(descriptors.set, TF_BINDING_SAT_HIGH, &samplers.infos[2]),
         write_buffer(descriptors.set, TF_BINDING_LOOKUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &in_info),
-        write_buffer(descriptors.set, TF_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &out_info)};
-    vkUpdateDescriptorSets(device, 3, writes, 0, nullptr);
+        write_buffer(descriptors.set, TF_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &out_info),
+        write_buffer(descriptors.set, TF_BINDING_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &stats_info)};
+    vkUpdateDescriptorSets(device, 6, writes, 0, nullptr);
 
-    PushConstants push = make_push_constants(options, count);
+    PushConstants push = make_push_constants(options, count, texture.sat_scale);
     submit_and_wait(context, [&](VkCommandBuffer cb) {
         vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout, 0, 1, &descriptors.set, 0, nullptr);
@@ -384,6 +470,10 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
     });
     std::vector<glm::vec4> results(count);
     std::memcpy(results.data(), output.mapped, results.size() * sizeof(glm::vec4));
+    if (stats) {
+        stats->resize(count);
+        std::memcpy(stats->data(), counts.mapped, stats->size() * sizeof(LookupStats));
+    }
     return results;
 }
 

@@ -11,20 +11,36 @@
 
 namespace tf {
 
-struct GpuTexture {
+struct GpuImage {
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     VkImageView view = VK_NULL_HANDLE;
+};
+
+struct GpuTexture {
+    GpuImage chain;              // RGBA32F, every MIP level
+    GpuImage sat_low, sat_high;  // the summed-area table (1x1 zeros unless asked for)
+    float sat_scale = 1.0f;
     int width = 0, height = 0, levels = 0;
 };
 
-GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain);
+// with_sat: also build and upload the summed-area table (sat, sat-assembly filters).
+GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat);
 void destroy_texture(const VulkanContext& context, GpuTexture& texture);
+
+// Per-lookup cost counted by the shader through the includes' TF_COUNT_* hooks.
+struct LookupStats {
+    uint32_t texel_fetches = 0;
+    uint32_t hardware_lookups = 0;
+};
 
 Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
                  const SamplerOptions& options);
 
 std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture& texture,
-                                  const std::vector<Lookup>& lookups, const SamplerOptions& options);
+                                  const std::vector<Lookup>& lookups, const SamplerOptions& options,
+                                  std::vector<LookupStats>* stats = nullptr);
+
+bool needs_sat(Filter filter);
 
 } // namespace tf

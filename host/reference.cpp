@@ -83,6 +83,16 @@ glm::dvec4 reference_bilinear(const Image& level, double u, double v, Wrap wrap)
            (1 - a) * b * fetch(level, i0, j0 + 1, wrap) + a * b * fetch(level, i0 + 1, j0 + 1, wrap);
 }
 
+glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap) {
+    const double d = std::clamp(lod, 0.0, double(chain.levels.size() - 1));
+    const int lo = int(std::floor(d));
+    const double f = d - lo;
+    const glm::dvec4 low = reference_bilinear(level_at(chain, lo), u, v, wrap);
+    if (f == 0.0 || lo + 1 >= int(chain.levels.size())) return low;
+    const glm::dvec4 high = reference_bilinear(level_at(chain, lo + 1), u, v, wrap);
+    return (1 - f) * low + f * high;
+}
+
 glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
     if (chain.levels.empty()) throw Error("reference_sample: empty MIP chain");
     if (options.filter == Filter::hw_aniso)
@@ -106,15 +116,17 @@ glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options
                                                      : reference_bilinear(level, lookup.u, lookup.v, options.wrap);
     }
     case Filter::trilinear:
-    case Filter::hw_trilinear: {
-        const double d = clamped_lod(chain, lookup, options);
-        const int lo = int(std::floor(d));
-        const double f = d - lo;
-        const glm::dvec4 low = reference_bilinear(level_at(chain, lo), lookup.u, lookup.v, options.wrap);
-        if (f == 0.0 || lo + 1 >= int(chain.levels.size())) return low;
-        const glm::dvec4 high = reference_bilinear(level_at(chain, lo + 1), lookup.u, lookup.v, options.wrap);
-        return (1 - f) * low + f * high;
-    }
+    case Filter::hw_trilinear:
+        return reference_trilinear_at(chain, clamped_lod(chain, lookup, options), lookup.u, lookup.v, options.wrap);
+    case Filter::brilinear:
+        return reference_brilinear(chain, options, lookup);
+    case Filter::aniso:
+        return reference_aniso(chain, options, lookup);
+    case Filter::ewa:
+        return reference_ewa(chain, options, lookup);
+    case Filter::sat:
+    case Filter::sat_assembly:
+        return reference_sat(chain, options, lookup);
     case Filter::hw_aniso:
         break;
     }

@@ -24,6 +24,16 @@ double reference_lod(const MipChain& chain, const Lookup& lookup, const SamplerO
 glm::dvec4 reference_nearest(const Image& level, double u, double v, Wrap wrap);
 glm::dvec4 reference_bilinear(const Image& level, double u, double v, Wrap wrap);
 
+// Trilinear at a given LOD (clamped to [0, levels-1]): the building block of probes and hardware taps.
+glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap);
+
+// The filter families of reference_aniso.cpp, reference_ewa.cpp and reference_sat.cpp (see those files
+// and the matching shaders/texfilter/*.glsl headers for the math). uv is finite when these are called.
+glm::dvec4 reference_brilinear(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+glm::dvec4 reference_sat(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+
 // The full filter. hw-* filters map to the spec formula of the same mode (hw-nearest = nearest, ...);
 // hw-aniso throws tf::Error (its footprint is implementation-defined). Non-finite uv returns (0,0,0,0).
 glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);

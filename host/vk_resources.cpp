@@ -71,12 +71,14 @@ VkSampler create_sampler(const VulkanContext& context, const SamplerOptions& opt
     info.mipmapMode = level0_only ? VK_SAMPLER_MIPMAP_MODE_NEAREST : VK_SAMPLER_MIPMAP_MODE_LINEAR;
     info.addressModeU = info.addressModeV = info.addressModeW = address;
     float max_bias = context.info.max_sampler_lod_bias;
-    if (options.lod_bias > max_bias || options.lod_bias < -max_bias)
+    if (is_hardware(options.filter) && (options.lod_bias > max_bias || options.lod_bias < -max_bias))
         throw Error("--lod-bias " + std::to_string(options.lod_bias) + " exceeds this device's maxSamplerLodBias " +
                     std::to_string(max_bias) + " for hardware filters");
-    info.mipLodBias = options.lod_bias;
-    info.minLod = level0_only ? 0.0f : options.lod_min;
-    info.maxLod = level0_only ? 0.0f : std::min(options.lod_max, float(levels - 1));
+    bool hw = is_hardware(options.filter);
+    // Manual filters apply bias and LOD clamps in the shader; hardware taps ask for explicit LODs.
+    info.mipLodBias = hw ? options.lod_bias : 0.0f;
+    info.minLod = level0_only || !hw ? 0.0f : options.lod_min;
+    info.maxLod = level0_only ? 0.0f : hw ? std::min(options.lod_max, float(levels - 1)) : float(levels - 1);
     if (info.minLod > info.maxLod)
         info.minLod = info.maxLod;
     if (options.filter == Filter::hw_aniso) {
@@ -108,9 +110,9 @@ void image_barrier(VkCommandBuffer command_buffer, VkImage image, uint32_t level
 
 DescriptorSet allocate_descriptor_set(const VulkanContext& context, VkDescriptorSetLayout layout)
 {
-    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
+    VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3},
                                     {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                    {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
+                                    {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = 3;
@@ -125,9 +127,11 @@ DescriptorSet allocate_descriptor_set(const VulkanContext& context, VkDescriptor
     return d;
 }
 
-PushConstants make_push_constants(const SamplerOptions& options, uint32_t count)
+PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, float sat_scale)
 {
-    return {int32_t(options.filter), int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max, count};
+    return {int32_t(options.filter), int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max,
+            count, options.band, options.probes, int32_t(options.aniso_shape), int32_t(options.taps),
+            options.alpha, options.max_aniso, options.boxes, sat_scale};
 }
 
 } // namespace tf

@@ -22,8 +22,9 @@ uint32_t find_memory_type(const VulkanContext& context, uint32_t type_bits, VkMe
 
 VkShaderModule create_shader_module(const VulkanContext& context, const uint32_t* code, size_t size_bytes);
 
-// The hardware sampler for hw-* filters (texelFetch ignores it for manual ones): hw-nearest and
-// hw-bilinear see level 0 only (maxLod 0), hw-trilinear all levels, hw-aniso adds maxAnisotropy.
+// The sampler bound with the texture. hw-* filters: hw-nearest and hw-bilinear see level 0 only
+// (maxLod 0), hw-trilinear all levels, hw-aniso adds maxAnisotropy. Manual filters (texelFetch ignores
+// the sampler) get plain trilinear with the wrap mode, which their hardware taps use.
 VkSampler create_sampler(const VulkanContext& context, const SamplerOptions& options, int levels);
 
 void image_barrier(VkCommandBuffer command_buffer, VkImage image, uint32_t levels, VkImageLayout from,
@@ -45,7 +46,15 @@ struct PushConstants {
     float lod_min;
     float lod_max;
     uint32_t count;
+    float band;
+    int32_t probes;
+    int32_t aniso_shape;
+    int32_t taps;
+    float alpha;
+    float max_aniso;
+    int32_t boxes;
+    float sat_scale;
 };
-PushConstants make_push_constants(const SamplerOptions& options, uint32_t count);
+PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, float sat_scale);
 
 } // namespace tf

@@ -35,7 +35,11 @@ call_for() {
     nearest) echo "tf_nearest_mip(tex, uv, dx, dy, s) + tf_nearest(tex, uv, s)" ;;
     bilinear) echo "tf_bilinear_mip(tex, uv, dx, dy, s) + tf_bilinear(tex, uv, s)" ;;
     trilinear) echo "tf_trilinear(tex, uv, dx, dy, s)" ;;
-    texfilter) echo "tf_trilinear(tex, uv, dx, dy, s) + tf_nearest_mip(tex, uv, dx, dy, s)" ;;
+    brilinear) echo "tf_brilinear(tex, uv, dx, dy, s, 0.25)" ;;
+    aniso) echo "tf_aniso(tex, uv, dx, dy, s, 8, TF_ANISO_GPU) + tf_aniso_hw(tex, uv, dx, dy, s, 8, TF_ANISO_FELINE)" ;;
+    ewa) echo "tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_ewa_hw(tex, uv, dx, dy, s, 2.0, 16.0)" ;;
+    sat) echo "tf_sat(satLow, satHigh, uv, dx, dy, s, 1.0) + tf_sat_assembly(satLow, satHigh, uv, dx, dy, s, 1.0, 4)" ;;
+    texfilter) echo "tf_trilinear(tex, uv, dx, dy, s) + tf_nearest_mip(tex, uv, dx, dy, s) + tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_sat(satLow, satHigh, uv, dx, dy, s, 1.0)" ;;
     *) return 1 ;;
     esac
 }
@@ -51,6 +55,8 @@ write_shader() {
         echo "#include \"texfilter/$name.glsl\""
     done
     echo "layout(set = 0, binding = 0) uniform sampler2D tex;"
+    echo "layout(set = 0, binding = 3) uniform usampler2D satLow;  // the SAT's two integer words (sat.glsl)"
+    echo "layout(set = 0, binding = 4) uniform usampler2D satHigh;"
     if [[ $stage == frag ]]; then
         cat <<EOF
 layout(location = 0) in vec2 uv;

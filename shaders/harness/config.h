@@ -13,16 +13,25 @@
 #define TF_FILTER_HW_BILINEAR 6
 #define TF_FILTER_HW_TRILINEAR 7
 #define TF_FILTER_HW_ANISO 8
+#define TF_FILTER_BRILINEAR 9
+#define TF_FILTER_ANISO 10
+#define TF_FILTER_EWA 11
+#define TF_FILTER_SAT 12
+#define TF_FILTER_SAT_ASSEMBLY 13
 
 // Scene kinds: a textured plane or quad (plane, zoom, minify, slanted) and a cylinder (tunnel).
 #define TF_SCENE_PLANE 0
 #define TF_SCENE_CYLINDER 1
 
 // Descriptor set 0.
-#define TF_BINDING_TEXTURE 0 // combined image sampler: the MIP chain (texelFetch ignores the sampler)
+#define TF_BINDING_TEXTURE 0 // combined image sampler: the MIP chain. texelFetch ignores the sampler; hardware
+                             // taps and hw-* filters use it (trilinear with the wrap mode, or the hw-* state)
 #define TF_BINDING_SCENE 1   // uniform buffer: tf_SceneParams (render)
 #define TF_BINDING_LOOKUPS 1 // storage buffer: 6 floats a lookup (sample)
 #define TF_BINDING_RESULTS 2 // storage buffer: vec4 a lookup (sample)
+#define TF_BINDING_STATS 3   // storage buffer: uvec2 a lookup, texel fetches and hardware lookups (sample)
+#define TF_BINDING_SAT_LOW 4  // usampler2D RGBA32UI: summed-area table, low 32 bits per channel
+#define TF_BINDING_SAT_HIGH 5 // usampler2D R32UI: bits 32..39 of the four channels, one byte each
 
 #define TF_SAMPLE_LOCAL_SIZE 64
 

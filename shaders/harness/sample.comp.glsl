@@ -8,6 +8,7 @@ layout(local_size_x = TF_SAMPLE_LOCAL_SIZE) in;
 
 layout(set = 0, binding = TF_BINDING_LOOKUPS, std430) readonly buffer tf_Lookups { float lookups[]; };
 layout(set = 0, binding = TF_BINDING_RESULTS, std430) writeonly buffer tf_Results { vec4 results[]; };
+layout(set = 0, binding = TF_BINDING_STATS, std430) writeonly buffer tf_Stats { uvec2 stats[]; };
 
 void main()
 {
@@ -19,4 +20,5 @@ void main()
     vec2 dUVdx = vec2(lookups[b + 2u], lookups[b + 3u]);
     vec2 dUVdy = vec2(lookups[b + 4u], lookups[b + 5u]);
     results[i] = tf_harness_filter(uv, dUVdx, dUVdy);
+    stats[i] = uvec2(tf_fetchCount, tf_hwLookupCount);
 }

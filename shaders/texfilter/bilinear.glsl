@@ -23,6 +23,7 @@ vec4 tf_bilinear_level(sampler2D tex, vec2 uv, int level, int wrapMode)
     vec2 a = x - i0;
     int x0 = tf_wrap(i0.x, size.x, wrapMode), x1 = tf_wrap(i0.x + 1.0, size.x, wrapMode);
     int y0 = tf_wrap(i0.y, size.y, wrapMode), y1 = tf_wrap(i0.y + 1.0, size.y, wrapMode);
+    TF_COUNT_FETCHES(4);
     vec4 top = mix(texelFetch(tex, ivec2(x0, y0), level), texelFetch(tex, ivec2(x1, y0), level), a.x);
     vec4 bottom = mix(texelFetch(tex, ivec2(x0, y1), level), texelFetch(tex, ivec2(x1, y1), level), a.x);
     return mix(top, bottom, a.y);

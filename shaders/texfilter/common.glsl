@@ -9,6 +9,20 @@
 #ifndef TF_COMMON_GLSL
 #define TF_COMMON_GLSL
 
+// Cost hooks: define these before the first include to count work (the harness's `sample --stats`
+// does); by default they vanish. n texels read with texelFetch / n hardware filtered lookups.
+#ifndef TF_COUNT_FETCHES
+#define TF_COUNT_FETCHES(n)
+#endif
+#ifndef TF_COUNT_HW_LOOKUPS
+#define TF_COUNT_HW_LOOKUPS(n)
+#endif
+
+// Multi-tap filters (aniso, ewa): taps from texelFetch, or hardware bilinear/trilinear lookups through
+// the sampler bound with the texture (which must then filter linearly with the same wrap mode).
+#define TF_TAPS_MANUAL 0
+#define TF_TAPS_HARDWARE 1
+
 #define TF_WRAP_REPEAT 0
 #define TF_WRAP_CLAMP 1  // clamp to edge
 #define TF_WRAP_MIRROR 2 // mirrored repeat
@@ -48,6 +62,7 @@ ivec2 tf_level_size(sampler2D tex, int level) { return max(textureSize(tex, 0) >
 vec4 tf_fetch(sampler2D tex, ivec2 texel, int level, int wrapMode)
 {
     ivec2 size = tf_level_size(tex, level);
+    TF_COUNT_FETCHES(1);
     return texelFetch(tex, ivec2(tf_wrap(float(texel.x), size.x, wrapMode),
                                  tf_wrap(float(texel.y), size.y, wrapMode)), level);
 }

@@ -17,6 +17,7 @@ vec4 tf_nearest_level(sampler2D tex, vec2 uv, int level, int wrapMode)
         return vec4(0.0);
     ivec2 size = tf_level_size(tex, level);
     vec2 texel = floor(uv * vec2(size));
+    TF_COUNT_FETCHES(1);
     return texelFetch(tex, ivec2(tf_wrap(texel.x, size.x, wrapMode), tf_wrap(texel.y, size.y, wrapMode)), level);
 }
 

@@ -12,5 +12,9 @@
 #include "nearest.glsl"
 #include "bilinear.glsl"
 #include "trilinear.glsl"
+#include "brilinear.glsl"
+#include "aniso.glsl"
+#include "ewa.glsl"
+#include "sat.glsl"
 
 #endif

@@ -1,0 +1,30 @@
+#pragma once
+// Summed-area tables on the host: integer, per channel, with modular (wrap-around) arithmetic so that
+// every box sum is exact. Uploaded beside the MIP chain for the sat / sat-assembly filters.
+#include "image.h"
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace tf {
+
+// Input quantisation: texel value v (linear, clamped to [0, scale]) -> round(v / scale * 65535).
+constexpr uint32_t sat_quantisation_levels = 65535;
+// Table words are 40 bits per channel: exact for every box of up to 2^24 texels (4096x4096) of 16-bit values.
+constexpr int sat_max_dimension = 4096;
+
+struct SatTable {
+    int width = 0, height = 0; // the texture's size; the table is (width + 1) x (height + 1), row 0 and column 0 zero
+    float scale = 1.0f;        // value of quantisation level 65535 (max(1, largest texel value))
+    std::vector<uint32_t> low; // 4 words a table entry (RGBA), bits 0..31 of each channel's running sum mod 2^40
+    std::vector<uint32_t> high; // 1 word a table entry: bits 32..39 of R, G, B, A in bytes 0..3
+};
+
+// Throws tf::Error for a texture larger than sat_max_dimension on a side.
+SatTable build_sat(const Image& level0);
+
+// Exact sum of the quantised texels in [x0, x1) x [y0, y1) (texel-aligned, inside the texture), per channel,
+// computed from the table with the same modular arithmetic the shader uses.
+std::array<uint64_t, 4> sat_box_sum(const SatTable& table, int x0, int y0, int x1, int y1);
+
+} // namespace tf
