@@ -13,10 +13,17 @@ std::vector<FlagSpec> texture_flags()
 
 std::vector<FlagSpec> sampler_flags()
 {
-    return {{"--filter", "F", "nearest, bilinear, trilinear, nearest-mip, bilinear-mip, hw-nearest, hw-bilinear, "
-                              "hw-trilinear, hw-aniso"},
+    return {{"--filter", "F", "nearest, bilinear, trilinear, nearest-mip, bilinear-mip, brilinear, aniso, ewa, "
+                              "sat, sat-assembly, hw-nearest, hw-bilinear, hw-trilinear, hw-aniso"},
             {"--wrap", "W", "repeat (default), clamp or mirror"},
             {"--aniso", "N", "hw-aniso: maximum anisotropy, 1..16 (default 16)"},
+            {"--band", "B", "brilinear: trilinear band around each level transition, 0..1 (default 0.25)"},
+            {"--probes", "N", "aniso: most probes along the major axis, 1..16 (default 16)"},
+            {"--aniso-shape", "S", "aniso: gpu (Vulkan's model, default) or feline (ellipse axis, Gaussian weights)"},
+            {"--taps", "T", "aniso, ewa: manual (texelFetch, default) or hardware (bilinear/trilinear lookups)"},
+            {"--alpha", "A", "ewa: Gaussian exp(-A r^2), 0.05..16 (default 2)"},
+            {"--max-aniso", "E", "ewa: largest major/minor axis ratio, 1..64 (default 16)"},
+            {"--boxes", "K", "sat-assembly: boxes along the major axis, 1..16 (default 4)"},
             {"--lod-bias", "B", "added to the LOD (default 0)"},
             {"--lod-min", "L", "lowest LOD used (default 0)"},
             {"--lod-max", "L", "highest LOD used (default: the last level)"},
@@ -53,6 +60,13 @@ SamplerOptions sampler_options_from(const Args& args)
     options.filter = parse_flag(args, "--filter", "", parse_filter);
     options.wrap = parse_flag(args, "--wrap", "repeat", parse_wrap);
     options.aniso = args.get_int("--aniso", 16, 1, 16);
+    options.band = float(args.get_double("--band", options.band, 0.0, 1.0));
+    options.probes = args.get_int("--probes", options.probes, 1, 16);
+    options.aniso_shape = parse_flag(args, "--aniso-shape", "gpu", parse_aniso_shape);
+    options.taps = parse_flag(args, "--taps", "manual", parse_taps);
+    options.alpha = float(args.get_double("--alpha", options.alpha, 0.05, 16.0));
+    options.max_aniso = float(args.get_double("--max-aniso", options.max_aniso, 1.0, 64.0));
+    options.boxes = args.get_int("--boxes", options.boxes, 1, 16);
     options.lod_bias = float(args.get_double("--lod-bias", 0.0, -16.0, 16.0));
     options.lod_min = float(args.get_double("--lod-min", 0.0, 0.0, 1000.0));
     options.lod_max = float(args.get_double("--lod-max", 1000.0, 0.0, 1000.0));

@@ -46,15 +46,8 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
     for (const GoldenCase& c : run.cases) {
         MipChain chain = load_texture(c.texture);
         SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
-        GpuTexture texture = upload_texture(gpu.context, chain, needs_sat(c.sampler.filter));
-        Image actual;
-        try {
-            actual = gpu_render(gpu.context, texture, scene, c.sampler);
-        } catch (...) {
-            destroy_texture(gpu.context, texture);
-            throw;
-        }
-        destroy_texture(gpu.context, texture);
+        Image actual = with_texture(gpu.context, chain, needs_sat(c.sampler.filter),
+                                    [&](auto& t) { return gpu_render(gpu.context, t, scene, c.sampler); });
 
         std::string golden_path = run.golden_dir + "/" + c.name + ".png";
         Image golden = read_image_raw(golden_path);

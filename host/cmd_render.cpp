@@ -46,14 +46,8 @@ int run_render(const std::vector<std::string>& argv)
         image = reference_render(scene, chain, options);
     } else {
         GpuSession gpu(context_options_from(args));
-        GpuTexture texture = upload_texture(gpu.context, chain, needs_sat(options.filter));
-        try {
-            image = gpu_render(gpu.context, texture, scene, options);
-        } catch (...) {
-            destroy_texture(gpu.context, texture);
-            throw;
-        }
-        destroy_texture(gpu.context, texture);
+        image = with_texture(gpu.context, chain, needs_sat(options.filter),
+                             [&](auto& t) { return gpu_render(gpu.context, t, scene, options); });
         gpu.finish();
     }
     write_image(out, image);

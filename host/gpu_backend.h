@@ -2,6 +2,7 @@
 // The Vulkan backend: uploads a MIP chain, renders a scene through the fragment harness, runs point
 // lookups through the compute harness. Results come back as RGBA32F, linear.
 #include "filter.h"
+#include "lookup_stats.h"
 #include "mip.h"
 #include "reference.h"
 #include "scene.h"
@@ -28,11 +29,18 @@ struct GpuTexture {
 GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat);
 void destroy_texture(const VulkanContext& context, GpuTexture& texture);
 
-// Per-lookup cost counted by the shader through the includes' TF_COUNT_* hooks.
-struct LookupStats {
-    uint32_t texel_fetches = 0;
-    uint32_t hardware_lookups = 0;
-};
+// Uploads the texture, runs body(texture) and destroys it again, also when body throws.
+template <typename Body>
+auto with_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, Body&& body)
+{
+    GpuTexture texture = upload_texture(context, chain, with_sat);
+    struct Release {
+        const VulkanContext& context;
+        GpuTexture& texture;
+        ~Release() { destroy_texture(context, texture); }
+    } release{context, texture};
+    return body(texture);
+}
 
 Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
                  const SamplerOptions& options);

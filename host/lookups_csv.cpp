@@ -65,13 +65,19 @@ std::vector<Lookup> read_lookups_csv(const std::string& path)
     return lookups;
 }
 
-void write_colors_csv(const std::string& path, const std::vector<glm::dvec4>& colors)
+void write_colors_csv(const std::string& path, const std::vector<glm::dvec4>& colors,
+                      const std::vector<LookupStats>* stats)
 {
-    std::string text = "r,g,b,a\n";
-    char row[160];
-    for (const glm::dvec4& c : colors) {
-        std::snprintf(row, sizeof(row), "%.9g,%.9g,%.9g,%.9g\n", c.r, c.g, c.b, c.a);
+    std::string text = stats ? "r,g,b,a,fetches,hw_lookups\n" : "r,g,b,a\n";
+    char row[200];
+    for (size_t i = 0; i < colors.size(); ++i) {
+        const glm::dvec4& c = colors[i];
+        int n = std::snprintf(row, sizeof(row), "%.9g,%.9g,%.9g,%.9g", c.r, c.g, c.b, c.a);
+        if (stats)
+            std::snprintf(row + n, sizeof(row) - size_t(n), ",%u,%u", (*stats)[i].texel_fetches,
+                          (*stats)[i].hardware_lookups);
         text += row;
+        text += '\n';
     }
     write_file_atomic(path, text);
 }

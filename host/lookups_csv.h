@@ -1,5 +1,6 @@
 #pragma once
 // The `sample` command's files: lookups in (u,v,dudx,dvdx,dudy,dvdy), colours out (r,g,b,a).
+#include "lookup_stats.h"
 #include "reference.h"
 #include <glm/vec4.hpp>
 #include <string>
@@ -12,7 +13,9 @@ namespace tf {
 std::vector<Lookup> read_lookups_csv(const std::string& path);
 constexpr size_t max_lookups = 16u << 20;
 
-// Writes "r,g,b,a" rows (9 significant digits) atomically: temp file, then rename.
-void write_colors_csv(const std::string& path, const std::vector<glm::dvec4>& colors);
+// Writes "r,g,b,a" rows (9 significant digits) atomically: temp file, then rename. With stats, two
+// more columns: fetches,hw_lookups.
+void write_colors_csv(const std::string& path, const std::vector<glm::dvec4>& colors,
+                      const std::vector<LookupStats>* stats = nullptr);
 
 } // namespace tf
