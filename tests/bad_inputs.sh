@@ -200,6 +200,16 @@ bad_flag_values() {
     expect_error "-o without a value (last argument)" "flag -o" - -- "${RENDER[@]}" -o
     expect_error "unknown command" frobnicate - -- "$TEXFILTER" frobnicate
     expect_error "unsupported output extension .bmp" out.bmp out.bmp -- "${RENDER[@]}" -o out.bmp
+    # The filter suite's options.
+    expect_error "--band 1.5" --band out.png -- "${RENDER[@]}" --band 1.5 -o out.png
+    expect_error "--probes 0" --probes out.png -- "${RENDER[@]}" --probes 0 -o out.png
+    expect_error "--probes 17" --probes out.png -- "${RENDER[@]}" --probes 17 -o out.png
+    expect_error "--aniso-shape bogus" --aniso-shape out.png -- "${RENDER[@]}" --aniso-shape bogus -o out.png
+    expect_error "--taps bogus" --taps out.png -- "${RENDER[@]}" --taps bogus -o out.png
+    expect_error "--alpha 0" --alpha out.png -- "${RENDER[@]}" --alpha 0 -o out.png
+    expect_error "--alpha inf" --alpha out.png -- "${RENDER[@]}" --alpha inf -o out.png
+    expect_error "--max-aniso 0.5" --max-aniso out.png -- "${RENDER[@]}" --max-aniso 0.5 -o out.png
+    expect_error "--boxes 17" --boxes out.png -- "${RENDER[@]}" --boxes 17 -o out.png
 }
 
 bad_outputs() {
@@ -226,6 +236,8 @@ bad_lookups() {
     mkdir lookups_dir.csv
     expect_error "sample: a directory as lookups file" "is a directory" out.csv -- \
         "${SAMPLE[@]}" --lookups lookups_dir.csv -o out.csv
+    expect_error "sample: --stats with the reference backend" --stats out.csv -- \
+        "${SAMPLE[@]}" --lookups good.csv --stats -o out.csv
     expect_error "sample: -o in a missing directory" /nonexistent/dir/out.csv /nonexistent/dir/out.csv -- \
         "${SAMPLE[@]}" --lookups good.csv -o /nonexistent/dir/out.csv
 }
