@@ -536,8 +536,9 @@ void test_procedural() {
 
 void test_names() {
     const char* names[] = {"nearest",    "bilinear",    "trilinear",    "nearest-mip", "bilinear-mip",
-                           "hw-nearest", "hw-bilinear", "hw-trilinear", "hw-aniso"};
-    CHECK_EQ(int(tf::all_filters().size()), 9);
+                           "hw-nearest", "hw-bilinear", "hw-trilinear", "hw-aniso",    "brilinear",
+                           "aniso",      "ewa",         "sat",          "sat-assembly"};
+    CHECK_EQ(int(tf::all_filters().size()), 14);
     for (const char* n : names) CHECK(tf::to_string(tf::parse_filter(n)) == n);
     for (Filter f : tf::all_filters()) CHECK(tf::parse_filter(tf::to_string(f)) == f);
     CHECK(tf::parse_filter("nearest-mip") == Filter::nearest_mip);

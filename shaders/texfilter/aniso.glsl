@@ -1,15 +1,157 @@
-// texfilter/aniso.glsl — STUB (being written).
+// texfilter/aniso.glsl — anisotropic filtering: N trilinear probes along the footprint's major axis.
+//
+// Use:     vec4 c = tf_aniso(tex, uv, dUVdx, dUVdy, s, maxProbes, shape);    // probes from texelFetch
+//          vec4 c = tf_aniso_hw(tex, uv, dUVdx, dUVdy, s, maxProbes, shape); // probes = hardware lookups
+// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as in lod.glsl; maxProbes N_max, clamped to [1, 16];
+//          shape TF_ANISO_GPU or TF_ANISO_FELINE (any other value: TF_ANISO_GPU). J = [dUVdx dUVdy] in
+//          level-0 texels (DESIGN.md §3).
+//   TF_ANISO_GPU (the Vulkan / EXT_texture_filter_anisotropic model): Px = |J e_x|, Py = |J e_y|,
+//          N = min(ceil(Pmax/Pmin), N_max), λ = log2(Pmax/N) + lodBias, then lodMin/lodMax and the levels
+//          clamp it as in tf_lod. The major column A (dUVdx if Px >= Py, else dUVdy) is cut into N equal
+//          pieces, one probe at the centre of each: uv + ((k + ½)/N − ½)·A, k = 0..N−1, weights 1/N.
+//          N = 1 is tf_trilinear, bit for bit.
+//   TF_ANISO_FELINE (after McCormack et al., "Feline", 1999): the pixel's pre-image as the ellipse
+//          J·(disk of radius ½), whose full axes are the singular values σ1 >= σ2 of J = U diag(σ1, σ2) Vᵀ
+//          (a closed-form 2x2 SVD: no atan, no iteration). The probes lie on the true major axis
+//          A = σ1·u1 (u1 = U e_x) at the same places as above, uv + t_k·A, t_k = (k + ½)/N − ½, with
+//          N = min(ceil(σ1/σ2), N_max) and λ = log2(max(σ2, σ1/N)) + lodBias: the minor axis's LOD, coarser
+//          only where N_max runs out. Weights: a Gaussian along the axis, w_k ∝ exp(−2 x_k²) with
+//          x_k = 2 t_k in (−1, 1) the place in half major axes (α = 2, tf_ewa's default), i.e.
+//          σ = σ1/4 texels: a quarter pixel along the major axis, about what each probe's own trilinear
+//          footprint gives across it, so the filter is roughly round in screen space. Weights sum to 1.
+//          N = 1 is one trilinear probe at λ = log2(σ1): tf_trilinear where J's columns are orthogonal
+//          (then σ1 = max(Px, Py)), a little blurrier where they are not.
+// Taps:    tf_aniso does every probe from texelFetch (two bilinear levels, like tf_trilinear).
+//          tf_aniso_hw takes each probe as one textureLod(tex, uv_k, λ) through the sampler bound with the
+//          texture, which must filter linearly in both (min and mip) with the wrap mode in s.wrap and
+//          apply no bias (λ already holds it) and no clamp narrower than the levels. It differs from
+//          tf_aniso only by the sampler's precision (subTexelPrecisionBits, mipmapPrecisionBits).
+// Cost:    tf_aniso 8N texel fetches (4N where λ sits on a level or is clamped to the last one),
+//          tf_aniso_hw N hardware lookups; N <= 16 for every input, the loop never runs more than 16 times.
+// Degenerate input: zero gradients give one probe on the finest level (λ clamped from −∞); NaN or ±Inf
+//          gradients (or a J entry past float range, |dUVdx|·size >= 2^128) give one probe on the
+//          coarsest level, as tf_lod does; a zero minor axis (one column zero, parallel columns) gives
+//          N = N_max; non-finite uv gives vec4(0).
+// Example: vec4 c = tf_aniso(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT), 16, TF_ANISO_GPU);
 #ifndef TF_ANISO_GLSL
 #define TF_ANISO_GLSL
-#include "trilinear.glsl"
+
+#include "bilinear.glsl"
+#include "lod.glsl"
+
 #define TF_ANISO_GPU 0
 #define TF_ANISO_FELINE 1
+
+const int TF_ANISO_MAX_PROBES = 16; // hard cap on probes (and loop iterations) for any input
+
+// Where the probes go: uv + ((k + ½)/probes − ½)·axis, k = 0..probes−1, all on LOD `lod`.
+struct tf_AnisoFootprint {
+    vec2 axis;   // the whole major axis in uv units (zero when probes == 1)
+    int probes;  // N in [1, TF_ANISO_MAX_PROBES]
+    float lod;   // biased and clamped like tf_lod
+};
+
+// ceil(ratio) capped at maxN; ratio >= 1, +Inf or NaN (0/0, Inf/Inf) gives maxN.
+int tf_aniso_count(float ratio, int maxN) { return ratio < float(maxN) ? int(ceil(ratio)) : maxN; }
+
+tf_AnisoFootprint tf_aniso_footprint(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
+{
+    int maxN = clamp(maxProbes, 1, TF_ANISO_MAX_PROBES);
+    tf_AnisoFootprint fp = tf_AnisoFootprint(vec2(0.0), 1, 0.0);
+    vec2 size0 = vec2(textureSize(tex, 0));
+    vec2 ax = dUVdx * size0, ay = dUVdy * size0; // the columns of J, in level-0 texels
+    float m = max(max(abs(ax.x), abs(ax.y)), max(abs(ay.x), abs(ay.y)));
+    if (!(m > 0.0) || isinf(m) || !tf_finite(dUVdx) || !tf_finite(dUVdy)) {
+        // Zero gradients: λ = −∞, the finest level. NaN/±Inf (or past float range in texels): +∞, the coarsest.
+        fp.lod = tf_lod(tex, dUVdx, dUVdy, s);
+        return fp;
+    }
+    // J scaled by a power of two so that its largest entry is in [½, 1): the scale is exact, and nothing
+    // below overflows; a minor axis below ~1e-19 of the major one underflows to zero (N = N_max either way).
+    int e;
+    frexp(m, e);
+    vec2 cx = ldexp(ax, ivec2(-e)), cy = ldexp(ay, ivec2(-e));
+
+    if (shape != TF_ANISO_FELINE) {
+        float px2 = dot(cx, cx), py2 = dot(cy, cy);
+        fp.probes = tf_aniso_count(sqrt(max(px2, py2) / min(px2, py2)), maxN);
+        tf_Sampler t = s;
+        if (fp.probes > 1) { // log2(Pmax/N) + bias = log2(Pmax) + (bias − log2 N); N = 1 stays tf_lod exactly
+            t.lodBias -= log2(float(fp.probes));
+            fp.axis = px2 >= py2 ? dUVdx : dUVdy; // ties: dUVdx
+        }
+        fp.lod = tf_lod(tex, dUVdx, dUVdy, t);
+        return fp;
+    }
+
+    // Feline. Closed-form 2x2 SVD of J = [a b; c d] (columns cx, cy): with E = (a+d)/2, F = (a−d)/2,
+    // G = (c+b)/2, H = (c−b)/2, Q = |(E, H)|, R = |(F, G)|, the singular values are Q + R and |Q − R|, and u1
+    // lies at half the angle of the complex product (F + iG)(E + iH).
+    float E = 0.5 * (cx.x + cy.y), F = 0.5 * (cx.x - cy.y);
+    float G = 0.5 * (cx.y + cy.x), H = 0.5 * (cx.y - cy.x);
+    float Q = length(vec2(E, H)), R = length(vec2(F, G));
+    float major = Q + R, minor = abs(Q - R); // σ1, σ2 times 2^-e
+    fp.probes = tf_aniso_count(major / minor, maxN);
+    float lambda = float(e) + log2(max(minor, major / float(fp.probes))) + s.lodBias;
+    float top = float(textureQueryLevels(tex) - 1);
+    fp.lod = clamp(clamp(lambda, s.lodMin, s.lodMax), 0.0, top);
+    if (fp.probes > 1) { // then major > minor, so R > 0, Q > 0 and z != 0
+        vec2 z = vec2(F * E - G * H, F * H + G * E);
+        float r = length(z);
+        vec2 u1 = normalize(z.x >= 0.0 ? vec2(r + z.x, z.y) : vec2(z.y, r - z.x)); // half angle, up to sign
+        fp.axis = ldexp(major * u1 / size0, ivec2(e));
+    }
+    return fp;
+}
+
+// One trilinear probe at a given LOD in [0, levels−1], from texelFetch: tf_trilinear's blend.
+vec4 tf_aniso_probe(sampler2D tex, vec2 uv, float lod, int wrapMode)
+{
+    int lo = int(floor(lod));
+    float f = lod - float(lo);
+    vec4 fine = tf_bilinear_level(tex, uv, lo, wrapMode);
+    if (f == 0.0)
+        return fine;
+    return mix(fine, tf_bilinear_level(tex, uv, lo + 1, wrapMode), f);
+}
+
+// One trilinear probe through the hardware sampler.
+vec4 tf_aniso_probe_hw(sampler2D tex, vec2 uv, float lod)
+{
+    TF_COUNT_HW_LOOKUPS(1);
+    return textureLod(tex, uv, lod);
+}
+
+vec4 tf_aniso_filter(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape,
+                     bool hardware)
+{
+    if (!tf_finite(uv))
+        return vec4(0.0);
+    tf_AnisoFootprint fp = tf_aniso_footprint(tex, dUVdx, dUVdy, s, maxProbes, shape);
+    if (fp.probes == 1)
+        return hardware ? tf_aniso_probe_hw(tex, uv, fp.lod) : tf_aniso_probe(tex, uv, fp.lod, s.wrap);
+    vec4 sum = vec4(0.0);
+    float weights = 0.0;
+    for (int k = 0; k < TF_ANISO_MAX_PROBES; ++k) {
+        if (k >= fp.probes)
+            break;
+        float t = (float(k) + 0.5) / float(fp.probes) - 0.5;
+        float w = shape == TF_ANISO_FELINE ? exp(-8.0 * t * t) : 1.0;
+        vec2 p = uv + t * fp.axis;
+        sum += w * (hardware ? tf_aniso_probe_hw(tex, p, fp.lod) : tf_aniso_probe(tex, p, fp.lod, s.wrap));
+        weights += w;
+    }
+    return sum / weights;
+}
+
 vec4 tf_aniso(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
 {
-    return tf_trilinear(tex, uv, dUVdx, dUVdy, s);
+    return tf_aniso_filter(tex, uv, dUVdx, dUVdy, s, maxProbes, shape, false);
 }
+
 vec4 tf_aniso_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
 {
-    return tf_trilinear(tex, uv, dUVdx, dUVdy, s);
+    return tf_aniso_filter(tex, uv, dUVdx, dUVdy, s, maxProbes, shape, true);
 }
+
 #endif

@@ -1,9 +1,53 @@
-// texfilter/brilinear.glsl — STUB (being written).
+// texfilter/brilinear.glsl — "brilinear": trilinear only in a band around each MIP level transition,
+// a single bilinear lookup (4 fetches) everywhere else.
+//
+// Use:     vec4 c = tf_brilinear(tex, uv, dUVdx, dUVdy, s, band);
+// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as in lod.glsl. band B in [0, 1] (clamped): the width,
+//          in LOD units, of the trilinear band centred on each transition (LOD fraction f = 1/2 between
+//          levels lo = floor(λ) and lo + 1). The blend weight of level lo + 1 is
+//              w = clamp((f − (1 − B)/2) / B, 0, 1),
+//          continuous in λ for B > 0: 0 for f <= (1 − B)/2, a ramp of slope 1/B across the band, 1 for
+//          f >= (1 + B)/2.
+//          B = 1: w = f exactly, i.e. tf_trilinear, bit for bit.
+//          B = 0: w = step(f > 1/2), the nearest level with ties (f = 1/2) to the finer one: the level
+//                 ceil(λ + 1/2) − 1 of Vulkan mipmapMode NEAREST, i.e. tf_bilinear_mip. (f > 1/2 is exact;
+//                 lod.glsl's float λ + 1/2 rounds down to the finer level for λ an ulp or two above
+//                 2^k − 1/2, e.g. 1.5 + 2^-23, where this picks the coarser level as the spec's formula does.)
+//          Suggested band: 0.25 (tf::SamplerOptions's default). On a smooth LOD ramp a quarter of the
+//          LOD range pays 8 fetches and the rest 4, so 5 fetches a lookup on average (trilinear: 8),
+//          and the level blend stays continuous (no seam, unlike B = 0); outside the band the finer
+//          level is used up to f = 3/8 (at most 2^0.375 = 1.3 texels a pixel: mild under-filtering) and
+//          the coarser from f = 5/8 (slightly blurrier than trilinear).
+// Cost:    4 texel fetches where w is 0 or 1 (outside the band, on a level, or clamped to the last
+//          level), 8 inside the band. The level that weighs 0 is never fetched.
+// NaN/±Inf gradients give the coarsest level (4 fetches), zero gradients the finest (lod.glsl);
+// non-finite uv gives vec4(0).
+// Example: vec4 c = tf_brilinear(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT), 0.25);
 #ifndef TF_BRILINEAR_GLSL
 #define TF_BRILINEAR_GLSL
-#include "trilinear.glsl"
+
+#include "bilinear.glsl"
+#include "lod.glsl"
+
+// Blend weight of the coarser level for LOD fraction f in [0, 1) and band in [0, 1] (see above).
+float tf_brilinear_weight(float f, float band)
+{
+    if (!(band > 0.0))
+        return f > 0.5 ? 1.0 : 0.0; // B <= 0 (or NaN): the nearest level, ties to the finer
+    float b = min(band, 1.0);
+    return clamp((f - (1.0 - b) * 0.5) / b, 0.0, 1.0);
+}
+
 vec4 tf_brilinear(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band)
 {
-    return tf_trilinear(tex, uv, dUVdx, dUVdy, s);
+    float lod = tf_lod(tex, dUVdx, dUVdy, s);
+    int lo = int(floor(lod));
+    float w = tf_brilinear_weight(lod - float(lo), band);
+    if (w == 0.0)
+        return tf_bilinear_level(tex, uv, lo, s.wrap); // finer level only (also on a level, or the last one)
+    if (w == 1.0)
+        return tf_bilinear_level(tex, uv, lo + 1, s.wrap); // coarser level only
+    return mix(tf_bilinear_level(tex, uv, lo, s.wrap), tf_bilinear_level(tex, uv, lo + 1, s.wrap), w);
 }
+
 #endif

@@ -31,7 +31,12 @@ float tf_lod(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
     return clamp(clamp(lambda, s.lodMin, s.lodMax), 0.0, top);
 }
 
-// Vulkan mipmapMode NEAREST: ceil(d + 0.5) - 1, so d = 0.5 still picks the finer level.
-int tf_mip_level_nearest(float lod) { return int(ceil(lod + 0.5)) - 1; }
+// Vulkan mipmapMode NEAREST: ceil(d + 0.5) - 1, so d = 0.5 still picks the finer level. Written with
+// floor and a comparison because lod + 0.5 rounds in float (1.50000012 + 0.5 == 2.0 exactly).
+int tf_mip_level_nearest(float lod)
+{
+    float level = floor(lod);
+    return int(level) + (lod - level > 0.5 ? 1 : 0);
+}
 
 #endif

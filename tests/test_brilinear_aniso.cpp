@@ -1,0 +1,845 @@
+// brilinear and aniso (shaders/texfilter/brilinear.glsl, aniso.glsl; host/reference_aniso.cpp).
+//
+// Part 1, the CPU reference against facts worked out by hand: brilinear blend weights on mipcolors,
+// band 1 == trilinear and band 0 == bilinear-mip exactly, the probe count, LOD and probe places of both
+// aniso shapes for known footprints, probes 1 == trilinear, constant in => constant out, degenerate input.
+// Part 2, the GPU (lavapipe) through `texfilter sample --validate --stats` on random lookups: manual taps
+// vs the reference within float rounding, the special cases vs their GPU twins, hardware taps vs manual
+// taps within the sampler's precision, and texel-fetch / hardware-lookup counts.
+//
+// usage: test_brilinear_aniso PATH/TO/texfilter
+#include "error.h"
+#include "image.h"
+#include "mip.h"
+#include "procedural.h"
+#include "reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+#include <glm/glm.hpp>
+#include <unistd.h>
+
+using namespace tf;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------------
+// Checks: CHECK-style asserts print file:line and the values; every named check prints one result line.
+
+int g_failures = 0;     // failed CHECKs in the check running now
+int g_failed_checks = 0; // named checks that failed
+
+std::string str(double x)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.9g", x);
+    return buf;
+}
+
+std::string str(const glm::dvec4& v) { return "(" + str(v.x) + ", " + str(v.y) + ", " + str(v.z) + ", " + str(v.w) + ")"; }
+
+void report(bool ok, const char* file, int line, const std::string& what)
+{
+    if (ok)
+        return;
+    ++g_failures;
+    if (g_failures <= 8) // the first few of a check are enough to see what went wrong
+        std::fprintf(stderr, "%s:%d: CHECK failed: %s\n", file, line, what.c_str());
+}
+
+double max_diff(const glm::dvec4& a, const glm::dvec4& b)
+{
+    glm::dvec4 d = glm::abs(a - b);
+    return std::max(std::max(d.x, d.y), std::max(d.z, d.w));
+}
+
+#define CHECK(expr, values) report(bool(expr), __FILE__, __LINE__, std::string(#expr) + "  " + (values))
+#define CHECK_EQ(a, b)                                                                                   \
+    do {                                                                                                 \
+        const auto va_ = (a);                                                                            \
+        const auto vb_ = (b);                                                                            \
+        report(va_ == vb_, __FILE__, __LINE__, #a " == " #b "  (" + str(va_) + " vs " + str(vb_) + ")"); \
+    } while (0)
+#define CHECK_NEAR(a, b, eps)                                                                            \
+    do {                                                                                                 \
+        const auto va_ = (a);                                                                            \
+        const auto vb_ = (b);                                                                            \
+        report(max_diff(glm::dvec4(va_), glm::dvec4(vb_)) <= (eps), __FILE__, __LINE__,                  \
+               #a " ~= " #b " within " #eps "  (" + str(va_) + " vs " + str(vb_) + ")");                 \
+    } while (0)
+
+// Runs one named check and prints its line: name, an optional detail the body fills in, PASS/FAIL.
+void run_check(const std::string& name, const std::function<std::string()>& body)
+{
+    g_failures = 0;
+    std::string detail;
+    try {
+        detail = body();
+    } catch (const std::exception& e) {
+        ++g_failures;
+        detail = std::string("exception: ") + e.what();
+    }
+    std::printf("%-58s %s%s%s\n", name.c_str(), g_failures ? "FAIL" : "PASS", detail.empty() ? "" : "  ", detail.c_str());
+    std::fflush(stdout);
+    if (g_failures)
+        ++g_failed_checks;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Textures and lookups.
+
+SamplerOptions options_for(Filter filter, Wrap wrap = Wrap::repeat)
+{
+    SamplerOptions o;
+    o.filter = filter;
+    o.wrap = wrap;
+    return o;
+}
+
+SamplerOptions brilinear(double band, Wrap wrap = Wrap::repeat)
+{
+    SamplerOptions o = options_for(Filter::brilinear, wrap);
+    o.band = float(band);
+    return o;
+}
+
+SamplerOptions aniso(int probes, AnisoShape shape, Wrap wrap = Wrap::repeat)
+{
+    SamplerOptions o = options_for(Filter::aniso, wrap);
+    o.probes = probes;
+    o.aniso_shape = shape;
+    return o;
+}
+
+// A lookup from J's columns in level-0 texels of a size x size texture.
+Lookup lookup_texels(double u, double v, double size, double jxu, double jxv, double jyu, double jyv)
+{
+    return {u, v, jxu / size, jxv / size, jyu / size, jyv / size};
+}
+
+// An n x n texture of hashed values in [0, 1) with its MIP chain (channels differ, alpha 1).
+MipChain noise_chain(int n, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> value(0.0f, 1.0f);
+    Image image = make_image(n, n);
+    for (glm::vec4& t : image.texels)
+        t = glm::vec4(value(rng), value(rng), value(rng), 1.0f);
+    return build_mip_chain(image);
+}
+
+// Random footprints: size from 1/16 to 512 texels, any direction, stretch up to 8:1 and a shear (the
+// columns of J are not orthogonal, so the feline axis differs from the gpu one), uv beyond [0, 1] for wraps.
+std::vector<Lookup> random_lookups(int count, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> uv(-1.0, 2.0), angle(0.0, 6.283185307179586), octaves(-4.0, 9.0),
+        stretch(0.0, 3.0), shear(-1.0, 1.0);
+    std::vector<Lookup> lookups;
+    for (int i = 0; i < count; ++i) {
+        double size = std::exp2(octaves(rng)) / 256.0;
+        double a = angle(rng), ratio = std::exp2(stretch(rng)), b = a + 1.5707963267948966 + shear(rng);
+        lookups.push_back({uv(rng), uv(rng), size * std::cos(a), size * std::sin(a), size / ratio * std::cos(b),
+                           size / ratio * std::sin(b)});
+    }
+    return lookups;
+}
+
+// Degenerate footprints the filters must survive: zero, NaN, ±Inf, one column zero, parallel columns.
+std::vector<Lookup> degenerate_lookups()
+{
+    const double nan = std::nan(""), inf = INFINITY;
+    return {{0.3, 0.7, 0, 0, 0, 0},           {0.3, 0.7, nan, 0, 0, 0.01},   {0.3, 0.7, inf, 0, 0, 0.01},
+            {0.3, 0.7, 0.01, -inf, 0, 0},     {0.3, 0.7, 0.03, 0, 0, 0},     {0.3, 0.7, 0, 0, 0.01, 0.02},
+            {0.3, 0.7, 0.02, 0.01, 0.04, 0.02}, {0.3, 0.7, 1e30, 0, 0, 1e30}, {0.3, 0.7, 1e-30, 0, 0, 3e-31}};
+}
+
+// ---------------------------------------------------------------------------------------------------
+// The aniso probe layout, re-derived here (double) only to bound GPU errors: N, lambda, probe places
+// and weights, the ratio that picks N (for knife-edge lookups) and the conditioning of the feline axis.
+
+struct Layout {
+    int count = 1;
+    double lod = 0, ratio = 1;
+    double axis_u = 0, axis_v = 0;
+    std::vector<double> t, weight; // normalised weights
+    double sigma1 = 0, sigma2 = 0;
+};
+
+double clamp_lod(const MipChain& chain, double d)
+{
+    if (std::isnan(d))
+        d = INFINITY;
+    return std::clamp(d, 0.0, double(chain.levels.size() - 1));
+}
+
+Layout layout_of(const MipChain& chain, const SamplerOptions& o, const Lookup& l)
+{
+    Layout p;
+    const double w = chain.levels[0].width, h = chain.levels[0].height;
+    const double a = l.dudx * w, c = l.dvdx * h, b = l.dudy * w, d = l.dvdy * h;
+    const bool finite = std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(d);
+    if (!finite) {
+        p.lod = clamp_lod(chain, INFINITY);
+    } else if (o.aniso_shape == AnisoShape::gpu) {
+        double px = std::hypot(a, c), py = std::hypot(b, d);
+        p.ratio = std::max(px, py) / std::min(px, py);
+        if (px == 0 && py == 0) {
+            p.lod = 0;
+        } else {
+            p.count = p.ratio >= o.probes ? o.probes : int(std::ceil(p.ratio));
+            p.lod = clamp_lod(chain, std::log2(std::max(px, py) / p.count) + o.lod_bias);
+            p.axis_u = px >= py ? l.dudx : l.dudy;
+            p.axis_v = px >= py ? l.dvdx : l.dvdy;
+        }
+    } else {
+        // Singular values from the invariants: sigma1^2 + sigma2^2 = |J|_F^2, sigma1 sigma2 = |det J|.
+        double frob = a * a + b * b + c * c + d * d, det = std::abs(a * d - b * c);
+        double s1 = std::sqrt(0.5 * (frob + std::sqrt(std::max(0.0, frob * frob - 4 * det * det))));
+        p.sigma1 = s1;
+        p.sigma2 = s1 > 0 ? det / s1 : 0;
+        p.ratio = p.sigma1 / p.sigma2;
+        if (s1 == 0) {
+            p.lod = 0;
+        } else {
+            p.count = p.ratio >= o.probes ? o.probes : int(std::ceil(p.ratio));
+            p.lod = clamp_lod(chain, std::log2(std::max(p.sigma2, s1 / p.count)) + o.lod_bias);
+            // Major axis: the unit vector x maximising |J^T x|, from the 2x2 symmetric J J^T.
+            double theta = 0.5 * std::atan2(2 * (a * c + b * d), (a * a + b * b) - (c * c + d * d));
+            p.axis_u = s1 * std::cos(theta) / w;
+            p.axis_v = s1 * std::sin(theta) / h;
+        }
+    }
+    double sum = 0;
+    for (int k = 0; k < p.count; ++k) {
+        double t = (k + 0.5) / p.count - 0.5;
+        p.t.push_back(t);
+        p.weight.push_back(o.aniso_shape == AnisoShape::feline ? std::exp(-8 * t * t) : 1.0);
+        sum += p.weight.back();
+    }
+    for (double& x : p.weight)
+        x /= sum;
+    return p;
+}
+
+// N is ceil(ratio): a ratio within float rounding of a whole number may give N or N+1 on the GPU.
+bool knife_edge_count(const Layout& p, int max_probes)
+{
+    if (!std::isfinite(p.ratio))
+        return false;
+    for (int k = 1; k < max_probes; ++k)
+        if (std::abs(p.ratio - k) <= 1e-5 * k)
+            return true;
+    return false;
+}
+
+// Largest channel difference between the 2x2 texels a bilinear lookup reads, across (x) and down (y).
+void texel_contrast(const Image& level, double u, double v, Wrap wrap, double& across, double& down)
+{
+    double x = u * level.width - 0.5, y = v * level.height - 0.5;
+    long long i0 = (long long)std::floor(x), j0 = (long long)std::floor(y);
+    glm::dvec4 t[2][2];
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+            t[j][i] = glm::dvec4(level.at(wrap_texel(i0 + i, level.width, wrap), wrap_texel(j0 + j, level.height, wrap)));
+    across = std::max(max_diff(t[0][0], t[0][1]), max_diff(t[1][0], t[1][1]));
+    down = std::max(max_diff(t[0][0], t[1][0]), max_diff(t[0][1], t[1][1]));
+}
+
+// How far a bilinear lookup moves when its weights move by `step` (a fraction of a texel): a step in
+// alpha moves both rows, a step in beta moves between rows (themselves moved by alpha).
+double bilinear_bound(const Image& level, double u, double v, Wrap wrap, double step)
+{
+    double across, down;
+    texel_contrast(level, u, v, wrap, across, down);
+    return step * (across + down + across);
+}
+
+// Float rounding of the GPU's arithmetic on values <= 1, apart from positions and LOD (below): a bilinear
+// lookup is 3 mixes, trilinear one more, each within ~2 ulps of 1 (2^-24 = 6e-8), and the probe sum (up to
+// 16 adds) and its division add a relative ~(N + 2) 2^-24 <= 1e-6: 1e-6 covers it (worst measured: below).
+const double kFloatArithmetic = 1e-6;
+
+// Bound on |GPU manual - reference| for one lookup of brilinear (one probe at uv) or aniso (the layout),
+// with every input the same float on both sides. Beyond kFloatArithmetic:
+// - positions: the GPU rounds uv + t*axis (a product and a sum: 2^-24 (|t axis| + |uv_k|) of uv) and the
+//   texel coordinate u*w_l - 1/2 (2^-24 (|u w_l| + 1/2) texels; u*w_l itself is exact for power-of-two
+//   sizes, counted anyway). A shift of d texels moves a bilinear lookup by at most d times its contrast
+//   along that axis (first order; alpha's row mix and beta's column mix).
+//   On a 256 texture with uv up to 2 that is ~1.5e-5 texels: the largest term for contrasty textures.
+// - feline's axis direction: a near-round ellipse's major axis is ill-conditioned; the float SVD's angle is
+//   off by ~2^-23 sigma1/(sigma1 - sigma2), which moves probe k by that times its offset |t_k| sigma1.
+// - the LOD: log2 of a float rho^2 (2^-24 relative -> 1e-7), float log2 and the bias sums (an ulp or two of
+//   lambda); feline's sigma2 = |Q - R| loses log2(sigma1/sigma2) bits. Times |fine - coarse| and the blend's
+//   slope (1 for trilinear probes, 1/band for brilinear).
+double float_bound(const MipChain& chain, Wrap wrap, const Lookup& l, const Layout& p, bool feline, double lod_gain = 1)
+{
+    const int top = int(chain.levels.size()) - 1;
+    const int lo = int(std::floor(p.lod)), hi = std::min(lo + 1, top);
+    const double eps = std::exp2(-24.0);
+    double lod_error = 2e-7 + 4 * eps * std::abs(p.lod);
+    double angle_error = 0;
+    if (feline && p.count > 1) {
+        angle_error = 2 * eps * p.sigma1 / (p.sigma1 - p.sigma2);
+        lod_error += 2 * eps * std::min(p.ratio, 16.0) / std::log(2.0);
+    }
+    const double w0 = chain.levels[0].width, h0 = chain.levels[0].height;
+    double bound = kFloatArithmetic;
+    for (int k = 0; k < p.count; ++k) {
+        const double t = p.t[size_t(k)];
+        const double u = l.u + t * p.axis_u, v = l.v + t * p.axis_v;
+        const double off_u = std::abs(t * p.axis_u), off_v = std::abs(t * p.axis_v); // uv
+        const double turn = angle_error * std::abs(t) * std::hypot(p.axis_u * w0, p.axis_v * h0); // level-0 texels
+        double probe = 0;
+        for (int level : {lo, hi}) {
+            const Image& img = chain.levels[size_t(level)];
+            const double w = img.width, h = img.height;
+            const double du = eps * (2 * (off_u + std::abs(u)) * w + 0.5) + turn * w / w0;
+            const double dv = eps * (2 * (off_v + std::abs(v)) * h + 0.5) + turn * h / h0;
+            double across, down;
+            texel_contrast(img, u, v, wrap, across, down);
+            probe = std::max(probe, du * across + dv * down);
+        }
+        glm::dvec4 fine = reference_bilinear(chain.levels[size_t(lo)], u, v, wrap);
+        glm::dvec4 coarse = reference_bilinear(chain.levels[size_t(hi)], u, v, wrap);
+        bound += p.weight[size_t(k)] * (probe + lod_gain * lod_error * max_diff(fine, coarse));
+    }
+    return bound;
+}
+
+// Bound on |hardware taps - manual taps| (as tests/test_hw_vs_manual.cpp derives it): each probe is one
+// textureLod at an explicit LOD, which the sampler may quantise to mipmapPrecisionBits (4 on lavapipe:
+// within 1/16), and whose bilinear weights it rounds to subTexelPrecisionBits (8: within 1/256 of a texel).
+// Trilinear is piecewise linear in lambda, so its extremes over [lambda - e, lambda + e] are at the ends
+// or at whole levels in between.
+const double kSubTexelStep = 1.0 / 256.0;
+const double kMipmapStep = 1.0 / 16.0;
+
+double hardware_bound(const MipChain& chain, Wrap wrap, const Lookup& l, const Layout& p)
+{
+    const int top = int(chain.levels.size()) - 1;
+    double bound = kFloatArithmetic;
+    for (int k = 0; k < p.count; ++k) {
+        double u = l.u + p.t[size_t(k)] * p.axis_u, v = l.v + p.t[size_t(k)] * p.axis_v;
+        glm::dvec4 centre = reference_trilinear_at(chain, p.lod, u, v, wrap);
+        std::vector<double> lods = {p.lod - kMipmapStep, p.lod + kMipmapStep};
+        for (int d = int(std::ceil(p.lod - kMipmapStep)); d <= int(std::floor(p.lod + kMipmapStep)); ++d)
+            lods.push_back(d);
+        double spread = 0, weights = 0;
+        for (double d : lods)
+            spread = std::max(spread, max_diff(reference_trilinear_at(chain, d, u, v, wrap), centre));
+        for (int level = std::max(0, int(p.lod - kMipmapStep)); level <= std::min(top, int(p.lod + kMipmapStep) + 1); ++level)
+            weights = std::max(weights, bilinear_bound(chain.levels[size_t(level)], u, v, wrap, kSubTexelStep));
+        bound += p.weight[size_t(k)] * (spread + weights);
+    }
+    return bound;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Part 1: the CPU reference.
+
+const glm::dvec4 kLevel[4] = {{1, 0, 0, 1}, {1, 0.5, 0, 1}, {1, 1, 0, 1}, {0.5, 1, 0, 1}}; // mipcolors 0..3
+
+void reference_checks()
+{
+    const MipChain colors = make_procedural("mipcolors", 256);
+    // rho = 2 texels (log2 = 1 exactly) and a bias of f: lambda = 1 + f, between level 1 (1, .5, 0) and
+    // level 2 (1, 1, 0), so green = 0.5 + 0.5 w. f values are exact in float (SamplerOptions holds floats).
+    const Lookup two = lookup_texels(0.3, 0.6, 256, 2, 0, 0, 2);
+    auto green = [&](double band, double f) {
+        SamplerOptions o = brilinear(band);
+        o.lod_bias = float(f);
+        return reference_sample(colors, o, two);
+    };
+    auto blend = [](double w) { return glm::dvec4(1, 0.5 + 0.5 * w, 0, 1); };
+
+    run_check("ref brilinear band 0.25: weights at f = 5/16 .. 11/16", [&] {
+        // (1 - B)/2 = 3/8; w = clamp((f - 3/8) / (1/4), 0, 1): 0, 1/4, 1/2, 3/4, 1.
+        CHECK_NEAR(green(0.25, 0.3125), blend(0.0), 1e-15);
+        CHECK_NEAR(green(0.25, 0.375), blend(0.0), 1e-15);
+        CHECK_NEAR(green(0.25, 0.4375), blend(0.25), 1e-15);
+        CHECK_NEAR(green(0.25, 0.5), blend(0.5), 1e-15);
+        CHECK_NEAR(green(0.25, 0.5625), blend(0.75), 1e-15);
+        CHECK_NEAR(green(0.25, 0.625), blend(1.0), 1e-15);
+        CHECK_NEAR(green(0.25, 0.6875), blend(1.0), 1e-15);
+        return std::string();
+    });
+    run_check("ref brilinear band 0.5 / 1 / 0: weights by hand", [&] {
+        CHECK_NEAR(green(0.5, 0.3125), blend(0.125), 1e-15); // (5/16 - 1/4) / (1/2)
+        CHECK_NEAR(green(0.5, 0.25), blend(0.0), 1e-15);
+        CHECK_NEAR(green(1.0, 0.3125), blend(0.3125), 1e-15); // band 1: w = f
+        CHECK_NEAR(green(0.0, 0.4375), blend(0.0), 1e-15);    // band 0: nearest level
+        CHECK_NEAR(green(0.0, 0.5), blend(0.0), 1e-15);       // the tie stays on the finer level, as ceil(d + 1/2) - 1
+        CHECK_NEAR(green(0.0, 0.5 + 1.0 / 1024), blend(1.0), 1e-15);
+        return std::string();
+    });
+    run_check("ref brilinear: clamps (lod-max, last level, magnification)", [&] {
+        SamplerOptions o = brilinear(0.25);
+        o.lod_max = 1.5f; // lambda 9 clamps to 1.5: w = 1/2
+        CHECK_NEAR(reference_sample(colors, o, lookup_texels(0.3, 0.6, 256, 512, 0, 0, 512)), blend(0.5), 1e-15);
+        const MipChain& c = colors; // lambda 20 clamps to the last level (8): its colour, no level 9
+        CHECK_NEAR(reference_sample(c, brilinear(0.25), lookup_texels(0.3, 0.6, 256, 1 << 20, 0, 0, 1)),
+                   glm::dvec4(c.levels[8].at(0, 0)), 0.0);
+        CHECK_NEAR(reference_sample(c, brilinear(0.25), lookup_texels(0.3, 0.6, 256, 0.25, 0, 0, 0.25)), kLevel[0], 0.0);
+        return std::string();
+    });
+
+    const MipChain noise = make_procedural("noise", 256);
+    const std::vector<Lookup> lookups = random_lookups(2000, 7);
+    run_check("ref brilinear band 1 == trilinear (exact, 2000 x 3 wraps)", [&] {
+        for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror})
+            for (const Lookup& l : lookups)
+                CHECK_NEAR(reference_sample(noise, brilinear(1.0, wrap), l),
+                           reference_sample(noise, options_for(Filter::trilinear, wrap), l), 0.0);
+        return std::string();
+    });
+    run_check("ref brilinear band 0 == bilinear-mip (exact, 2000 x 3 wraps)", [&] {
+        for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror})
+            for (const Lookup& l : lookups)
+                CHECK_NEAR(reference_sample(noise, brilinear(0.0, wrap), l),
+                           reference_sample(noise, options_for(Filter::bilinear_mip, wrap), l), 0.0);
+        return std::string();
+    });
+
+    // aniso, gpu shape. J = diag(8, 2) texels: Pmax/Pmin = 4 -> N = 4, lambda = log2(8/4) = 1: on mipcolors
+    // every probe reads level 1 alone.
+    const Lookup j82 = lookup_texels(0.3, 0.6, 256, 8, 0, 0, 2);
+    run_check("ref aniso gpu J=diag(8,2): N=4, lambda=1 (mipcolors)", [&] {
+        CHECK_NEAR(reference_sample(colors, aniso(16, AnisoShape::gpu), j82), kLevel[1], 0.0);
+        CHECK_NEAR(reference_sample(colors, aniso(4, AnisoShape::gpu), j82), kLevel[1], 0.0);
+        // probes 2: N = 2, lambda = log2(8/2) = 2.
+        CHECK_NEAR(reference_sample(colors, aniso(2, AnisoShape::gpu), j82), kLevel[2], 0.0);
+        // J = diag(8, 3): N = ceil(8/3) = 3, lambda = log2(8/3) = 1.41503749927884381 -> green 0.5 + f/2.
+        CHECK_NEAR(reference_sample(colors, aniso(16, AnisoShape::gpu), lookup_texels(0.3, 0.6, 256, 8, 0, 0, 3)),
+                   glm::dvec4(1, 0.707518749639421907, 0, 1), 1e-15);
+        // The y column major (J = [[1, 0], [0, 6]]... rotated): N = 6, lambda = 0.
+        CHECK_NEAR(reference_sample(colors, aniso(16, AnisoShape::gpu), lookup_texels(0.3, 0.6, 256, 0, 1, 6, 0)),
+                   kLevel[0], 0.0);
+        return std::string();
+    });
+
+    // Probe places on a 16x16 noise texture: J = diag(8, 2) texels -> 4 probes at u +- 1, +- 3 texels
+    // (1/16 uv each), v unchanged, on LOD 1, equal weights. J = [[0, 2], [8, 0]] (y major... x column
+    // (0, 8)): probes along v.
+    const MipChain small = noise_chain(16, 11);
+    run_check("ref aniso gpu: probe places and weights by hand (16x16)", [&] {
+        for (Wrap wrap : {Wrap::repeat, Wrap::mirror}) {
+            auto tri = [&](double u, double v) { return reference_trilinear_at(small, 1.0, u, v, wrap); };
+            double u = 0.41, v = 0.23, t = 1.0 / 16;
+            glm::dvec4 along_u = (tri(u - 3 * t, v) + tri(u - t, v) + tri(u + t, v) + tri(u + 3 * t, v)) / 4.0;
+            glm::dvec4 along_v = (tri(u, v - 3 * t) + tri(u, v - t) + tri(u, v + t) + tri(u, v + 3 * t)) / 4.0;
+            CHECK_NEAR(reference_sample(small, aniso(16, AnisoShape::gpu, wrap), lookup_texels(u, v, 16, 8, 0, 0, 2)),
+                       along_u, 1e-15);
+            CHECK_NEAR(reference_sample(small, aniso(16, AnisoShape::gpu, wrap), lookup_texels(u, v, 16, 0, 8, 2, 0)),
+                       along_v, 1e-15);
+            // Sheared J: columns (8, 0) and (3, 2): Px = 8 > Py = sqrt(13), N = ceil(2.219) = 3,
+            // lambda = log2(8/3); probes along the x column at -1/3, 0, +1/3 of it.
+            glm::dvec4 sheared(0.0);
+            double lambda = std::log2(8.0 / 3.0);
+            for (double s : {-1.0 / 3, 0.0, 1.0 / 3})
+                sheared += reference_trilinear_at(small, lambda, u + s * 8 / 16, v, wrap) / 3.0;
+            CHECK_NEAR(reference_sample(small, aniso(16, AnisoShape::gpu, wrap), lookup_texels(u, v, 16, 8, 0, 3, 2)),
+                       sheared, 1e-15);
+        }
+        return std::string();
+    });
+
+    // Feline: J = R(30 deg) diag(8, 2) R(-55 deg)^T has singular values 8, 2 and major axis (cos 30, sin 30):
+    // N = 4, lambda = log2(max(2, 8/4)) = 1, probes at t = -3/8, -1/8, 1/8, 3/8 of the 8-texel axis
+    // (-3, -1, 1, 3 texels), weights exp(-2 (2t)^2) = exp(-1.125), exp(-0.125), exp(-0.125), exp(-1.125).
+    run_check("ref aniso feline: SVD axis, N=4, lambda=1, Gaussian weights", [&] {
+        const double pi = 3.14159265358979323846, a = 30 * pi / 180, b = -55 * pi / 180;
+        // J = [U0 U1] diag(8, 2) [[cos b, -sin b], [sin b, cos b]], U0 = (cos a, sin a), U1 = (-sin a, cos a).
+        const double s1 = 8, s2 = 2, ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b);
+        const double jxu = ca * s1 * cb - sa * s2 * sb, jxv = sa * s1 * cb + ca * s2 * sb;
+        const double jyu = ca * s1 * (-sb) - sa * s2 * cb, jyv = sa * s1 * (-sb) + ca * s2 * cb;
+        double u = 0.41, v = 0.23;
+        glm::dvec4 sum(0.0);
+        double wsum = 0;
+        for (int k = 0; k < 4; ++k) {
+            double texels = -3.0 + 2 * k, w = std::exp(-2 * std::pow(texels / 4, 2));
+            sum += w * reference_trilinear_at(small, 1.0, u + texels * ca / 16, v + texels * sa / 16, Wrap::repeat);
+            wsum += w;
+        }
+        CHECK_NEAR(reference_sample(small, aniso(16, AnisoShape::feline), lookup_texels(u, v, 16, jxu, jxv, jyu, jyv)),
+                   sum / wsum, 1e-12);
+        // On mipcolors: LOD 1 (N = 4), and with probes 2 LOD log2(max(2, 8/2)) = 2.
+        CHECK_NEAR(reference_sample(colors, aniso(16, AnisoShape::feline), lookup_texels(u, v, 256, jxu, jxv, jyu, jyv)),
+                   kLevel[1], 1e-12);
+        CHECK_NEAR(reference_sample(colors, aniso(2, AnisoShape::feline), lookup_texels(u, v, 256, jxu, jxv, jyu, jyv)),
+                   kLevel[2], 1e-12);
+        return std::string();
+    });
+
+    run_check("ref aniso probes 1 == trilinear (gpu exact, feline 1e-12)", [&] {
+        // Feline's single probe sits on log2(sigma1), trilinear's on log2(max column): equal only where the
+        // columns are orthogonal, as they are in this set (no shear).
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<double> uv(-1, 2), ang(0, 6.283185307179586), oct(-4, 9), st(0, 3);
+        for (int i = 0; i < 2000; ++i) {
+            double s = std::exp2(oct(rng)) / 256, a = ang(rng), r = std::exp2(st(rng));
+            Lookup l{uv(rng), uv(rng), s * std::cos(a), s * std::sin(a), -s / r * std::sin(a), s / r * std::cos(a)};
+            glm::dvec4 tri = reference_sample(noise, options_for(Filter::trilinear), l);
+            CHECK_NEAR(reference_sample(noise, aniso(1, AnisoShape::gpu), l), tri, 0.0);
+            CHECK_NEAR(reference_sample(noise, aniso(1, AnisoShape::feline), l), tri, 1e-12);
+        }
+        for (const Lookup& l : lookups) // sheared too, for the gpu shape
+            CHECK_NEAR(reference_sample(noise, aniso(1, AnisoShape::gpu), l),
+                       reference_sample(noise, options_for(Filter::trilinear), l), 0.0);
+        return std::string();
+    });
+
+    run_check("ref constant texture -> constant (weights sum to 1)", [&] {
+        Image flat = make_image(64, 48, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f)); // NPOT-ish chain
+        MipChain chain = build_mip_chain(flat);
+        glm::dvec4 c(0.25, 0.5, 0.75, 1.0);
+        std::vector<Lookup> all = random_lookups(500, 3);
+        for (const Lookup& l : degenerate_lookups())
+            all.push_back(l);
+        for (const Lookup& l : all) {
+            for (double band : {0.0, 0.25, 1.0})
+                CHECK_NEAR(reference_sample(chain, brilinear(band), l), c, 1e-14);
+            for (int probes : {1, 3, 16})
+                for (AnisoShape shape : {AnisoShape::gpu, AnisoShape::feline})
+                    CHECK_NEAR(reference_sample(chain, aniso(probes, shape), l), c, 1e-14);
+        }
+        return std::string();
+    });
+
+    run_check("ref degenerate: zero -> finest, NaN/Inf -> coarsest, 0-column -> N max", [&] {
+        const glm::dvec4 last(colors.levels.back().at(0, 0));
+        for (AnisoShape shape : {AnisoShape::gpu, AnisoShape::feline}) {
+            SamplerOptions o = aniso(16, shape);
+            CHECK_NEAR(reference_sample(colors, o, {0.3, 0.7, 0, 0, 0, 0}), kLevel[0], 0.0);
+            CHECK_NEAR(reference_sample(colors, o, {0.3, 0.7, std::nan(""), 0, 0, 0.01}), last, 0.0);
+            CHECK_NEAR(reference_sample(colors, o, {0.3, 0.7, 0.01, -INFINITY, 0, 0}), last, 0.0);
+            // One column zero: N = 16 and lambda = log2(64/16) = 2 (gpu: Pmax = 64; feline: sigma1 = 64,
+            // sigma2 = 0, max(0, 64/16) = 4).
+            CHECK_NEAR(reference_sample(colors, o, lookup_texels(0.3, 0.7, 256, 64, 0, 0, 0)), kLevel[2], 1e-12);
+            // Parallel columns: sigma2 = 0 too; gpu: Pmax/Pmin = 2 -> N = 2, lambda = log2(64/2) = 5.
+        }
+        CHECK_NEAR(reference_sample(colors, aniso(16, AnisoShape::gpu), lookup_texels(0.3, 0.7, 256, 64, 0, 32, 0)),
+                   glm::dvec4(colors.levels[5].at(0, 0)), 1e-12);
+        CHECK_NEAR(reference_sample(colors, brilinear(0.25), {0.3, 0.7, std::nan(""), 0, 0, 0}), last, 0.0);
+        CHECK_NEAR(reference_sample(colors, brilinear(0.25), {0.3, 0.7, 0, 0, 0, 0}), kLevel[0], 0.0);
+        return std::string();
+    });
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Part 2: the GPU through `texfilter sample`.
+
+std::string g_texfilter;
+std::filesystem::path g_work;
+
+struct GpuResult {
+    std::vector<glm::dvec4> colors;
+    std::vector<unsigned> fetches, hw_lookups;
+};
+
+GpuResult run_sample(const std::string& texture, const std::string& flags, const std::string& lookups)
+{
+    static int run = 0;
+    std::string out = (g_work / ("out" + std::to_string(run++) + ".csv")).string();
+    std::string command = "'" + g_texfilter + "' sample --validate --stats --texture " + texture + " " + flags +
+                          " --lookups '" + lookups + "' -o '" + out + "' > /dev/null";
+    if (std::system(command.c_str()) != 0)
+        throw Error("command failed: " + command);
+    std::ifstream in(out);
+    std::string line;
+    std::getline(in, line);
+    if (line != "r,g,b,a,fetches,hw_lookups")
+        throw Error("unexpected header '" + line + "' from " + command);
+    GpuResult r;
+    while (std::getline(in, line)) {
+        glm::dvec4 c;
+        unsigned f = 0, h = 0;
+        if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%u,%u", &c.r, &c.g, &c.b, &c.a, &f, &h) != 6)
+            throw Error("bad row '" + line + "' from " + command);
+        r.colors.push_back(c);
+        r.fetches.push_back(f);
+        r.hw_lookups.push_back(h);
+    }
+    return r;
+}
+
+void write_lookups(const std::string& path, const std::vector<Lookup>& lookups)
+{
+    std::ofstream out(path);
+    out << "u,v,dudx,dvdx,dudy,dvdy\n";
+    out.precision(9);
+    for (const Lookup& l : lookups)
+        out << l.u << "," << l.v << "," << l.dudx << "," << l.dvdx << "," << l.dudy << "," << l.dvdy << "\n";
+}
+
+// Worst error over the lookups, as a ratio to each lookup's bound.
+struct Tally {
+    int checked = 0, skipped = 0, worst_at = -1;
+    double worst_error = 0, worst_ratio = 0;
+    void add(double error, double bound)
+    {
+        if (error > worst_error)
+            worst_at = checked + skipped;
+        ++checked;
+        worst_error = std::max(worst_error, error);
+        worst_ratio = std::max(worst_ratio, error / bound);
+    }
+    std::string summary() const
+    {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "%d lookups (%d knife-edge skipped), max error %.3g (lookup %d), worst error/bound %.3f",
+                      checked, skipped, worst_error, worst_at, worst_ratio);
+        return buf;
+    }
+};
+
+struct Case {
+    std::string texture;
+    Wrap wrap;
+};
+
+void gpu_checks()
+{
+    std::vector<Lookup> lookups = random_lookups(4096, 2026);
+    for (const Lookup& l : degenerate_lookups())
+        lookups.push_back(l);
+    for (Lookup& l : lookups) // the reference sees the float values the GPU sees
+        l = {float(l.u), float(l.v), float(l.dudx), float(l.dvdx), float(l.dudy), float(l.dvdy)};
+    const std::string path = (g_work / "lookups.csv").string();
+    write_lookups(path, lookups);
+    auto flags = [](const std::string& filter, Wrap wrap) { return "--filter " + filter + " --wrap " + to_string(wrap); };
+
+    // Every lookup of a texfilter filter reads at most 16 probes x 8 texels.
+    auto check_caps = [&](const GpuResult& r) {
+        for (size_t i = 0; i < r.colors.size(); ++i) {
+            CHECK(r.fetches[i] <= 128 && r.hw_lookups[i] <= 16,
+                  "(lookup " + std::to_string(i) + ": " + std::to_string(r.fetches[i]) + " fetches, " +
+                      std::to_string(r.hw_lookups[i]) + " hw lookups)");
+            CHECK(std::isfinite(r.colors[i].x) && std::isfinite(r.colors[i].w), "(lookup " + std::to_string(i) + ")");
+        }
+    };
+
+    // --- brilinear -----------------------------------------------------------------------------------
+    for (const Case& c : {Case{"noise", Wrap::repeat}, Case{"zoneplate", Wrap::mirror}}) {
+        const MipChain chain = make_procedural(c.texture, 256);
+        const SamplerOptions o = brilinear(0.25, c.wrap);
+        GpuResult gpu;
+        run_check("gpu brilinear 0.25 vs reference (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
+            gpu = run_sample(c.texture, flags("brilinear", c.wrap) + " --band 0.25", path);
+            Tally tally;
+            for (size_t i = 0; i < lookups.size(); ++i) {
+                const Lookup& l = lookups[i];
+                Layout p; // one "probe" at uv, on lambda
+                p.lod = clamp_lod(chain, reference_lod(chain, l, o));
+                p.t = {0.0};
+                p.weight = {1.0};
+                double bound = float_bound(chain, c.wrap, l, p, false, 4.0); // the blend's slope is 1/B = 4 in the band
+                double error = max_diff(gpu.colors[i], reference_sample(chain, o, l));
+                tally.add(error, bound);
+                CHECK(error <= bound, "(lookup " + std::to_string(i) + ": error " + str(error) + " > " + str(bound) + ")");
+            }
+            check_caps(gpu);
+            return tally.summary();
+        });
+        run_check("gpu brilinear 0.25 fetches: 4 outside the band, 8 inside (" + c.texture + ")", [&] {
+            int outside = 0, inside = 0, skipped = 0;
+            for (size_t i = 0; i < lookups.size(); ++i) {
+                double d = clamp_lod(chain, reference_lod(chain, lookups[i], o)), f = d - std::floor(d);
+                if (std::abs(f - 0.375) < 1e-4 || std::abs(f - 0.625) < 1e-4) {
+                    ++skipped;
+                    continue;
+                }
+                unsigned expected = f > 0.375 && f < 0.625 ? 8 : 4;
+                (expected == 8 ? inside : outside)++;
+                CHECK(gpu.fetches[i] == expected, "(lookup " + std::to_string(i) + ": f " + str(f) + ", " +
+                                                      std::to_string(gpu.fetches[i]) + " fetches)");
+            }
+            CHECK(inside > 100 && outside > 100, "(" + std::to_string(inside) + " inside)");
+            return std::to_string(outside) + " outside (4), " + std::to_string(inside) + " inside (8), " +
+                   std::to_string(skipped) + " at the band's edge skipped";
+        });
+    }
+    {
+        const std::string t = "noise";
+        run_check("gpu brilinear band 1 == trilinear (bit for bit)", [&] {
+            GpuResult band = run_sample(t, flags("brilinear", Wrap::repeat) + " --band 1", path);
+            GpuResult tri = run_sample(t, flags("trilinear", Wrap::repeat), path);
+            double worst = 0;
+            for (size_t i = 0; i < lookups.size(); ++i) {
+                worst = std::max(worst, max_diff(band.colors[i], tri.colors[i]));
+                CHECK_NEAR(band.colors[i], tri.colors[i], 0.0);
+                CHECK_EQ(double(band.fetches[i]), double(tri.fetches[i]));
+            }
+            return "max difference " + str(worst);
+        });
+        run_check("gpu brilinear band 0 == bilinear-mip (bit for bit)", [&] {
+            GpuResult band = run_sample(t, flags("brilinear", Wrap::clamp) + " --band 0", path);
+            GpuResult mip = run_sample(t, flags("bilinear-mip", Wrap::clamp), path);
+            double worst = 0;
+            for (size_t i = 0; i < lookups.size(); ++i) {
+                worst = std::max(worst, max_diff(band.colors[i], mip.colors[i]));
+                CHECK_NEAR(band.colors[i], mip.colors[i], 0.0);
+                CHECK_EQ(double(band.fetches[i]), 4.0);
+            }
+            return "max difference " + str(worst);
+        });
+    }
+
+    // The nearest-level tie: rho = 1 texel and a bias of 3/2 gives lambda = 1.5 exactly (level 1, the finer);
+    // 1.5 + 2^-23 (the next float) must pick level 2, as ceil(d + 1/2) - 1 does in exact arithmetic.
+    run_check("gpu brilinear band 0 at the tie f = 1/2 and 1/2 + 1 ulp", [&] {
+        const std::string tie = (g_work / "tie.csv").string();
+        write_lookups(tie, {{0.3, 0.6, 1.0 / 256, 0, 0, 1.0 / 256}});
+        const MipChain colors = make_procedural("mipcolors", 256);
+        std::string note;
+        for (const char* bias : {"1.5", "1.50000012"}) {
+            GpuResult band = run_sample("mipcolors", "--filter brilinear --band 0 --lod-bias " + std::string(bias), tie);
+            SamplerOptions o = brilinear(0.0);
+            o.lod_bias = std::strtof(bias, nullptr);
+            glm::dvec4 expected = reference_sample(colors, o, {0.3, 0.6, 1.0 / 256, 0, 0, 1.0 / 256});
+            CHECK_NEAR(band.colors[0], expected, 0.0);
+            // tf_bilinear_mip (lod.glsl's tf_mip_level_nearest) rounds lambda + 1/2 in float: not checked here.
+            GpuResult mip = run_sample("mipcolors", "--filter bilinear-mip --lod-bias " + std::string(bias), tie);
+            if (max_diff(mip.colors[0], expected) > 0)
+                note += std::string(note.empty() ? "note: bilinear-mip differs from the reference at bias " : ", ") + bias;
+        }
+        return note;
+    });
+
+    // Known footprints on mipcolors (each level one colour), counted: J = diag(8, 2) texels -> N = 4 on
+    // LOD 1 exactly (4 fetches a probe: 16); diag(8, 3) -> N = 3, LOD log2(8/3) (24 fetches); one column
+    // (64, 0) -> N = 16, LOD 2 (64 fetches); zero -> level 0, NaN -> the last level, one probe (4 fetches).
+    run_check("gpu aniso known footprints: N, LOD, fetches (mipcolors)", [&] {
+        const std::string known = (g_work / "known.csv").string();
+        const double t = 1.0 / 256;
+        const std::vector<Lookup> ls = {{0.3, 0.6, 8 * t, 0, 0, 2 * t},  {0.3, 0.6, 8 * t, 0, 0, 3 * t},
+                                        {0.3, 0.6, 64 * t, 0, 0, 0},     {0.3, 0.6, 0, 0, 0, 0},
+                                        {0.3, 0.6, std::nan(""), 0, 0, 0}};
+        write_lookups(known, ls);
+        const MipChain colors = make_procedural("mipcolors", 256);
+        const unsigned fetches[] = {16, 24, 64, 4, 4}, probes[] = {4, 3, 16, 1, 1};
+        for (AnisoShape shape : {AnisoShape::gpu, AnisoShape::feline}) {
+            GpuResult manual = run_sample("mipcolors", "--filter aniso --probes 16 --aniso-shape " + to_string(shape), known);
+            GpuResult hardware = run_sample("mipcolors", "--filter aniso --probes 16 --taps hardware --aniso-shape " + to_string(shape), known);
+            for (size_t i = 0; i < ls.size(); ++i) {
+                glm::dvec4 expected = reference_sample(colors, aniso(16, shape), ls[i]);
+                CHECK_NEAR(manual.colors[i], expected, 1e-6);
+                CHECK_NEAR(hardware.colors[i], expected, 1e-6);
+                CHECK_EQ(double(manual.fetches[i]), double(fetches[i]));
+                CHECK_EQ(double(hardware.hw_lookups[i]), double(probes[i]));
+            }
+            CHECK_NEAR(manual.colors[0], kLevel[1], 0.0);
+            CHECK_NEAR(manual.colors[2], kLevel[2], 0.0);
+            CHECK_NEAR(manual.colors[3], kLevel[0], 0.0);
+            CHECK_NEAR(manual.colors[4], glm::dvec4(colors.levels.back().at(0, 0)), 0.0);
+        }
+        return std::string();
+    });
+
+    // --- aniso ---------------------------------------------------------------------------------------
+    for (AnisoShape shape : {AnisoShape::gpu, AnisoShape::feline}) {
+        const std::string s = to_string(shape);
+        const bool feline = shape == AnisoShape::feline;
+        for (const Case& c : {Case{"noise", Wrap::repeat}, Case{"checker", Wrap::clamp}}) {
+            const MipChain chain = make_procedural(c.texture, 256);
+            const SamplerOptions o = aniso(16, shape, c.wrap);
+            const std::string f = flags("aniso", c.wrap) + " --probes 16 --aniso-shape " + s;
+            GpuResult manual, hardware;
+            std::vector<Layout> layouts;
+            std::vector<bool> edge;
+            for (const Lookup& l : lookups) {
+                layouts.push_back(layout_of(chain, o, l));
+                edge.push_back(knife_edge_count(layouts.back(), 16));
+            }
+            run_check("gpu aniso " + s + " manual vs reference (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
+                manual = run_sample(c.texture, f + " --taps manual", path);
+                Tally tally;
+                for (size_t i = 0; i < lookups.size(); ++i) {
+                    if (edge[i]) {
+                        ++tally.skipped;
+                        continue;
+                    }
+                    double bound = float_bound(chain, c.wrap, lookups[i], layouts[i], feline);
+                    double error = max_diff(manual.colors[i], reference_sample(chain, o, lookups[i]));
+                    tally.add(error, bound);
+                    CHECK(error <= bound, "(lookup " + std::to_string(i) + ": N " + std::to_string(layouts[i].count) +
+                                              ", ratio " + str(layouts[i].ratio) + ", error " + str(error) + " > " + str(bound) + ")");
+                }
+                check_caps(manual);
+                return tally.summary();
+            });
+            run_check("gpu aniso " + s + " manual fetches = 8N (4N on a level) (" + c.texture + ")", [&] {
+                double mean = 0;
+                int checked = 0;
+                for (size_t i = 0; i < lookups.size(); ++i) {
+                    if (edge[i])
+                        continue;
+                    const Layout& p = layouts[i];
+                    unsigned expected = unsigned(p.count) * (p.lod == std::floor(p.lod) ? 4 : 8);
+                    CHECK(manual.fetches[i] == expected && manual.hw_lookups[i] == 0,
+                          "(lookup " + std::to_string(i) + ": N " + std::to_string(p.count) + ", lod " + str(p.lod) +
+                              ", " + std::to_string(manual.fetches[i]) + " fetches)");
+                    mean += manual.fetches[i];
+                    ++checked;
+                }
+                return "mean " + str(mean / checked) + " fetches over " + std::to_string(checked) + " lookups";
+            });
+            run_check("gpu aniso " + s + " hardware vs manual taps (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
+                hardware = run_sample(c.texture, f + " --taps hardware", path);
+                Tally tally;
+                for (size_t i = 0; i < lookups.size(); ++i) {
+                    if (edge[i]) { // the same shader code picks N on both sides, but the layout here may not
+                        ++tally.skipped;
+                        continue;
+                    }
+                    double bound = hardware_bound(chain, c.wrap, lookups[i], layouts[i]);
+                    double error = max_diff(hardware.colors[i], manual.colors[i]);
+                    tally.add(error, bound);
+                    CHECK(error <= bound, "(lookup " + std::to_string(i) + ": error " + str(error) + " > " + str(bound) + ")");
+                    CHECK(hardware.fetches[i] == 0 && hardware.hw_lookups[i] == unsigned(layouts[i].count),
+                          "(lookup " + std::to_string(i) + ": " + std::to_string(hardware.hw_lookups[i]) + " hw lookups, N " +
+                              std::to_string(layouts[i].count) + ")");
+                }
+                check_caps(hardware);
+                return tally.summary();
+            });
+        }
+    }
+    run_check("gpu aniso gpu --probes 1 == trilinear (bit for bit)", [&] {
+        GpuResult one = run_sample("zoneplate", flags("aniso", Wrap::mirror) + " --probes 1", path);
+        GpuResult tri = run_sample("zoneplate", flags("trilinear", Wrap::mirror), path);
+        double worst = 0;
+        for (size_t i = 0; i < lookups.size(); ++i) {
+            worst = std::max(worst, max_diff(one.colors[i], tri.colors[i]));
+            CHECK_NEAR(one.colors[i], tri.colors[i], 0.0);
+            CHECK_EQ(double(one.fetches[i]), double(tri.fetches[i]));
+        }
+        return "max difference " + str(worst);
+    });
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: test_brilinear_aniso PATH/TO/texfilter\n");
+        return 2;
+    }
+    g_texfilter = argv[1];
+    g_work = std::filesystem::temp_directory_path() / ("texfilter-brilinear-aniso-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(g_work);
+    reference_checks();
+    gpu_checks();
+    std::filesystem::remove_all(g_work);
+    std::printf("%s\n", g_failed_checks ? "FAILED" : "all passed");
+    return g_failed_checks ? 1 : 0;
+}
