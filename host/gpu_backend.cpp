@@ -197,6 +197,9 @@ GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, b
     if (uint32_t(base.width) > limit || uint32_t(base.height) > limit)
         throw Error("texture " + std::to_string(base.width) + "x" + std::to_string(base.height) +
                     " exceeds the device limit maxImageDimension2D = " + std::to_string(limit));
+    if (with_sat && (uint32_t(base.width) + 1 > limit || uint32_t(base.height) + 1 > limit))
+        throw Error("the summed-area table of a " + std::to_string(base.width) + "x" + std::to_string(base.height) +
+                    " texture needs one more texel a side than maxImageDimension2D = " + std::to_string(limit));
     GpuTexture t;
     t.width = base.width;
     t.height = base.height;

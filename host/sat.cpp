@@ -1,14 +1,89 @@
-// STUB (being written).
 #include "sat.h"
+
+#include "error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
 namespace tf {
-SatTable build_sat(const Image& level0)
-{
+
+namespace {
+
+constexpr uint64_t kMask40 = (uint64_t(1) << 40) - 1;
+
+// 16-bit level of one channel value. NaN counts as 0 and +Inf as the top level (clamped), so a texture
+// with a bad texel still gets a table whose sums are defined.
+uint64_t quantise(float value, double scale) {
+    if (std::isnan(value)) return 0;
+    const double v = std::clamp(double(value), 0.0, scale);
+    return uint64_t(std::lround(v / scale * double(sat_quantisation_levels)));
+}
+
+uint64_t entry(const SatTable& t, size_t index, int channel) {
+    return uint64_t(t.low[index * 4 + size_t(channel)]) | (uint64_t((t.high[index] >> (8 * channel)) & 0xFFu) << 32);
+}
+
+} // namespace
+
+SatTable build_sat(const Image& level0) {
+    const int w = level0.width, h = level0.height;
+    if (w < 1 || h < 1 || w > sat_max_dimension || h > sat_max_dimension)
+        throw Error("summed-area table: texture " + std::to_string(w) + "x" + std::to_string(h) +
+                    " is outside 1.." + std::to_string(sat_max_dimension) +
+                    " a side (40-bit sums are exact only up to 4096x4096 texels of 16 bits)");
+    if (level0.texels.size() != size_t(w) * size_t(h))
+        throw Error("summed-area table: texture " + std::to_string(w) + "x" + std::to_string(h) + " holds " +
+                    std::to_string(level0.texels.size()) + " texels");
+
+    float largest = 1.0f;
+    for (const glm::vec4& texel : level0.texels)
+        for (int c = 0; c < 4; ++c)
+            if (std::isfinite(texel[c])) largest = std::max(largest, texel[c]);
+
     SatTable t;
-    t.width = level0.width;
-    t.height = level0.height;
-    t.low.assign(size_t(t.width + 1) * size_t(t.height + 1) * 4, 0u);
-    t.high.assign(size_t(t.width + 1) * size_t(t.height + 1), 0u);
+    t.width = w;
+    t.height = h;
+    t.scale = largest;
+    const size_t stride = size_t(w) + 1;
+    t.low.assign(stride * (size_t(h) + 1) * 4, 0u);
+    t.high.assign(stride * (size_t(h) + 1), 0u);
+
+    // S(i, j+1) = S(i, j) + (sum of row j over [0, i)). Row 0 and column 0 stay zero. Held in 64 bits and
+    // stored modulo 2^40 (the true values never exceed 4096^2 x 65535 < 2^40, but the format says mod 2^40).
+    std::vector<uint64_t> above(stride * 4, 0);
+    const double scale = double(t.scale);
+    for (int j = 0; j < h; ++j) {
+        uint64_t row[4] = {0, 0, 0, 0};
+        for (int i = 0; i < w; ++i) {
+            const glm::vec4& texel = level0.at(i, j);
+            const size_t index = size_t(j + 1) * stride + size_t(i + 1);
+            uint32_t high = 0;
+            for (int c = 0; c < 4; ++c) {
+                row[c] += quantise(texel[c], scale);
+                uint64_t& s = above[size_t(i + 1) * 4 + size_t(c)];
+                s = (s + row[c]) & kMask40;
+                t.low[index * 4 + size_t(c)] = uint32_t(s);
+                high |= uint32_t(s >> 32) << (8 * c);
+            }
+            t.high[index] = high;
+        }
+    }
     return t;
 }
-std::array<uint64_t, 4> sat_box_sum(const SatTable&, int, int, int, int) { return {}; }
+
+std::array<uint64_t, 4> sat_box_sum(const SatTable& table, int x0, int y0, int x1, int y1) {
+    if (x0 < 0 || y0 < 0 || x1 < x0 || y1 < y0 || x1 > table.width || y1 > table.height)
+        throw Error("sat_box_sum: box [" + std::to_string(x0) + ", " + std::to_string(x1) + ") x [" +
+                    std::to_string(y0) + ", " + std::to_string(y1) + ") is not inside the " +
+                    std::to_string(table.width) + "x" + std::to_string(table.height) + " texture");
+    const size_t stride = size_t(table.width) + 1;
+    const size_t a = size_t(y0) * stride + size_t(x0), b = size_t(y0) * stride + size_t(x1);
+    const size_t c = size_t(y1) * stride + size_t(x0), d = size_t(y1) * stride + size_t(x1);
+    std::array<uint64_t, 4> sum{};
+    for (int ch = 0; ch < 4; ++ch) // modulo 2^40, as the shader does: exact while the true sum < 2^40
+        sum[size_t(ch)] = (entry(table, d, ch) - entry(table, b, ch) - entry(table, c, ch) + entry(table, a, ch)) & kMask40;
+    return sum;
+}
+
 } // namespace tf

@@ -8,9 +8,13 @@
 
 namespace tf {
 
-// Input quantisation: texel value v (linear, clamped to [0, scale]) -> round(v / scale * 65535).
+// Input quantisation: texel value v (linear, clamped to [0, scale]) -> round(v / scale * 65535); NaN -> 0.
+// A box mean from the table is within 0.5/65535 * scale of the float texels' mean.
 constexpr uint32_t sat_quantisation_levels = 65535;
-// Table words are 40 bits per channel: exact for every box of up to 2^24 texels (4096x4096) of 16-bit values.
+// Bit budget: table entries are running sums kept modulo 2^40 per channel, and box sums A - B - C + D are
+// formed modulo 2^40 (host and shader alike), which is exact whenever the box's true sum is below 2^40:
+// every box of up to 2^24 texels of 16-bit values (24 + 16 = 40 bits), i.e. up to 4096x4096. The shader
+// clamps its boxes to the texture's size, so sides up to 4096 keep every lookup exact.
 constexpr int sat_max_dimension = 4096;
 
 struct SatTable {

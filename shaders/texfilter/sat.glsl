@@ -1,14 +1,280 @@
-// texfilter/sat.glsl — STUB (being written).
+// texfilter/sat.glsl — summed-area-table (SAT) box filter: the exact mean of the texture over the
+// footprint's bounding box, with fractional edges, in constant time whatever the footprint's size.
+//
+// Use:     vec4 c = tf_sat(satLow, satHigh, uv, dUVdx, dUVdy, s, scale);                 // one box
+//          vec4 c = tf_sat_assembly(satLow, satHigh, uv, dUVdx, dUVdy, s, scale, boxes); // K boxes
+//          satLow:  usampler2D, RGBA32UI, (W+1) x (H+1): bits 0..31 of each channel's table entry;
+//          satHigh: usampler2D, R32UI, same size: bits 32..39 of R, G, B, A as bytes 0..3;
+//          scale:   float, the value of quantisation level 65535. All three come from tf::build_sat
+//                   (host/sat.h: SatTable::low, ::high, ::scale); upload them as is, with a nearest
+//                   sampler (integer formats are not filterable; only texelFetch reads them). The
+//                   level-0 texture itself is not needed: W x H is the table's size minus one (W, H ≤
+//                   4096; a table smaller than 2 x 2, i.e. none, gives vec4(0)).
+// Options: s.wrap selects repeat/clamp/mirror; s.lodBias scales the footprint by exp2(lodBias);
+//          s.lodMin/lodMax are ignored (no MIP levels). boxes: 1..16 (clamped), slices of the footprint.
+//
+// Footprint (DESIGN.md §3). Texel space x = u·W, y = v·H; J = [dUVdx dUVdy] in level-0 texels,
+// times exp2(lodBias). tf_sat averages the box-reconstructed texture (texel (i, j) constant on
+// [i, i+1) x [j, j+1)) over the bounding box of the pixel's parallelogram uv + J·(a, b), a, b in [−½, ½]:
+// centre (x, y), half-extents hx = ½(|∂x/∂x|+|∂x/∂y|), hy = ½(|∂y/∂x|+|∂y/∂y|), i.e. the box
+// [x0, x1) x [y0, y1) = [x − hx, x + hx) x [y − hy, y + hy). Result = ∫∫box f / area.
+//   The extent is clamped to at most W x H texels (hx ≤ W/2, hy ≤ H/2): that keeps every sum inside the
+//   bit budget. A footprint wider than the texture thus averages one texture-sized box around uv: with
+//   repeat that is exactly one period (the mean along that axis); with clamp and mirror it is a window
+//   of the extended texture, not the wider footprint's mean.
+//   Non-finite uv → vec4(0). Non-finite gradients → the whole texture [0,W) x [0,H) (its mean, any wrap).
+//   Zero gradients (a zero-width axis) → the texel under uv on that axis (nearest), no division by zero.
+//   Gradient components are clamped to ±2^24 texels first, so huge finite gradients never overflow.
+//
+// Table and bit budget. Each channel is quantised to 16 bits: q = round(clamp(v, 0, scale)/scale·65535),
+// scale = max(1, largest texel value), so a lookup is within 0.5/65535·scale of the exact mean of the
+// float texels, plus float32 rounding (~1e-6 relative, and box edges are float32 texel coordinates:
+// a sub-texel box at coordinate x has its edges within ~2^-24·|x| of the exact ones).
+// S(i, j) = Σ q over texels [0, i) x [0, j), 0 ≤ i ≤ W, 0 ≤ j ≤ H, stored modulo 2^40 in two words.
+// Sums and differences are computed modulo 2^40 (uaddCarry/usubBorrow/umulExtended on two 32-bit words,
+// no 64-bit integers: any Vulkan GPU), so a box sum S(x1,y1) − S(x0,y1) − S(x1,y0) + S(x0,y0) is exact
+// whenever the box's true sum is below 2^40: every box of at most 2^24 texels (24 + 16 = 40 bits),
+// hence every box of at most 4096 x 4096 texels — the box clamp above keeps every box within W x H ≤ 2^24.
+//
+// Fractional edges without cancellation. Per axis, with i0 = floor(x0), a0 = x0 − i0 and the last
+// texel i1 = max(ceil(x1) − 1, i0), a1 = x1 − i1 ∈ (0, 1], the integral of a column function g is
+//     ∫[x0,x1) g = (1 − a0)·G[i0, i0+1) + 1·G[i0+1, i1) + a1·G[i1, i1+1)      (i1 > i0)
+//                = (x1 − x0)·G[i0, i0+1)                                      (i1 = i0: one texel)
+// with G[p, q) the exact integer sum over whole texels [p, q). In 2D the box integral is Σ_k Σ_l
+// wx_k·wy_l·B_kl over the 3 x 3 integer blocks B_kl = [px_k, px_k+1) x [py_l, py_l+1) with corners
+// px = (i0, i0+1, i1, i1+1), py = (j0, j0+1, j1, j1+1): 16 table entries. Each block sum is formed
+// exactly (modulo 2^40, non-negative, so exact) and only then converted to float and weighted; the
+// weights are divided by the width per axis, so the result is a mean directly. A one-texel axis gets
+// weights (1, 0, 0) (the garbage of the negative-width blocks is multiplied by 0); a zero-width axis
+// is the limit, the texel under x (nearest). Mean = Σ/65535·scale.
+//
+// Wrap modes. Box corners may lie outside [0, W]; the table is extended to any integer coordinate i
+// per axis (G = cumulative sum of the wrapped texture, G(0) = 0), each a sum of ≤ 2 table columns
+// with integer coefficients:
+//     inside   0 ≤ i ≤ W:        S(i)
+//     repeat   i = qW + r:       q·S(W) + S(r)                        (0 ≤ r < W)
+//     clamp    i < 0:            i·S(1)                               (texel 0 repeated)
+//              i > W:            (1 + i − W)·S(W) − (i − W)·S(W − 1)  (texel W−1 repeated)
+//     mirror   i = 2qW + r:      2q·S(W) + S(r)                       (0 ≤ r ≤ W)
+//                                (2q + 2)·S(W) − S(2W − r)            (W < r < 2W)
+// so an extended 2D entry is ≤ 4 table entries, all in modular arithmetic (exact as long as the box's
+// own sum fits, as above). Before that the centre is moved by whole periods (repeat: uv mod 1;
+// mirror: uv mod 2; clamp: uv clamped to [−1, 2], beyond which the box only sees edge texels), which
+// changes nothing but keeps coordinates small (and float precision in the box edges).
+//
+// tf_sat_assembly: the parallelogram is cut along its longer column (J·e_x or J·e_y) into K slices;
+// each slice's bounding box is averaged as above and the K means are averaged with equal weights. All
+// slices are translates of one another, so their boxes have the same size and equal weights are the
+// area weights (no slice counts more than another; the overlap of neighbouring boxes is counted in each).
+// K = 1 is tf_sat exactly (same float operations).
+//
+// Cost: 16 table entries inside the texture (2 texelFetch each, low and high word: 32 fetches), at
+// most 64 entries (128 fetches) where the box crosses a border; tf_sat_assembly K times that. Constant
+// in the footprint's size. TF_COUNT_FETCHES counts texelFetch calls.
+// Example: layout(binding = 4) uniform usampler2D satLow;   // RGBA32UI, SatTable::low
+//          layout(binding = 5) uniform usampler2D satHigh;  // R32UI, SatTable::high
+//          vec4 c = tf_sat(satLow, satHigh, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT), satScale);
 #ifndef TF_SAT_GLSL
 #define TF_SAT_GLSL
+
 #include "common.glsl"
+
+// Integers modulo 2^40, one per channel: bits 0..31 in lo, bits 32.. in hi. Arithmetic runs modulo 2^64
+// (2^40 divides 2^64) and only the low 8 bits of hi are kept when converting.
+struct tf_SatInt {
+    uvec4 lo;
+    uvec4 hi;
+};
+
+tf_SatInt tf_sat_add(tf_SatInt a, tf_SatInt b)
+{
+    uvec4 carry;
+    uvec4 lo = uaddCarry(a.lo, b.lo, carry);
+    return tf_SatInt(lo, a.hi + b.hi + carry);
+}
+
+tf_SatInt tf_sat_sub(tf_SatInt a, tf_SatInt b)
+{
+    uvec4 borrow;
+    uvec4 lo = usubBorrow(a.lo, b.lo, borrow);
+    return tf_SatInt(lo, a.hi - b.hi - borrow);
+}
+
+// a·k for a small signed integer k.
+tf_SatInt tf_sat_mul(tf_SatInt a, int k)
+{
+    uint m = uint(abs(k));
+    uvec4 msb, lsb;
+    umulExtended(a.lo, uvec4(m), msb, lsb);
+    tf_SatInt p = tf_SatInt(lsb, a.hi * m + msb);
+    return k < 0 ? tf_sat_sub(tf_SatInt(uvec4(0u), uvec4(0u)), p) : p;
+}
+
+// The value modulo 2^40 as a float (used only on exact, non-negative block sums).
+vec4 tf_sat_to_float(tf_SatInt a) { return vec4(a.hi & 0xFFu) * 4294967296.0 + vec4(a.lo); }
+
+tf_SatInt tf_sat_entry(usampler2D satLow, usampler2D satHigh, ivec2 t)
+{
+    TF_COUNT_FETCHES(2);
+    uint h = texelFetch(satHigh, t, 0).r;
+    return tf_SatInt(texelFetch(satLow, t, 0), uvec4(h, h >> 8, h >> 16, h >> 24) & 0xFFu);
+}
+
+// One integer coordinate i of the extended table along an axis of n texels: E(i) = c.x·S(t.x) + c.y·S(t.y)
+// (a zero coefficient: no term). See the header for the formulas.
+struct tf_SatTerms {
+    ivec2 t;
+    ivec2 c;
+};
+
+tf_SatTerms tf_sat_axis(int i, int n, int wrapMode)
+{
+    if (i >= 0 && i <= n)
+        return tf_SatTerms(ivec2(i, 0), ivec2(1, 0));
+    tf_SatTerms e;
+    if (wrapMode == TF_WRAP_CLAMP) {
+        e = i < 0 ? tf_SatTerms(ivec2(1, 0), ivec2(i, 0)) : tf_SatTerms(ivec2(n, n - 1), ivec2(1 + i - n, n - i));
+    } else {
+        int period = wrapMode == TF_WRAP_MIRROR ? 2 * n : n;
+        int q = (i >= 0 ? i : i - period + 1) / period; // floor division (int / truncates toward zero)
+        int r = i - q * period;
+        if (wrapMode != TF_WRAP_MIRROR)
+            e = tf_SatTerms(ivec2(n, r), ivec2(q, 1));
+        else if (r <= n)
+            e = tf_SatTerms(ivec2(n, r), ivec2(2 * q, 1));
+        else
+            e = tf_SatTerms(ivec2(n, period - r), ivec2(2 * q + 2, -1));
+    }
+    if (e.t.y == 0) // S(0) = 0: nothing to read
+        e.c.y = 0;
+    return e;
+}
+
+// Extended table entry at the corner (x, y): up to 4 table entries with integer coefficients.
+tf_SatInt tf_sat_corner(usampler2D satLow, usampler2D satHigh, tf_SatTerms x, tf_SatTerms y)
+{
+    tf_SatInt sum = tf_SatInt(uvec4(0u), uvec4(0u));
+    for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b) {
+            int k = x.c[a] * y.c[b];
+            if (k == 0)
+                continue;
+            tf_SatInt e = tf_sat_entry(satLow, satHigh, ivec2(x.t[a], y.t[b]));
+            sum = tf_sat_add(sum, k == 1 ? e : tf_sat_mul(e, k));
+        }
+    return sum;
+}
+
+// One axis of the box [x0, x1): corners (i0, i0+1, i1, i1+1) and the weights of the three intervals
+// between them (first texel, whole texels, last texel) divided by the width.
+void tf_sat_edges(float x0, float x1, out ivec4 corners, out vec3 weights)
+{
+    float f0 = floor(x0);
+    float l1 = max(ceil(x1) - 1.0, f0);
+    int i0 = int(f0), i1 = int(l1);
+    corners = ivec4(i0, i0 + 1, i1, i1 + 1);
+    if (l1 == f0) // one texel, or a zero-width box: the texel under x0
+        weights = vec3(1.0, 0.0, 0.0);
+    else
+        weights = vec3(f0 + 1.0 - x0, 1.0, x1 - l1) / (x1 - x0);
+}
+
+// Mean over the box [lo, hi) in texel units (corners within ±2^24), in the units of the texture.
+vec4 tf_sat_box(usampler2D satLow, usampler2D satHigh, vec2 lo, vec2 hi, ivec2 size, int wrapMode, float scale)
+{
+    ivec4 px, py;
+    vec3 wx, wy;
+    tf_sat_edges(lo.x, hi.x, px, wx);
+    tf_sat_edges(lo.y, hi.y, py, wy);
+    tf_SatTerms tx[4];
+    for (int k = 0; k < 4; ++k)
+        tx[k] = tf_sat_axis(px[k], size.x, wrapMode);
+    vec4 sum = vec4(0.0);
+    tf_SatInt previous[3]; // x differences E(px[k+1], y) − E(px[k], y) of the previous corner row
+    for (int l = 0; l < 4; ++l) {
+        tf_SatTerms ty = tf_sat_axis(py[l], size.y, wrapMode);
+        tf_SatInt e0 = tf_sat_corner(satLow, satHigh, tx[0], ty);
+        for (int k = 0; k < 3; ++k) {
+            tf_SatInt e1 = tf_sat_corner(satLow, satHigh, tx[k + 1], ty);
+            tf_SatInt d = tf_sat_sub(e1, e0);
+            if (l > 0) // block [px[k], px[k+1]) x [py[l-1], py[l]): exact, then weighted in float
+                sum += (wx[k] * wy[l - 1]) * tf_sat_to_float(tf_sat_sub(d, previous[k]));
+            previous[k] = d;
+            e0 = e1;
+        }
+    }
+    return sum * (scale / 65535.0);
+}
+
+// Moves uv by whole periods into [0, 1) (repeat) or [0, 2) (mirror): changes nothing (and is exact in
+// float), keeps coordinates small, and is idempotent. Clamp: unchanged.
+vec2 tf_sat_period(vec2 uv, int wrapMode)
+{
+    if (wrapMode == TF_WRAP_CLAMP)
+        return uv;
+    float period = wrapMode == TF_WRAP_MIRROR ? 2.0 : 1.0;
+    uv -= period * floor(uv / period);
+    return mix(uv, vec2(0.0), greaterThanEqual(uv, vec2(period))); // -tiny - floor(-tiny) rounds to period
+}
+
+// Mean over the box of half-extents h (texel units) centred on uv.
+vec4 tf_sat_centred(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 h, ivec2 size, int wrapMode, float scale)
+{
+    vec2 n = vec2(size);
+    h = min(h, 0.5 * n); // at most W x H texels: the bit budget
+    // Clamp: from −1 or 2 outward a box of at most the texture's size sees only edge texels.
+    uv = wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0, 2.0) : tf_sat_period(uv, wrapMode);
+    vec2 c = uv * n;
+    return tf_sat_box(satLow, satHigh, c - h, c + h, size, wrapMode, scale);
+}
+
+// The footprint's columns J·e_x, J·e_y in level-0 texels times exp2(lodBias), components clamped to
+// ±2^24. False for non-finite gradients.
+bool tf_sat_columns(ivec2 size, vec2 dUVdx, vec2 dUVdy, float lodBias, out vec2 jx, out vec2 jy)
+{
+    jx = vec2(0.0);
+    jy = vec2(0.0);
+    if (!tf_finite(dUVdx) || !tf_finite(dUVdy))
+        return false;
+    vec2 m = vec2(size) * exp2(lodBias);
+    jx = clamp(dUVdx * m, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
+    jy = clamp(dUVdy * m, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
+    return true;
+}
+
 vec4 tf_sat(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float scale)
 {
-    return vec4(texelFetch(satLow, ivec2(0), 0) + texelFetch(satHigh, ivec2(0), 0)) * scale;
+    ivec2 size = textureSize(satLow, 0) - 1;
+    if (!tf_finite(uv) || any(lessThan(size, ivec2(1)))) // no table bound: nothing to average
+        return vec4(0.0);
+    vec2 jx, jy;
+    if (!tf_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
+        return tf_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, scale);
+    return tf_sat_centred(satLow, satHigh, uv, 0.5 * (abs(jx) + abs(jy)), size, s.wrap, scale);
 }
+
 vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s,
                      float scale, int boxes)
 {
-    return tf_sat(satLow, satHigh, uv, dUVdx, dUVdy, s, scale);
+    ivec2 size = textureSize(satLow, 0) - 1;
+    if (!tf_finite(uv) || any(lessThan(size, ivec2(1)))) // no table bound: nothing to average
+        return vec4(0.0);
+    vec2 jx, jy;
+    if (!tf_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
+        return tf_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, scale);
+    int k = clamp(boxes, 1, 16);
+    float n = float(k);
+    bool xMajor = dot(jx, jx) >= dot(jy, jy);
+    vec2 major = xMajor ? jx : jy;
+    vec2 minor = xMajor ? jy : jx;
+    vec2 h = 0.5 * (abs(major) / n + abs(minor)); // every slice's bounding box
+    uv = tf_sat_period(uv, s.wrap); // before adding offsets: keeps float precision in the slice centres
+    vec4 sum = vec4(0.0);
+    for (int i = 0; i < k; ++i) {
+        float a = (float(i) + 0.5) / n - 0.5; // slice centre along the major column, in (−½, ½)
+        sum += tf_sat_centred(satLow, satHigh, uv + major * a / vec2(size), h, size, s.wrap, scale);
+    }
+    return sum / n;
 }
+
 #endif
