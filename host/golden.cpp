@@ -1,5 +1,5 @@
 #include "golden.h"
-#include "args.h"
+#include "cli_common.h"
 #include "error.h"
 #include <cstdlib>
 #include <fstream>
@@ -7,27 +7,19 @@
 
 namespace tf {
 
-namespace {
-
-double number(const std::string& where, const std::string& key, const std::string& text)
-{
-    char* end = nullptr;
-    double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0')
-        throw Error(where + ": bad value for " + key + ": '" + text + "'");
-    return value;
-}
-
-} // namespace
-
 std::vector<GoldenCase> read_manifest(const std::string& path)
 {
     std::ifstream in(path);
     if (!in)
         throw Error(path + ": cannot open the golden manifest");
+    // A case's options are the render command's flags written key=value, so both share one parser.
+    const std::vector<FlagSpec> specs = join({{{"--scene", "S", ""}, {"--size", "WxH", ""}, {"--fail", "X", ""},
+                                               {"--failpercent", "P", ""}, {"--hardfail", "H", ""}},
+                                              texture_flags(),
+                                              sampler_flags()});
     std::vector<GoldenCase> cases;
     std::string line;
-    for (int number_line = 1; std::getline(in, line); ++number_line) {
+    for (int number = 1; std::getline(in, line); ++number) {
         if (size_t hash = line.find('#'); hash != std::string::npos)
             line.resize(hash);
         std::stringstream tokens(line);
@@ -36,43 +28,28 @@ std::vector<GoldenCase> read_manifest(const std::string& path)
             words.push_back(w);
         if (words.empty())
             continue;
-        std::string where = path + ":" + std::to_string(number_line);
+        std::string where = path + ":" + std::to_string(number);
         if (words.size() < 4)
             throw Error(where + ": expected NAME SCENE TEXTURE FILTER [key=value ...]");
+        std::vector<std::string> argv = {"--scene", words[1], "--texture", words[2], "--filter", words[3]};
+        for (size_t i = 4; i < words.size(); ++i) {
+            if (words[i].find('=') == std::string::npos)
+                throw Error(where + ": expected key=value, got '" + words[i] + "'");
+            argv.push_back("--" + words[i]);
+        }
         GoldenCase c;
         c.name = words[0];
         try {
-            c.scene = parse_scene(words[1]);
-            c.texture.name_or_path = words[2];
-            c.sampler.filter = parse_filter(words[3]);
+            Args args = parse_args("manifest", argv, specs, 0);
+            c.scene = parse_flag(args, "--scene", "", parse_scene);
+            c.texture = texture_source_from(args);
+            c.sampler = sampler_options_from(args);
+            std::tie(c.width, c.height) = parse_size("size", args.get("--size", "256x256"), 2, 4096);
+            c.thresholds.fail = args.get_double("--fail", c.thresholds.fail, 0.0, 1.0);
+            c.thresholds.fail_percent = args.get_double("--failpercent", c.thresholds.fail_percent, 0.0, 100.0);
+            c.thresholds.hard_fail = args.get_double("--hardfail", c.thresholds.hard_fail, 0.0, 1.0);
         } catch (const Error& e) {
             throw Error(where + ": " + e.what());
-        }
-        for (size_t i = 4; i < words.size(); ++i) {
-            size_t eq = words[i].find('=');
-            if (eq == std::string::npos)
-                throw Error(where + ": expected key=value, got '" + words[i] + "'");
-            std::string key = words[i].substr(0, eq), value = words[i].substr(eq + 1);
-            if (key == "wrap")
-                c.sampler.wrap = parse_wrap(value);
-            else if (key == "lod-bias")
-                c.sampler.lod_bias = float(number(where, key, value));
-            else if (key == "lod-min")
-                c.sampler.lod_min = float(number(where, key, value));
-            else if (key == "lod-max")
-                c.sampler.lod_max = float(number(where, key, value));
-            else if (key == "texture-size")
-                c.texture.procedural_size = int(number(where, key, value));
-            else if (key == "size")
-                std::tie(c.width, c.height) = parse_size(where + ": size", value, 2, 4096);
-            else if (key == "fail")
-                c.thresholds.fail = number(where, key, value);
-            else if (key == "failpercent")
-                c.thresholds.fail_percent = number(where, key, value);
-            else if (key == "hardfail")
-                c.thresholds.hard_fail = number(where, key, value);
-            else
-                throw Error(where + ": unknown key '" + key + "'");
         }
         for (const GoldenCase& other : cases)
             if (other.name == c.name)

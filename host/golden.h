@@ -21,8 +21,9 @@ struct GoldenCase {
     DiffThresholds thresholds{0.0025, 0.0, 0.0025};
 };
 
-// One case a line: NAME SCENE TEXTURE FILTER [key=value ...]; keys: wrap, lod-bias, lod-min, lod-max,
-// texture-size, size (WxH), fail, failpercent, hardfail. '#' starts a comment. Throws naming file:line.
+// One case a line: NAME SCENE TEXTURE FILTER [key=value ...]; keys are the render command's flags
+// without "--" (wrap, lod-bias, texture-size, band, probes, taps, ...) plus size (WxH), fail,
+// failpercent, hardfail. '#' starts a comment. Throws naming file:line.
 std::vector<GoldenCase> read_manifest(const std::string& path);
 
 // Linear image -> sRGB-encoded values in float (no quantisation), alpha unchanged.

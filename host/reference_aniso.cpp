@@ -27,8 +27,10 @@ bool finite_gradients(const Lookup& l) {
     return std::isfinite(l.dudx) && std::isfinite(l.dvdx) && std::isfinite(l.dudy) && std::isfinite(l.dvdy);
 }
 
-// N = min(ceil(ratio), max_n) for ratio >= 1; ratio = +inf (zero minor axis) gives max_n.
-int probe_count(double ratio, int max_n) { return ratio >= max_n ? max_n : int(std::ceil(ratio)); }
+// N = min(ceil(ratio - 1/64), max_n), at least 1; ratio = +inf (zero minor axis) gives max_n. The 1/64 slack
+// keeps isotropic footprints at one probe whatever float noise their derivatives carry.
+constexpr double ratio_slack = 1.0 / 64.0;
+int probe_count(double ratio, int max_n) { return ratio >= max_n ? max_n : std::max(1, int(std::ceil(ratio - ratio_slack))); }
 
 // Probes along the major axis: uv + t_k * axis, t_k = (k + 1/2)/N - 1/2, all at one LOD.
 struct Probes {

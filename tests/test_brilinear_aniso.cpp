@@ -195,7 +195,7 @@ Layout layout_of(const MipChain& chain, const SamplerOptions& o, const Lookup& l
         if (px == 0 && py == 0) {
             p.lod = 0;
         } else {
-            p.count = p.ratio >= o.probes ? o.probes : int(std::ceil(p.ratio));
+            p.count = p.ratio >= o.probes ? o.probes : std::max(1, int(std::ceil(p.ratio - 1.0 / 64.0)));
             p.lod = clamp_lod(chain, std::log2(std::max(px, py) / p.count) + o.lod_bias);
             p.axis_u = px >= py ? l.dudx : l.dudy;
             p.axis_v = px >= py ? l.dvdx : l.dvdy;
@@ -210,7 +210,7 @@ Layout layout_of(const MipChain& chain, const SamplerOptions& o, const Lookup& l
         if (s1 == 0) {
             p.lod = 0;
         } else {
-            p.count = p.ratio >= o.probes ? o.probes : int(std::ceil(p.ratio));
+            p.count = p.ratio >= o.probes ? o.probes : std::max(1, int(std::ceil(p.ratio - 1.0 / 64.0)));
             p.lod = clamp_lod(chain, std::log2(std::max(p.sigma2, s1 / p.count)) + o.lod_bias);
             // Major axis: the unit vector x maximising |J^T x|, from the 2x2 symmetric J J^T.
             double theta = 0.5 * std::atan2(2 * (a * c + b * d), (a * a + b * b) - (c * c + d * d));
@@ -230,13 +230,13 @@ Layout layout_of(const MipChain& chain, const SamplerOptions& o, const Lookup& l
     return p;
 }
 
-// N is ceil(ratio): a ratio within float rounding of a whole number may give N or N+1 on the GPU.
+// N is ceil(ratio - 1/64): a ratio within float rounding of k + 1/64 may give N or N+1 on the GPU.
 bool knife_edge_count(const Layout& p, int max_probes)
 {
     if (!std::isfinite(p.ratio))
         return false;
     for (int k = 1; k < max_probes; ++k)
-        if (std::abs(p.ratio - k) <= 1e-5 * k)
+        if (std::abs(p.ratio - (k + 1.0 / 64.0)) <= 1e-5 * k)
             return true;
     return false;
 }
@@ -448,6 +448,15 @@ void reference_checks()
                 sheared += reference_trilinear_at(small, lambda, u + s * 8 / 16, v, wrap) / 3.0;
             CHECK_NEAR(reference_sample(small, aniso(16, AnisoShape::gpu, wrap), lookup_texels(u, v, 16, 8, 0, 3, 2)),
                        sheared, 1e-15);
+            // Nearly isotropic (ratio 1 + 1/100, below the 1/64 slack): one probe, i.e. trilinear at log2(4.04).
+            CHECK_NEAR(reference_sample(small, aniso(16, AnisoShape::gpu, wrap), lookup_texels(u, v, 16, 4.04, 0, 0, 4)),
+                       reference_trilinear_at(small, std::log2(4.04), u, v, wrap), 1e-15);
+            // Ratio 1 + 1/32, above it: two probes at +-1/4 of the x column.
+            glm::dvec4 two(0.0);
+            for (double s : {-0.25, 0.25})
+                two += reference_trilinear_at(small, std::log2(4.125 / 2), u + s * 4.125 / 16, v, wrap) / 2.0;
+            CHECK_NEAR(reference_sample(small, aniso(16, AnisoShape::gpu, wrap), lookup_texels(u, v, 16, 4.125, 0, 0, 4)),
+                       two, 1e-15);
         }
         return std::string();
     });

@@ -6,7 +6,7 @@
 //          shape TF_ANISO_GPU or TF_ANISO_FELINE (any other value: TF_ANISO_GPU). J = [dUVdx dUVdy] in
 //          level-0 texels (DESIGN.md §3).
 //   TF_ANISO_GPU (the Vulkan / EXT_texture_filter_anisotropic model): Px = |J e_x|, Py = |J e_y|,
-//          N = min(ceil(Pmax/Pmin), N_max), λ = log2(Pmax/N) + lodBias, then lodMin/lodMax and the levels
+//          N = min(ceil(Pmax/Pmin − 1/64), N_max) (the 1/64 slack: see tf_aniso_count), λ = log2(Pmax/N) + lodBias, then lodMin/lodMax and the levels
 //          clamp it as in tf_lod. The major column A (dUVdx if Px >= Py, else dUVdy) is cut into N equal
 //          pieces, one probe at the centre of each: uv + ((k + ½)/N − ½)·A, k = 0..N−1, weights 1/N.
 //          N = 1 is tf_trilinear, bit for bit.
@@ -14,7 +14,7 @@
 //          J·(disk of radius ½), whose full axes are the singular values σ1 >= σ2 of J = U diag(σ1, σ2) Vᵀ
 //          (a closed-form 2x2 SVD: no atan, no iteration). The probes lie on the true major axis
 //          A = σ1·u1 (u1 = U e_x) at the same places as above, uv + t_k·A, t_k = (k + ½)/N − ½, with
-//          N = min(ceil(σ1/σ2), N_max) and λ = log2(max(σ2, σ1/N)) + lodBias: the minor axis's LOD, coarser
+//          N = min(ceil(σ1/σ2 − 1/64), N_max) and λ = log2(max(σ2, σ1/N)) + lodBias: the minor axis's LOD, coarser
 //          only where N_max runs out. Weights: a Gaussian along the axis, w_k ∝ exp(−2 x_k²) with
 //          x_k = 2 t_k in (−1, 1) the place in half major axes (α = 2, tf_ewa's default), i.e.
 //          σ = σ1/4 texels: a quarter pixel along the major axis, about what each probe's own trilinear
@@ -51,8 +51,16 @@ struct tf_AnisoFootprint {
     float lod;   // biased and clamped like tf_lod
 };
 
-// ceil(ratio) capped at maxN; ratio >= 1, +Inf or NaN (0/0, Inf/Inf) gives maxN.
-int tf_aniso_count(float ratio, int maxN) { return ratio < float(maxN) ? int(ceil(ratio)) : maxN; }
+// ceil(ratio − slack) capped at maxN; +Inf or NaN (0/0, Inf/Inf) gives maxN. The slack keeps isotropic
+// footprints (screen-facing surfaces: ratio 1 up to float noise in the quad derivatives) at one probe
+// instead of flipping between 1 and 2 from pixel to pixel; a ratio of 1 + 1/64 needs no second probe.
+#ifndef TF_ANISO_RATIO_SLACK
+#define TF_ANISO_RATIO_SLACK (1.0 / 64.0)
+#endif
+int tf_aniso_count(float ratio, int maxN)
+{
+    return ratio < float(maxN) ? max(1, int(ceil(ratio - TF_ANISO_RATIO_SLACK))) : maxN;
+}
 
 tf_AnisoFootprint tf_aniso_footprint(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
 {
