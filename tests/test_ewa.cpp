@@ -1,0 +1,642 @@
+// EWA (shaders/texfilter/ewa.glsl, host/reference_ewa.cpp): the CPU reference and the GPU (lavapipe
+// by default), both tap forms. One line per check with the measured number and its bound.
+//
+// usage: test_ewa PATH/TO/texfilter
+// The GPU runs in this process through the harness library (tf::gpu_sample: any texture, per-lookup
+// fetch counts) and, for the non-finite and huge footprints, through `texfilter sample --validate`
+// (the command must return: the shader's loops are capped). TEXFILTER_VALIDATE=1 turns the
+// validation layers on in-process too; any message fails the test.
+#include "filter.h"
+#include "gpu_backend.h"
+#include "image.h"
+#include "mip.h"
+#include "procedural.h"
+#include "reference.h"
+#include "vk_context.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <unistd.h>
+
+using namespace tf;
+
+namespace {
+
+// TF_EWA_MAX_TEXELS's default: at most K rows of K texels per level.
+constexpr int kMaxTexels = 67;
+
+int g_failures = 0;
+std::string g_texfilter;
+std::filesystem::path g_work;
+
+// One line per check: the measured value against its bound (an upper bound, or a lower one).
+void check_bound(const char* file, int line, const std::string& what, double measured, double bound, bool upper) {
+    const bool ok = upper ? measured <= bound : measured >= bound; // NaN fails
+    std::printf("%-4s %-68s %.3g (%s %.3g)\n", ok ? "ok" : "FAIL", what.c_str(), measured, upper ? "bound" : "at least",
+                bound);
+    if (!ok) {
+        ++g_failures;
+        std::fprintf(stderr, "%s:%d: CHECK failed: %s: %.17g %s %.17g\n", file, line, what.c_str(), measured,
+                     upper ? ">" : "<", bound);
+    }
+}
+void check_true(const char* file, int line, const std::string& what, bool ok, const std::string& detail) {
+    std::printf("%-4s %-68s %s\n", ok ? "ok" : "FAIL", what.c_str(), detail.c_str());
+    if (!ok) {
+        ++g_failures;
+        std::fprintf(stderr, "%s:%d: CHECK failed: %s (%s)\n", file, line, what.c_str(), detail.c_str());
+    }
+}
+#define CHECK_LE(what, measured, bound) check_bound(__FILE__, __LINE__, what, measured, bound, true)
+#define CHECK_GE(what, measured, bound) check_bound(__FILE__, __LINE__, what, measured, bound, false)
+#define CHECK_TRUE(what, ok, detail) check_true(__FILE__, __LINE__, what, ok, detail)
+
+double max_abs(const glm::dvec4& d) { return std::max(std::max(std::abs(d.r), std::abs(d.g)), std::max(std::abs(d.b), std::abs(d.a))); }
+bool finite(const glm::dvec4& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b) && std::isfinite(c.a); }
+
+// ---------------------------------------------------------------- lookups
+
+// The GPU reads lookups as float: the reference must see the same numbers.
+Lookup as_float(const Lookup& l) {
+    return {float(l.u), float(l.v), float(l.dudx), float(l.dvdx), float(l.dudy), float(l.dvdy)};
+}
+
+// Footprints from 1/16 texel to 512 texels, axis ratios 1..64 (past max_aniso 16), any angle, uv in [-1, 2].
+std::vector<Lookup> random_lookups(int count, unsigned seed, int size = 256) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> uv(-1.0, 2.0), angle(0.0, 2 * std::numbers::pi), octaves(-4.0, 9.0),
+        stretch(0.0, 6.0);
+    std::vector<Lookup> lookups;
+    for (int i = 0; i < count; ++i) {
+        const double major = std::exp2(octaves(rng)) / size, a = angle(rng), ratio = std::exp2(stretch(rng));
+        const double minor = major / ratio;
+        lookups.push_back(as_float({uv(rng), uv(rng), major * std::cos(a), major * std::sin(a), -minor * std::sin(a),
+                                    minor * std::cos(a)}));
+    }
+    return lookups;
+}
+
+// Isotropic footprints (a rotated square pixel) of 2^lo .. 2^hi texels.
+std::vector<Lookup> isotropic_lookups(int count, unsigned seed, double lo, double hi, int size = 256) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> uv(0.0, 1.0), angle(0.0, 2 * std::numbers::pi), octaves(lo, hi);
+    std::vector<Lookup> lookups;
+    for (int i = 0; i < count; ++i) {
+        const double r = std::exp2(octaves(rng)) / size, a = angle(rng);
+        lookups.push_back(as_float({uv(rng), uv(rng), r * std::cos(a), r * std::sin(a), -r * std::sin(a), r * std::cos(a)}));
+    }
+    return lookups;
+}
+
+// ---------------------------------------------------------------- textures
+
+MipChain constant_chain(int w, int h, glm::vec4 value) { return build_mip_chain(make_image(w, h, value)); }
+
+// Sum of low-frequency waves, periodic over the texture (repeat wrap is seamless): smooth at every level.
+// Level-0 gradient magnitude <= sum A·2π|k|/N, Hessian (|t_xx|+|t_yy|) <= sum A·(2π|k|/N)²·2.
+struct Wave {
+    double amplitude, kx, ky, phase;
+};
+const std::vector<Wave> kSmoothWaves = {{0.2, 1, 0, 0.3}, {0.15, 1, 2, 1.1}, {0.1, -2, 1, 2.0}};
+
+MipChain wave_chain(int size, const std::vector<Wave>& waves) {
+    Image img = make_image(size, size);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            double t = 0.5;
+            for (const Wave& w : waves)
+                t += w.amplitude *
+                     std::sin(2 * std::numbers::pi * (w.kx * (x + 0.5) + w.ky * (y + 0.5)) / size + w.phase);
+            img.at(x, y) = glm::vec4(float(t), float(1 - t), float(0.5 * t), 1.0f);
+        }
+    return build_mip_chain(img);
+}
+
+// t(x, y) = f(x) + g(y) on every level (the box MIP filter is separable): every 2x2 block has
+// t00 - t10 - t01 + t11 = 0, so merged bilinear taps are exact whatever the weights.
+MipChain additive_chain(int w, int h) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<float> fx(size_t(w) * 3), gy(size_t(h) * 3);
+    for (float& v : fx) v = 0.5f * unit(rng);
+    for (float& v : gy) v = 0.5f * unit(rng);
+    Image img = make_image(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) img.at(x, y)[c] = fx[size_t(x) * 3 + c] + gy[size_t(y) * 3 + c];
+    return build_mip_chain(img);
+}
+
+// Largest |t(i+1,j) - t(i,j)| or |t(i,j+1) - t(i,j)| (wrapped) and |t00 - t10 - t01 + t11| over all levels.
+void texture_differences(const MipChain& chain, Wrap wrap, double& adjacent, double& mixed) {
+    adjacent = mixed = 0;
+    for (const Image& img : chain.levels)
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x) {
+                auto t = [&](int i, int j) {
+                    return glm::dvec4(img.at(wrap_texel(i, img.width, wrap), wrap_texel(j, img.height, wrap)));
+                };
+                adjacent = std::max({adjacent, max_abs(t(x + 1, y) - t(x, y)), max_abs(t(x, y + 1) - t(x, y)),
+                                     max_abs(t(x - 1, y) - t(x, y)), max_abs(t(x, y - 1) - t(x, y))});
+                mixed = std::max(mixed, max_abs(t(x, y) - t(x + 1, y) - t(x, y + 1) + t(x + 1, y + 1)));
+            }
+}
+
+// ---------------------------------------------------------------- GPU and reference runs
+
+struct Gpu {
+    VulkanContext context;
+    explicit Gpu(bool validate) : context(create_context({"", validate})) {}
+    ~Gpu() { destroy_context(context); }
+    std::vector<glm::dvec4> sample(const MipChain& chain, const std::vector<Lookup>& lookups,
+                                   const SamplerOptions& options, std::vector<LookupStats>* stats = nullptr) {
+        GpuTexture texture = upload_texture(context, chain, false);
+        std::vector<glm::vec4> out;
+        try {
+            out = gpu_sample(context, texture, lookups, options, stats);
+        } catch (...) {
+            destroy_texture(context, texture);
+            throw;
+        }
+        destroy_texture(context, texture);
+        return {out.begin(), out.end()};
+    }
+};
+Gpu* g_gpu = nullptr;
+
+std::vector<glm::dvec4> reference(const MipChain& chain, const std::vector<Lookup>& lookups,
+                                  const SamplerOptions& options) {
+    std::vector<glm::dvec4> out;
+    out.reserve(lookups.size());
+    for (const Lookup& l : lookups) out.push_back(reference_sample(chain, options, l));
+    return out;
+}
+
+SamplerOptions ewa_options(Wrap wrap, Taps taps, float alpha = 2.0f, float max_aniso = 16.0f) {
+    SamplerOptions o;
+    o.filter = Filter::ewa;
+    o.wrap = wrap;
+    o.taps = taps;
+    o.alpha = alpha;
+    o.max_aniso = max_aniso;
+    return o;
+}
+
+std::string describe(Wrap wrap, Taps taps) { return to_string(wrap) + ", " + to_string(taps); }
+
+double max_error(const std::vector<glm::dvec4>& a, const std::vector<glm::dvec4>& b) {
+    double e = 0;
+    for (size_t i = 0; i < a.size(); ++i) e = std::max(e, finite(a[i]) && finite(b[i]) ? max_abs(a[i] - b[i]) : INFINITY);
+    return e;
+}
+double rms_error(const std::vector<glm::dvec4>& a, const std::vector<glm::dvec4>& b) {
+    double s = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        const glm::dvec4 d = a[i] - b[i];
+        s += glm::dot(d, d) / 4;
+    }
+    return std::sqrt(s / double(a.size()));
+}
+
+// ---------------------------------------------------------------- checks
+
+constexpr double kUlp = 1.0 / 16777216.0; // 2^-24: float's unit roundoff
+
+// Weights are normalised: a constant texture gives that constant for every footprint, wrap mode and
+// tap form (a missing or wrong division by the weight sum scales it). NPOT, non-square: 61x47.
+// Reference: exact to double rounding. GPU: sum(w·c) and sum(w) over n texels (or taps) each round
+// by at most (n-1) ulp relative, the division and the level blend by a few more, so the result is
+// within (2n + 4)·2^-24·c of c.
+void check_constant() {
+    const glm::vec4 value(0.25f, 0.5f, 0.75f, 1.0f);
+    const MipChain chain = constant_chain(61, 47, value);
+    std::vector<Lookup> lookups = random_lookups(1024, 11, 61);
+    for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror})
+        for (Taps taps : {Taps::manual, Taps::hardware}) {
+            const SamplerOptions o = ewa_options(wrap, taps);
+            const std::vector<glm::dvec4> expected(lookups.size(), glm::dvec4(value));
+            CHECK_LE("constant 61x47 => constant, reference (" + describe(wrap, taps) + ")",
+                     max_error(reference(chain, lookups, o), expected), 1e-14);
+            std::vector<LookupStats> stats;
+            const auto gpu = g_gpu->sample(chain, lookups, o, &stats);
+            double worst = 0, worst_ratio = 0;
+            for (size_t i = 0; i < gpu.size(); ++i) {
+                const double n = stats[i].texel_fetches + stats[i].hardware_lookups;
+                const double err = finite(gpu[i]) ? max_abs(gpu[i] - glm::dvec4(value)) : INFINITY;
+                worst = std::max(worst, err);
+                worst_ratio = std::max(worst_ratio, err / ((2 * n + 4) * kUlp * 1.0));
+            }
+            std::printf("     constant GPU (%s): max error %.3g\n", describe(wrap, taps).c_str(), worst);
+            CHECK_LE("constant 61x47 => constant, GPU, error / ((2n+4) ulp) (" + describe(wrap, taps) + ")",
+                     worst_ratio, 1.0);
+        }
+}
+
+// Per-level normalisation and the level blend: on mipcolors every level is one flat colour, so EWA must
+// return mix(colour[lo], colour[lo+1], frac(lambda)) — the GPU must agree with the reference's lambda.
+// Adjacent colours differ by up to 1, so an error e in lambda shows as e: lambda ~ log2(texels) < 16 is
+// float, a few ulp of 16 (1.9e-6 each) apart from the double one.
+void check_mipcolors() {
+    const MipChain chain = make_procedural("mipcolors", 256);
+    const std::vector<Lookup> lookups = random_lookups(2048, 12);
+    for (Taps taps : {Taps::manual, Taps::hardware}) {
+        const SamplerOptions o = ewa_options(Wrap::repeat, taps);
+        CHECK_LE("mipcolors: GPU vs reference, level blend (" + to_string(taps) + ")",
+                 max_error(g_gpu->sample(chain, lookups, o), reference(chain, lookups, o)), 4 * 1.9e-6);
+    }
+}
+
+// Isotropic footprints on a smooth texture: EWA ≈ trilinear. Both read the same two levels with the
+// same blend weight (an isotropic footprint gets trilinear's lambda) and symmetric kernels, so per
+// level they differ by (1) the centroid of EWA's discrete, truncated weights, at most ½ texel off the
+// centre, times the texture's gradient (bilinear is exact on linear functions), and (2) half the
+// difference of the kernels' per-axis variances times |t_xx| + |t_yy|: EWA's is <= 0.1717·(σ² + 1) <=
+// 0.86 texel² on the finer level (σ < 2 texels there; 0.1717 is the truncated Gaussian's at alpha 2),
+// bilinear's is in [0, ¼]. Gradient and Hessian on level l are the level-0 wave bounds times 2^l, 4^l;
+// the bound of a lookup uses the coarser level it reads.
+void check_isotropic_vs_trilinear() {
+    const int size = 256;
+    const MipChain chain = wave_chain(size, kSmoothWaves);
+    const double lo = -3.0, hi = 2.0;
+    const std::vector<Lookup> lookups = isotropic_lookups(2048, 13, lo, hi);
+    double gradient = 0, hessian = 0;
+    for (const Wave& w : kSmoothWaves) {
+        const double k = 2 * std::numbers::pi * std::hypot(w.kx, w.ky) / size;
+        gradient += w.amplitude * k;
+        hessian += 2 * w.amplitude * k * k;
+    }
+    SamplerOptions tri;
+    tri.filter = Filter::trilinear;
+    tri.wrap = Wrap::repeat;
+    const SamplerOptions ewa = ewa_options(Wrap::repeat, Taps::manual);
+    const auto ref_tri = reference(chain, lookups, tri), ref_ewa = reference(chain, lookups, ewa);
+    const auto gpu_tri = g_gpu->sample(chain, lookups, tri), gpu_ewa = g_gpu->sample(chain, lookups, ewa);
+    for (bool gpu : {false, true}) {
+        const auto& e = gpu ? gpu_ewa : ref_ewa;
+        const auto& t = gpu ? gpu_tri : ref_tri;
+        double worst_ratio = 0, sum2 = 0, bound2 = 0;
+        for (size_t i = 0; i < lookups.size(); ++i) {
+            const double lambda = std::max(0.0, reference_lod(chain, lookups[i], tri));
+            const double scale = std::exp2(std::ceil(lambda)); // the coarser level read
+            const double bound = 0.5 * gradient * scale + 0.5 * 0.86 * hessian * scale * scale + 1e-6;
+            const double err = max_abs(e[i] - t[i]);
+            worst_ratio = std::max(worst_ratio, err / bound);
+            sum2 += err * err;
+            bound2 += bound * bound;
+        }
+        const std::string who = gpu ? "GPU" : "reference";
+        CHECK_LE("isotropic smooth texture: RMS |ewa - trilinear|, " + who, std::sqrt(sum2 / lookups.size()),
+                 std::sqrt(bound2 / lookups.size()));
+        CHECK_LE("isotropic smooth texture: worst |ewa - trilinear| / its bound, " + who, worst_ratio, 1.0);
+    }
+}
+
+// A Gaussian that is too wide (small alpha) blurs, measured: standard deviation of lookups over the
+// zoneplate's band of 0.2..0.45 cycles/texel, one lookup per texel (footprint 1 texel: M = 2·I). The
+// per-axis variances are 0.1717·2 (alpha 2) and 0.2396·2 texel² (alpha 0.25, nearly a flat disc); a
+// Gaussian of those attenuates a wave of f cycles/texel by exp(-2π²·var·f²), a ratio of 1.11 at
+// f = 0.2 to 1.72 at 0.45. Asserted: at least 1.3 over the band.
+void check_alpha_blurs() {
+    const int size = 256;
+    const MipChain chain = make_procedural("zoneplate", size);
+    std::vector<Lookup> lookups;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const double r = std::hypot(x + 0.5 - size / 2.0, y + 0.5 - size / 2.0);
+            if (r >= 0.2 * size && r <= 0.45 * size)
+                lookups.push_back(as_float({(x + 0.5) / size, (y + 0.5) / size, 1.0 / size, 0, 0, 1.0 / size}));
+        }
+    auto stddev = [](const std::vector<glm::dvec4>& c) {
+        double s = 0, s2 = 0;
+        for (const auto& v : c) s += v.r, s2 += v.r * v.r;
+        const double n = double(c.size());
+        return std::sqrt(std::max(0.0, s2 / n - (s / n) * (s / n)));
+    };
+    for (bool gpu : {false, true}) {
+        const SamplerOptions sharp_o = ewa_options(Wrap::repeat, Taps::manual, 2.0f);
+        const SamplerOptions wide_o = ewa_options(Wrap::repeat, Taps::manual, 0.25f);
+        const auto sharp = gpu ? g_gpu->sample(chain, lookups, sharp_o) : reference(chain, lookups, sharp_o);
+        const auto wide = gpu ? g_gpu->sample(chain, lookups, wide_o) : reference(chain, lookups, wide_o);
+        std::printf("     zoneplate std dev over the band: alpha 2 %.4f, alpha 0.25 %.4f\n", stddev(sharp), stddev(wide));
+        CHECK_GE(std::string("alpha 0.25 blurs: contrast ratio alpha 2 / alpha 0.25, ") + (gpu ? "GPU" : "reference"),
+                 stddev(sharp) / stddev(wide), 1.3);
+    }
+}
+
+// Reference value with the footprint scaled by `scale` (both gradients).
+glm::dvec4 reference_scaled(const MipChain& chain, const SamplerOptions& o, Lookup l, double scale) {
+    l.dudx *= scale, l.dvdx *= scale, l.dudy *= scale, l.dvdy *= scale;
+    return reference_sample(chain, o, l);
+}
+
+// GPU (float) vs CPU reference (double) on random footprints, per lookup:
+// (1) texels on the ellipse's edge: the truncated Gaussian steps by exp(-alpha) there, and a float r²
+//     within ~1e-6 of 1 can land on the other side. The reference evaluated with the footprint 1e-5
+//     larger and smaller (r² moves by 2e-5; lambda by 1.4e-5) brackets that: the spread is allowed.
+// (2) float: each weight exp(-alpha r²) is good to a few ulp (r², exp), each of the n sums adds one,
+//     values are in [0, 1]: (8 + 2n) ulp. Measured on lavapipe: below (8 + n) ulp.
+// Hardware taps add the sampler's own rounding: the tap is a float uv, so its texel position (< 2·size
+//     + K = 580 texels here) is off by up to 2 float spacings of 512..1024 (2·2^-14 texel), and the
+//     bilinear weights are rounded to subTexelPrecisionBits (Vulkan allows 8: 2^-8·(2·across + down)
+//     per tap, as in test_hw_vs_manual), across/down = the largest adjacent-texel difference on any
+//     level. The result is a weighted mean of taps, so its error is at most the worst tap's.
+void check_gpu_vs_reference(const std::string& texture, SamplerOptions o, const std::string& label, int bits) {
+    const MipChain chain = make_procedural(texture, 256);
+    const std::vector<Lookup> lookups = random_lookups(2048, 21);
+    std::vector<LookupStats> stats;
+    const auto gpu = g_gpu->sample(chain, lookups, o, &stats);
+    const auto ref = reference(chain, lookups, o);
+    double adjacent, mixed;
+    texture_differences(chain, o.wrap, adjacent, mixed);
+    const bool hw = o.taps == Taps::hardware;
+    const double sampler = hw ? (std::exp2(-bits) * 3 + 2 * std::exp2(-14)) * adjacent : 0.0;
+    double worst = 0, worst_ratio = 0;
+    int edges = 0;
+    for (size_t i = 0; i < lookups.size(); ++i) {
+        const double edge = std::max(max_abs(reference_scaled(chain, o, lookups[i], 1 + 1e-5) - ref[i]),
+                                     max_abs(reference_scaled(chain, o, lookups[i], 1 - 1e-5) - ref[i]));
+        const double n = stats[i].texel_fetches + stats[i].hardware_lookups;
+        const double err = finite(gpu[i]) ? max_abs(gpu[i] - ref[i]) : INFINITY;
+        edges += edge > 1e-5;
+        worst = std::max(worst, err);
+        worst_ratio = std::max(worst_ratio, (err - edge) / ((8 + 2 * n) * kUlp + sampler));
+    }
+    std::printf("     %s %s: max |GPU - reference| %.3g, %d lookups with a texel on the edge\n", texture.c_str(),
+                label.c_str(), worst, edges);
+    CHECK_LE("GPU vs reference, error / tolerance: " + texture + ", " + to_string(o.wrap) + ", " + label, worst_ratio,
+             1.0);
+}
+
+// Merged hardware taps vs per-texel weights (both in the reference, so exact arithmetic): a block's
+// error is d·(t00 - t10 - t01 + t11) with d = (w10·w01 - w00·w11)/W, |d| <= W/4, so the normalised
+// result is off by at most ¼·max|t00 - t10 - t01 + t11| — and by nothing on a texture t = f(x) + g(y),
+// whose mixed differences vanish on every level.
+void check_merge(const std::string& name, const MipChain& chain, Wrap wrap, bool additive, int bits) {
+    const std::vector<Lookup> lookups = random_lookups(1024, 31, chain.levels[0].width);
+    const auto manual = reference(chain, lookups, ewa_options(wrap, Taps::manual));
+    const auto hw = reference(chain, lookups, ewa_options(wrap, Taps::hardware));
+    double adjacent, mixed;
+    texture_differences(chain, wrap, adjacent, mixed);
+    if (additive) {
+        // Exact in real numbers; the float texels make the mixed differences ~1e-7 instead of 0.
+        CHECK_LE("merged taps exact on f(x)+g(y), reference: max |hw - manual| (" + name + ", " + to_string(wrap) + ")",
+                 max_error(hw, manual), 0.25 * mixed + 1e-12);
+    } else {
+        std::printf("     merge approximation on %s (%s): RMS %.3g, max %.3g, max mixed difference %.3g\n",
+                    name.c_str(), to_string(wrap).c_str(), rms_error(hw, manual), max_error(hw, manual), mixed);
+        CHECK_LE("merged taps, reference: max |hw - manual| (" + name + ") <= max|mixed diff|/4", max_error(hw, manual),
+                 0.25 * mixed);
+        // On the GPU both approximations at once: the merge and the sampler's rounding.
+        const auto gpu_manual = g_gpu->sample(chain, lookups, ewa_options(wrap, Taps::manual));
+        const auto gpu_hw = g_gpu->sample(chain, lookups, ewa_options(wrap, Taps::hardware));
+        std::printf("     GPU hardware vs manual taps on %s: RMS %.3g, max %.3g\n", name.c_str(),
+                    rms_error(gpu_hw, gpu_manual), max_error(gpu_hw, gpu_manual));
+        CHECK_LE("merged taps, GPU: max |hw - manual| (" + name + ") <= mixed/4 + sampler rounding",
+                 max_error(gpu_hw, gpu_manual), 0.25 * mixed + (std::exp2(-bits) * 3 + 2 * std::exp2(-14)) * adjacent);
+    }
+}
+
+// On the GPU, hardware taps vs manual: on f(x)+g(y) only the sampler's rounding is left.
+void check_gpu_hw_vs_manual_additive(int bits) {
+    const MipChain chain = additive_chain(96, 80);
+    const std::vector<Lookup> lookups = random_lookups(2048, 32, 96);
+    for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror}) {
+        const auto manual = g_gpu->sample(chain, lookups, ewa_options(wrap, Taps::manual));
+        const auto hw = g_gpu->sample(chain, lookups, ewa_options(wrap, Taps::hardware));
+        double adjacent, mixed;
+        texture_differences(chain, wrap, adjacent, mixed);
+        const double bound = (std::exp2(-bits) * 3 + 2 * std::exp2(-14)) * adjacent + 1e-5;
+        CHECK_LE("merged taps on f(x)+g(y) 96x80, GPU: max |hw - manual| (" + to_string(wrap) + ")",
+                 max_error(hw, manual), bound);
+    }
+}
+
+// Texel fetches and hardware lookups per lookup (the shader's TF_COUNT_* hooks): manual never more
+// than K² per level; hardware about a quarter of manual's fetches, as lookups.
+void check_counts() {
+    const MipChain chain = make_procedural("noise", 256);
+    struct Case {
+        const char* name;
+        std::vector<Lookup> lookups;
+    };
+    std::vector<Case> cases = {{"random footprints", random_lookups(2048, 41)},
+                               {"isotropic 1..64 texels", isotropic_lookups(1024, 42, 0.0, 6.0)}};
+    // Anisotropic 16:1 with a minor axis of 1..4 texels: the ellipses EWA is for.
+    std::vector<Lookup> aniso;
+    std::mt19937 rng(43);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int i = 0; i < 1024; ++i) {
+        const double minor = std::exp2(2 * unit(rng)) / 256, major = 16 * minor, a = 2 * std::numbers::pi * unit(rng);
+        aniso.push_back(as_float({unit(rng), unit(rng), major * std::cos(a), major * std::sin(a), -minor * std::sin(a),
+                                  minor * std::cos(a)}));
+    }
+    cases.push_back({"anisotropic 16:1", aniso});
+    for (const Case& c : cases) {
+        std::vector<LookupStats> manual, hw;
+        g_gpu->sample(chain, c.lookups, ewa_options(Wrap::repeat, Taps::manual), &manual);
+        g_gpu->sample(chain, c.lookups, ewa_options(Wrap::repeat, Taps::hardware), &hw);
+        double fetches = 0, lookups = 0;
+        uint32_t most = 0, most_hw = 0;
+        for (size_t i = 0; i < manual.size(); ++i) {
+            fetches += manual[i].texel_fetches;
+            lookups += hw[i].hardware_lookups;
+            most = std::max(most, manual[i].texel_fetches + manual[i].hardware_lookups);
+            most_hw = std::max(most_hw, hw[i].hardware_lookups + hw[i].texel_fetches);
+        }
+        fetches /= double(manual.size()), lookups /= double(hw.size());
+        std::printf("     %s: manual %.1f texel fetches a lookup (max %u), hardware %.1f lookups (max %u)\n", c.name,
+                    fetches, most, lookups, most_hw);
+        CHECK_LE(std::string("fetches: most manual fetches in one lookup <= 2K² (") + c.name + ")", most,
+                 2.0 * kMaxTexels * kMaxTexels);
+        CHECK_LE(std::string("fetches: hardware lookups / manual fetches (") + c.name + ")", lookups / fetches,
+                 std::string(c.name).starts_with("isotropic") ? 0.6 : 0.5);
+    }
+}
+
+// ---------------------------------------------------------------- non-finite and huge footprints
+
+std::vector<glm::dvec4> read_colors(const std::string& path, std::vector<LookupStats>* stats) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    std::vector<glm::dvec4> colors;
+    while (std::getline(in, line)) {
+        glm::dvec4 c;
+        char* p = line.data();
+        for (int k = 0; k < 4; ++k) {
+            c[k] = std::strtod(p, &p);
+            if (*p == ',') ++p;
+        }
+        if (stats) {
+            LookupStats s;
+            s.texel_fetches = uint32_t(std::strtoul(p, &p, 10));
+            if (*p == ',') ++p;
+            s.hardware_lookups = uint32_t(std::strtoul(p, &p, 10));
+            stats->push_back(s);
+        }
+        colors.push_back(c);
+    }
+    return colors;
+}
+
+// Runs `texfilter sample --validate` under a time limit: a shader that hangs fails the test instead of
+// blocking it. Returns false if the command failed.
+bool run_cli(const std::string& args, const std::string& out) {
+    const std::string command = "timeout 120 '" + g_texfilter + "' sample --validate " + args + " -o '" + out + "' > /dev/null";
+    const int rc = std::system(command.c_str());
+    if (rc != 0) std::fprintf(stderr, "command failed (%d): %s\n", rc, command.c_str());
+    return rc == 0;
+}
+
+// Through the CLI (flags --taps, --alpha, --max-aniso, --lod-max end to end): NaN, ±Inf, 0, 1e30,
+// -1e30, 1e-38, one gradient huge and the other zero, huge uv, NaN uv. Every command returns; every
+// result is finite. Documented results: NaN/±Inf gradients -> the last level with M = I, which for a
+// square power-of-two texture is its 1x1 mean; 1e30 -> the same level; 0 -> level 0, M = I (as the
+// reference); NaN uv -> 0. With --lod-max 0 a 1e30 footprint stays on level 0, shrunk to the loop cap.
+void check_non_finite() {
+    const std::string texture = "checker";
+    const MipChain chain = make_procedural(texture, 256);
+    const glm::dvec4 mean(chain.levels.back().at(0, 0));
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = INFINITY;
+    struct Row {
+        const char* what;
+        Lookup l;
+        bool expect_mean, expect_zero;
+    };
+    const double t = 1.0 / 256;
+    const std::vector<Row> rows = {
+        {"NaN gradients", {0.3, 0.6, nan, nan, nan, nan}, true, false},
+        {"one NaN component", {0.3, 0.6, t, 0, 0, nan}, true, false},
+        {"+Inf gradients", {0.3, 0.6, inf, 0, 0, inf}, true, false},
+        {"-Inf gradients", {0.3, 0.6, -inf, -inf, -inf, -inf}, true, false},
+        {"Inf and NaN", {0.3, 0.6, inf, nan, -inf, 0}, true, false},
+        {"zero gradients", {0.3, 0.6, 0, 0, 0, 0}, false, false},
+        {"1e30 gradients", {0.3, 0.6, 1e30, 0, 0, 1e30}, true, false},
+        {"-1e30 gradients, slanted", {0.3, 0.6, -1e30, 1e30, 1e30, 1e30}, true, false},
+        {"1e30 and 0 (degenerate)", {0.3, 0.6, 1e30, 1e30, 0, 0}, true, false},
+        {"3e38 gradients (float max)", {0.3, 0.6, 3e38, -3e38, 3e38, 3e38}, true, false},
+        {"1e-38 gradients (denormal)", {0.3, 0.6, 1e-38, 0, 0, 1e-38}, false, false},
+        {"1 texel x 1e30 (extreme aniso)", {0.3, 0.6, t, 0, 0, 1e30}, false, false},
+        {"uv 1e30, gradients 1 texel", {1e30, -1e30, t, 0, 0, t}, false, false},
+        {"uv NaN", {nan, 0.5, t, 0, 0, t}, false, true},
+        {"uv Inf", {inf, 0.5, t, 0, 0, t}, false, true},
+    };
+    const std::string in = (g_work / "nonfinite.csv").string();
+    {
+        std::ofstream f(in);
+        f << "u,v,dudx,dvdx,dudy,dvdy\n";
+        f.precision(9);
+        for (const Row& r : rows)
+            f << r.l.u << "," << r.l.v << "," << r.l.dudx << "," << r.l.dvdx << "," << r.l.dudy << "," << r.l.dvdy << "\n";
+    }
+    struct Run {
+        std::string flags;
+        SamplerOptions options;
+    };
+    std::vector<Run> runs;
+    for (Taps taps : {Taps::manual, Taps::hardware}) {
+        SamplerOptions o = ewa_options(Wrap::repeat, taps, 0.5f, 64.0f);
+        runs.push_back({"--taps " + to_string(taps) + " --alpha 0.5 --max-aniso 64", o});
+        SamplerOptions c = ewa_options(Wrap::clamp, taps);
+        c.lod_max = 0.0f;
+        runs.push_back({"--taps " + to_string(taps) + " --wrap clamp --lod-max 0", c});
+    }
+    for (const Run& run : runs) {
+        const std::string args = "--texture " + texture + " --filter ewa " + run.flags + " --lookups '" + in + "'";
+        const std::string out_gpu = (g_work / "nonfinite-gpu.csv").string(), out_ref = (g_work / "nonfinite-ref.csv").string();
+        const bool ok_gpu = run_cli(args + " --stats", out_gpu), ok_ref = run_cli(args + " --backend reference", out_ref);
+        CHECK_TRUE("non-finite/huge: `sample --validate " + run.flags + "` returns", ok_gpu && ok_ref,
+                   ok_gpu && ok_ref ? "exit 0 (GPU and reference)" : "command failed");
+        if (!ok_gpu || !ok_ref) continue;
+        std::vector<LookupStats> stats;
+        const auto gpu = read_colors(out_gpu, &stats), ref = read_colors(out_ref, nullptr);
+        if (gpu.size() != rows.size() || ref.size() != rows.size() || stats.size() != rows.size()) {
+            CHECK_TRUE("non-finite/huge: one result per lookup", false, "wrong row count");
+            continue;
+        }
+        double worst_ref = 0, worst_doc = 0;
+        uint32_t most = 0;
+        bool all_finite = true;
+        for (size_t i = 0; i < rows.size(); ++i) {
+            all_finite = all_finite && finite(gpu[i]) && finite(ref[i]);
+            worst_ref = std::max(worst_ref, max_abs(gpu[i] - ref[i]));
+            const bool mean_expected = rows[i].expect_mean && run.options.lod_max > 0;
+            if (mean_expected) worst_doc = std::max({worst_doc, max_abs(gpu[i] - mean), max_abs(ref[i] - mean)});
+            if (rows[i].expect_zero) worst_doc = std::max({worst_doc, max_abs(gpu[i]), max_abs(ref[i])});
+            most = std::max(most, stats[i].texel_fetches + stats[i].hardware_lookups);
+            if (!(max_abs(gpu[i] - ref[i]) <= 1e-5))
+                std::printf("     %s: GPU (%g %g %g %g) reference (%g %g %g %g)\n", rows[i].what, gpu[i].r, gpu[i].g,
+                            gpu[i].b, gpu[i].a, ref[i].r, ref[i].g, ref[i].b, ref[i].a);
+        }
+        CHECK_TRUE("non-finite/huge: all results finite (" + run.flags + ")", all_finite, all_finite ? "yes" : "no");
+        // The special results are flat colours or one level's Gaussian on a checker: float-exact up to the
+        // 8-digit CSV (5e-9) and a hardware tap's coordinate rounding.
+        CHECK_LE("non-finite/huge: max |GPU - reference| (" + run.flags + ")", worst_ref, 1e-5);
+        CHECK_LE("non-finite/huge: max |result - documented value| (" + run.flags + ")", worst_doc, 1e-6);
+        CHECK_LE("non-finite/huge: most fetches + lookups in one lookup <= 2K² (" + run.flags + ")", most,
+                 2.0 * kMaxTexels * kMaxTexels);
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: test_ewa PATH/TO/texfilter\n");
+        return 2;
+    }
+    g_texfilter = argv[1];
+    g_work = std::filesystem::temp_directory_path() / ("texfilter-ewa-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(g_work);
+    const char* env = std::getenv("TEXFILTER_VALIDATE");
+    try {
+        Gpu gpu(env && std::string(env) == "1");
+        g_gpu = &gpu;
+        const int bits = int(gpu.context.info.sub_texel_precision_bits);
+        std::printf("     device: %s, subTexelPrecisionBits %d\n", gpu.context.info.name.c_str(), bits);
+        check_constant();
+        check_mipcolors();
+        check_isotropic_vs_trilinear();
+        check_alpha_blurs();
+        for (Taps taps : {Taps::manual, Taps::hardware}) {
+            const std::string name = to_string(taps);
+            check_gpu_vs_reference("noise", ewa_options(Wrap::repeat, taps), name, bits);
+            check_gpu_vs_reference("checker", ewa_options(Wrap::clamp, taps), name, bits);
+            check_gpu_vs_reference("zoneplate", ewa_options(Wrap::mirror, taps), name, bits);
+            check_gpu_vs_reference("noise", ewa_options(Wrap::repeat, taps, 8.0f), name + ", alpha 8", bits);
+            // Bias, LOD clamp (the loop cap shrinks footprints past level 3), eccentricity clamp 4.
+            SamplerOptions o = ewa_options(Wrap::repeat, taps, 0.5f, 4.0f);
+            o.lod_bias = -0.5f;
+            o.lod_max = 3.0f;
+            check_gpu_vs_reference("grid", o, name + ", alpha 0.5, max-aniso 4, bias -0.5, lod-max 3", bits);
+        }
+        check_merge("additive 96x80", additive_chain(96, 80), Wrap::repeat, true, bits);
+        check_merge("additive 96x80", additive_chain(96, 80), Wrap::mirror, true, bits);
+        check_merge("additive 96x80", additive_chain(96, 80), Wrap::clamp, true, bits);
+        check_merge("noise", make_procedural("noise", 256), Wrap::repeat, false, bits);
+        check_merge("checker", make_procedural("checker", 256), Wrap::clamp, false, bits);
+        check_merge("zoneplate", make_procedural("zoneplate", 256), Wrap::mirror, false, bits);
+        check_gpu_hw_vs_manual_additive(bits);
+        check_counts();
+        g_gpu = nullptr;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "FAIL: %s\n", e.what());
+        ++g_failures;
+    }
+    check_non_finite();
+    CHECK_LE("Vulkan validation messages (in-process)", double(validation_message_count()), 0.0);
+    std::filesystem::remove_all(g_work);
+    std::printf("%s\n", g_failures ? "FAILED" : "all passed");
+    return g_failures ? 1 : 0;
+}
