@@ -8,35 +8,32 @@
 // taps within the sampler's precision, and texel-fetch / hardware-lookup counts.
 //
 // usage: test_brilinear_aniso PATH/TO/texfilter
-#include "error.h"
 #include "image.h"
 #include "mip.h"
 #include "procedural.h"
 #include "reference.h"
+#include "support.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <random>
 #include <string>
 #include <vector>
 #include <glm/glm.hpp>
-#include <unistd.h>
 
 using namespace tf;
+using tf::test::max_channel_diff;
+using tf::test::SampleResult;
 
 namespace {
 
 // ---------------------------------------------------------------------------------------------------
-// Checks: CHECK-style asserts print file:line and the values; every named check prints one result line.
+// Named checks: each runs CHECKs (tests/support.h) and prints one result line.
 
-int g_failures = 0;     // failed CHECKs in the check running now
-int g_failed_checks = 0; // named checks that failed
-
+// The detail lines' numbers: 9 digits.
 std::string str(double x)
 {
     char buf[64];
@@ -44,53 +41,21 @@ std::string str(double x)
     return buf;
 }
 
-std::string str(const glm::dvec4& v) { return "(" + str(v.x) + ", " + str(v.y) + ", " + str(v.z) + ", " + str(v.w) + ")"; }
-
-void report(bool ok, const char* file, int line, const std::string& what)
-{
-    if (ok)
-        return;
-    ++g_failures;
-    if (g_failures <= 8) // the first few of a check are enough to see what went wrong
-        std::fprintf(stderr, "%s:%d: CHECK failed: %s\n", file, line, what.c_str());
-}
-
-double max_diff(const glm::dvec4& a, const glm::dvec4& b)
-{
-    glm::dvec4 d = glm::abs(a - b);
-    return std::max(std::max(d.x, d.y), std::max(d.z, d.w));
-}
-
-#define CHECK(expr, values) report(bool(expr), __FILE__, __LINE__, std::string(#expr) + "  " + (values))
-#define CHECK_EQ(a, b)                                                                                   \
-    do {                                                                                                 \
-        const auto va_ = (a);                                                                            \
-        const auto vb_ = (b);                                                                            \
-        report(va_ == vb_, __FILE__, __LINE__, #a " == " #b "  (" + str(va_) + " vs " + str(vb_) + ")"); \
-    } while (0)
-#define CHECK_NEAR(a, b, eps)                                                                            \
-    do {                                                                                                 \
-        const auto va_ = (a);                                                                            \
-        const auto vb_ = (b);                                                                            \
-        report(max_diff(glm::dvec4(va_), glm::dvec4(vb_)) <= (eps), __FILE__, __LINE__,                  \
-               #a " ~= " #b " within " #eps "  (" + str(va_) + " vs " + str(vb_) + ")");                 \
-    } while (0)
-
 // Runs one named check and prints its line: name, an optional detail the body fills in, PASS/FAIL.
 void run_check(const std::string& name, const std::function<std::string()>& body)
 {
-    g_failures = 0;
+    const int failures_before = test::failures();
+    test::limit_failure_lines(8); // the first few of a check are enough to see what went wrong
     std::string detail;
     try {
         detail = body();
     } catch (const std::exception& e) {
-        ++g_failures;
         detail = std::string("exception: ") + e.what();
+        test::fail(name + ": " + detail);
     }
-    std::printf("%-58s %s%s%s\n", name.c_str(), g_failures ? "FAIL" : "PASS", detail.empty() ? "" : "  ", detail.c_str());
+    const bool failed = test::failures() > failures_before;
+    std::printf("%-58s %s%s%s\n", name.c_str(), failed ? "FAIL" : "PASS", detail.empty() ? "" : "  ", detail.c_str());
     std::fflush(stdout);
-    if (g_failures)
-        ++g_failed_checks;
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -250,8 +215,8 @@ void texel_contrast(const Image& level, double u, double v, Wrap wrap, double& a
     for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i)
             t[j][i] = glm::dvec4(level.at(wrap_texel(i0 + i, level.width, wrap), wrap_texel(j0 + j, level.height, wrap)));
-    across = std::max(max_diff(t[0][0], t[0][1]), max_diff(t[1][0], t[1][1]));
-    down = std::max(max_diff(t[0][0], t[1][0]), max_diff(t[0][1], t[1][1]));
+    across = std::max(max_channel_diff(t[0][0], t[0][1]), max_channel_diff(t[1][0], t[1][1]));
+    down = std::max(max_channel_diff(t[0][0], t[1][0]), max_channel_diff(t[0][1], t[1][1]));
 }
 
 // How far a bilinear lookup moves when its weights move by `step` (a fraction of a texel): a step in
@@ -310,7 +275,7 @@ double float_bound(const MipChain& chain, Wrap wrap, const Lookup& l, const Layo
         }
         glm::dvec4 fine = reference_bilinear(chain.levels[size_t(lo)], u, v, wrap);
         glm::dvec4 coarse = reference_bilinear(chain.levels[size_t(hi)], u, v, wrap);
-        bound += p.weight[size_t(k)] * (probe + lod_gain * lod_error * max_diff(fine, coarse));
+        bound += p.weight[size_t(k)] * (probe + lod_gain * lod_error * max_channel_diff(fine, coarse));
     }
     return bound;
 }
@@ -335,7 +300,7 @@ double hardware_bound(const MipChain& chain, Wrap wrap, const Lookup& l, const L
             lods.push_back(d);
         double spread = 0, weights = 0;
         for (double d : lods)
-            spread = std::max(spread, max_diff(reference_trilinear_at(chain, d, u, v, wrap), centre));
+            spread = std::max(spread, max_channel_diff(reference_trilinear_at(chain, d, u, v, wrap), centre));
         for (int level = std::max(0, int(p.lod - kMipmapStep)); level <= std::min(top, int(p.lod + kMipmapStep) + 1); ++level)
             weights = std::max(weights, bilinear_bound(chain.levels[size_t(level)], u, v, wrap, kSubTexelStep));
         bound += p.weight[size_t(k)] * (spread + weights);
@@ -549,44 +514,10 @@ void reference_checks()
 std::string g_texfilter;
 std::filesystem::path g_work;
 
-struct GpuResult {
-    std::vector<glm::dvec4> colors;
-    std::vector<unsigned> fetches, hw_lookups;
-};
-
-GpuResult run_sample(const std::string& texture, const std::string& flags, const std::string& lookups)
+// `texfilter sample --validate --stats` of a lookups CSV on a procedural texture.
+SampleResult sample(const std::string& texture, const std::string& flags, const std::string& lookups)
 {
-    static int run = 0;
-    std::string out = (g_work / ("out" + std::to_string(run++) + ".csv")).string();
-    std::string command = "'" + g_texfilter + "' sample --validate --stats --texture " + texture + " " + flags +
-                          " --lookups '" + lookups + "' -o '" + out + "' > /dev/null";
-    if (std::system(command.c_str()) != 0)
-        throw Error("command failed: " + command);
-    std::ifstream in(out);
-    std::string line;
-    std::getline(in, line);
-    if (line != "r,g,b,a,fetches,hw_lookups")
-        throw Error("unexpected header '" + line + "' from " + command);
-    GpuResult r;
-    while (std::getline(in, line)) {
-        glm::dvec4 c;
-        unsigned f = 0, h = 0;
-        if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%u,%u", &c.r, &c.g, &c.b, &c.a, &f, &h) != 6)
-            throw Error("bad row '" + line + "' from " + command);
-        r.colors.push_back(c);
-        r.fetches.push_back(f);
-        r.hw_lookups.push_back(h);
-    }
-    return r;
-}
-
-void write_lookups(const std::string& path, const std::vector<Lookup>& lookups)
-{
-    std::ofstream out(path);
-    out << "u,v,dudx,dvdx,dudy,dvdy\n";
-    out.precision(9);
-    for (const Lookup& l : lookups)
-        out << l.u << "," << l.v << "," << l.dudx << "," << l.dvdx << "," << l.dudy << "," << l.dvdy << "\n";
+    return test::run_sample(g_texfilter, g_work, "--texture " + texture + " " + flags, lookups, true);
 }
 
 // Worst error over the lookups, as a ratio to each lookup's bound.
@@ -620,19 +551,19 @@ void gpu_checks()
     std::vector<Lookup> lookups = random_lookups(4096, 2026);
     for (const Lookup& l : degenerate_lookups())
         lookups.push_back(l);
-    for (Lookup& l : lookups) // the reference sees the float values the GPU sees
-        l = {float(l.u), float(l.v), float(l.dudx), float(l.dvdx), float(l.dudy), float(l.dvdy)};
+    lookups = test::as_float(lookups); // the reference sees the float values the GPU sees
     const std::string path = (g_work / "lookups.csv").string();
-    write_lookups(path, lookups);
+    test::write_lookups_csv(path, lookups);
     auto flags = [](const std::string& filter, Wrap wrap) { return "--filter " + filter + " --wrap " + to_string(wrap); };
 
     // Every lookup of a texfilter filter reads at most 16 probes x 8 texels.
-    auto check_caps = [&](const GpuResult& r) {
+    auto check_caps = [&](const SampleResult& r) {
         for (size_t i = 0; i < r.colors.size(); ++i) {
-            CHECK(r.fetches[i] <= 128 && r.hw_lookups[i] <= 16,
-                  "(lookup " + std::to_string(i) + ": " + std::to_string(r.fetches[i]) + " fetches, " +
-                      std::to_string(r.hw_lookups[i]) + " hw lookups)");
-            CHECK(std::isfinite(r.colors[i].x) && std::isfinite(r.colors[i].w), "(lookup " + std::to_string(i) + ")");
+            const LookupStats& s = r.stats[i];
+            CHECK(s.texel_fetches <= 128 && s.hardware_lookups <= 16,
+                  "lookup " + std::to_string(i) + ": " + std::to_string(s.texel_fetches) + " fetches, " +
+                      std::to_string(s.hardware_lookups) + " hw lookups");
+            CHECK(std::isfinite(r.colors[i].x) && std::isfinite(r.colors[i].w), "lookup " + std::to_string(i));
         }
     };
 
@@ -640,9 +571,9 @@ void gpu_checks()
     for (const Case& c : {Case{"noise", Wrap::repeat}, Case{"zoneplate", Wrap::mirror}}) {
         const MipChain chain = make_procedural(c.texture, 256);
         const SamplerOptions o = brilinear(0.25, c.wrap);
-        GpuResult gpu;
+        SampleResult gpu;
         run_check("gpu brilinear 0.25 vs reference (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
-            gpu = run_sample(c.texture, flags("brilinear", c.wrap) + " --band 0.25", path);
+            gpu = sample(c.texture, flags("brilinear", c.wrap) + " --band 0.25", path);
             Tally tally;
             for (size_t i = 0; i < lookups.size(); ++i) {
                 const Lookup& l = lookups[i];
@@ -651,9 +582,9 @@ void gpu_checks()
                 p.t = {0.0};
                 p.weight = {1.0};
                 double bound = float_bound(chain, c.wrap, l, p, false, 4.0); // the blend's slope is 1/B = 4 in the band
-                double error = max_diff(gpu.colors[i], reference_sample(chain, o, l));
+                double error = max_channel_diff(gpu.colors[i], reference_sample(chain, o, l));
                 tally.add(error, bound);
-                CHECK(error <= bound, "(lookup " + std::to_string(i) + ": error " + str(error) + " > " + str(bound) + ")");
+                CHECK(error <= bound, "lookup " + std::to_string(i) + ": error " + str(error) + " > " + str(bound));
             }
             check_caps(gpu);
             return tally.summary();
@@ -668,10 +599,11 @@ void gpu_checks()
                 }
                 unsigned expected = f > 0.375 && f < 0.625 ? 8 : 4;
                 (expected == 8 ? inside : outside)++;
-                CHECK(gpu.fetches[i] == expected, "(lookup " + std::to_string(i) + ": f " + str(f) + ", " +
-                                                      std::to_string(gpu.fetches[i]) + " fetches)");
+                const unsigned fetches = gpu.stats[i].texel_fetches;
+                CHECK(fetches == expected,
+                      "lookup " + std::to_string(i) + ": f " + str(f) + ", " + std::to_string(fetches) + " fetches");
             }
-            CHECK(inside > 100 && outside > 100, "(" + std::to_string(inside) + " inside)");
+            CHECK(inside > 100 && outside > 100, std::to_string(inside) + " inside");
             return std::to_string(outside) + " outside (4), " + std::to_string(inside) + " inside (8), " +
                    std::to_string(skipped) + " at the band's edge skipped";
         });
@@ -679,24 +611,24 @@ void gpu_checks()
     {
         const std::string t = "noise";
         run_check("gpu brilinear band 1 == trilinear (bit for bit)", [&] {
-            GpuResult band = run_sample(t, flags("brilinear", Wrap::repeat) + " --band 1", path);
-            GpuResult tri = run_sample(t, flags("trilinear", Wrap::repeat), path);
+            SampleResult band = sample(t, flags("brilinear", Wrap::repeat) + " --band 1", path);
+            SampleResult tri = sample(t, flags("trilinear", Wrap::repeat), path);
             double worst = 0;
             for (size_t i = 0; i < lookups.size(); ++i) {
-                worst = std::max(worst, max_diff(band.colors[i], tri.colors[i]));
+                worst = std::max(worst, max_channel_diff(band.colors[i], tri.colors[i]));
                 CHECK_NEAR(band.colors[i], tri.colors[i], 0.0);
-                CHECK_EQ(double(band.fetches[i]), double(tri.fetches[i]));
+                CHECK_EQ(double(band.stats[i].texel_fetches), double(tri.stats[i].texel_fetches));
             }
             return "max difference " + str(worst);
         });
         run_check("gpu brilinear band 0 == bilinear-mip (bit for bit)", [&] {
-            GpuResult band = run_sample(t, flags("brilinear", Wrap::clamp) + " --band 0", path);
-            GpuResult mip = run_sample(t, flags("bilinear-mip", Wrap::clamp), path);
+            SampleResult band = sample(t, flags("brilinear", Wrap::clamp) + " --band 0", path);
+            SampleResult mip = sample(t, flags("bilinear-mip", Wrap::clamp), path);
             double worst = 0;
             for (size_t i = 0; i < lookups.size(); ++i) {
-                worst = std::max(worst, max_diff(band.colors[i], mip.colors[i]));
+                worst = std::max(worst, max_channel_diff(band.colors[i], mip.colors[i]));
                 CHECK_NEAR(band.colors[i], mip.colors[i], 0.0);
-                CHECK_EQ(double(band.fetches[i]), 4.0);
+                CHECK_EQ(double(band.stats[i].texel_fetches), 4.0);
             }
             return "max difference " + str(worst);
         });
@@ -706,18 +638,18 @@ void gpu_checks()
     // 1.5 + 2^-23 (the next float) must pick level 2, as ceil(d + 1/2) - 1 does in exact arithmetic.
     run_check("gpu brilinear band 0 at the tie f = 1/2 and 1/2 + 1 ulp", [&] {
         const std::string tie = (g_work / "tie.csv").string();
-        write_lookups(tie, {{0.3, 0.6, 1.0 / 256, 0, 0, 1.0 / 256}});
+        test::write_lookups_csv(tie, {{0.3, 0.6, 1.0 / 256, 0, 0, 1.0 / 256}});
         const MipChain colors = make_procedural("mipcolors", 256);
         std::string note;
         for (const char* bias : {"1.5", "1.50000012"}) {
-            GpuResult band = run_sample("mipcolors", "--filter brilinear --band 0 --lod-bias " + std::string(bias), tie);
+            SampleResult band = sample("mipcolors", "--filter brilinear --band 0 --lod-bias " + std::string(bias), tie);
             SamplerOptions o = brilinear(0.0);
             o.lod_bias = std::strtof(bias, nullptr);
             glm::dvec4 expected = reference_sample(colors, o, {0.3, 0.6, 1.0 / 256, 0, 0, 1.0 / 256});
             CHECK_NEAR(band.colors[0], expected, 0.0);
             // tf_bilinear_mip (lod.glsl's tf_mip_level_nearest) rounds lambda + 1/2 in float: not checked here.
-            GpuResult mip = run_sample("mipcolors", "--filter bilinear-mip --lod-bias " + std::string(bias), tie);
-            if (max_diff(mip.colors[0], expected) > 0)
+            SampleResult mip = sample("mipcolors", "--filter bilinear-mip --lod-bias " + std::string(bias), tie);
+            if (max_channel_diff(mip.colors[0], expected) > 0)
                 note += std::string(note.empty() ? "note: bilinear-mip differs from the reference at bias " : ", ") + bias;
         }
         return note;
@@ -732,18 +664,18 @@ void gpu_checks()
         const std::vector<Lookup> ls = {{0.3, 0.6, 8 * t, 0, 0, 2 * t},  {0.3, 0.6, 8 * t, 0, 0, 3 * t},
                                         {0.3, 0.6, 64 * t, 0, 0, 0},     {0.3, 0.6, 0, 0, 0, 0},
                                         {0.3, 0.6, std::nan(""), 0, 0, 0}};
-        write_lookups(known, ls);
+        test::write_lookups_csv(known, ls);
         const MipChain colors = make_procedural("mipcolors", 256);
         const unsigned fetches[] = {16, 24, 64, 4, 4}, probes[] = {4, 3, 16, 1, 1};
         for (AnisoShape shape : {AnisoShape::gpu, AnisoShape::feline}) {
-            GpuResult manual = run_sample("mipcolors", "--filter aniso --probes 16 --aniso-shape " + to_string(shape), known);
-            GpuResult hardware = run_sample("mipcolors", "--filter aniso --probes 16 --taps hardware --aniso-shape " + to_string(shape), known);
+            SampleResult manual = sample("mipcolors", "--filter aniso --probes 16 --aniso-shape " + to_string(shape), known);
+            SampleResult hardware = sample("mipcolors", "--filter aniso --probes 16 --taps hardware --aniso-shape " + to_string(shape), known);
             for (size_t i = 0; i < ls.size(); ++i) {
                 glm::dvec4 expected = reference_sample(colors, aniso(16, shape), ls[i]);
                 CHECK_NEAR(manual.colors[i], expected, 1e-6);
                 CHECK_NEAR(hardware.colors[i], expected, 1e-6);
-                CHECK_EQ(double(manual.fetches[i]), double(fetches[i]));
-                CHECK_EQ(double(hardware.hw_lookups[i]), double(probes[i]));
+                CHECK_EQ(double(manual.stats[i].texel_fetches), double(fetches[i]));
+                CHECK_EQ(double(hardware.stats[i].hardware_lookups), double(probes[i]));
             }
             CHECK_NEAR(manual.colors[0], kLevel[1], 0.0);
             CHECK_NEAR(manual.colors[2], kLevel[2], 0.0);
@@ -761,7 +693,7 @@ void gpu_checks()
             const MipChain chain = make_procedural(c.texture, 256);
             const SamplerOptions o = aniso(16, shape, c.wrap);
             const std::string f = flags("aniso", c.wrap) + " --probes 16 --aniso-shape " + s;
-            GpuResult manual, hardware;
+            SampleResult manual, hardware;
             std::vector<Layout> layouts;
             std::vector<bool> edge;
             for (const Lookup& l : lookups) {
@@ -769,7 +701,7 @@ void gpu_checks()
                 edge.push_back(knife_edge_count(layouts.back(), 16));
             }
             run_check("gpu aniso " + s + " manual vs reference (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
-                manual = run_sample(c.texture, f + " --taps manual", path);
+                manual = sample(c.texture, f + " --taps manual", path);
                 Tally tally;
                 for (size_t i = 0; i < lookups.size(); ++i) {
                     if (edge[i]) {
@@ -777,10 +709,10 @@ void gpu_checks()
                         continue;
                     }
                     double bound = float_bound(chain, c.wrap, lookups[i], layouts[i], feline);
-                    double error = max_diff(manual.colors[i], reference_sample(chain, o, lookups[i]));
+                    double error = max_channel_diff(manual.colors[i], reference_sample(chain, o, lookups[i]));
                     tally.add(error, bound);
-                    CHECK(error <= bound, "(lookup " + std::to_string(i) + ": N " + std::to_string(layouts[i].count) +
-                                              ", ratio " + str(layouts[i].ratio) + ", error " + str(error) + " > " + str(bound) + ")");
+                    CHECK(error <= bound, "lookup " + std::to_string(i) + ": N " + std::to_string(layouts[i].count) +
+                                              ", ratio " + str(layouts[i].ratio) + ", error " + str(error) + " > " + str(bound));
                 }
                 check_caps(manual);
                 return tally.summary();
@@ -793,16 +725,17 @@ void gpu_checks()
                         continue;
                     const Layout& p = layouts[i];
                     unsigned expected = unsigned(p.count) * (p.lod == std::floor(p.lod) ? 4 : 8);
-                    CHECK(manual.fetches[i] == expected && manual.hw_lookups[i] == 0,
-                          "(lookup " + std::to_string(i) + ": N " + std::to_string(p.count) + ", lod " + str(p.lod) +
-                              ", " + std::to_string(manual.fetches[i]) + " fetches)");
-                    mean += manual.fetches[i];
+                    const LookupStats& st = manual.stats[i];
+                    CHECK(st.texel_fetches == expected && st.hardware_lookups == 0,
+                          "lookup " + std::to_string(i) + ": N " + std::to_string(p.count) + ", lod " + str(p.lod) +
+                              ", " + std::to_string(st.texel_fetches) + " fetches");
+                    mean += st.texel_fetches;
                     ++checked;
                 }
                 return "mean " + str(mean / checked) + " fetches over " + std::to_string(checked) + " lookups";
             });
             run_check("gpu aniso " + s + " hardware vs manual taps (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
-                hardware = run_sample(c.texture, f + " --taps hardware", path);
+                hardware = sample(c.texture, f + " --taps hardware", path);
                 Tally tally;
                 for (size_t i = 0; i < lookups.size(); ++i) {
                     if (edge[i]) { // the same shader code picks N on both sides, but the layout here may not
@@ -810,12 +743,13 @@ void gpu_checks()
                         continue;
                     }
                     double bound = hardware_bound(chain, c.wrap, lookups[i], layouts[i]);
-                    double error = max_diff(hardware.colors[i], manual.colors[i]);
+                    double error = max_channel_diff(hardware.colors[i], manual.colors[i]);
                     tally.add(error, bound);
-                    CHECK(error <= bound, "(lookup " + std::to_string(i) + ": error " + str(error) + " > " + str(bound) + ")");
-                    CHECK(hardware.fetches[i] == 0 && hardware.hw_lookups[i] == unsigned(layouts[i].count),
-                          "(lookup " + std::to_string(i) + ": " + std::to_string(hardware.hw_lookups[i]) + " hw lookups, N " +
-                              std::to_string(layouts[i].count) + ")");
+                    CHECK(error <= bound, "lookup " + std::to_string(i) + ": error " + str(error) + " > " + str(bound));
+                    const LookupStats& st = hardware.stats[i];
+                    CHECK(st.texel_fetches == 0 && st.hardware_lookups == unsigned(layouts[i].count),
+                          "lookup " + std::to_string(i) + ": " + std::to_string(st.hardware_lookups) + " hw lookups, N " +
+                              std::to_string(layouts[i].count));
                 }
                 check_caps(hardware);
                 return tally.summary();
@@ -823,13 +757,13 @@ void gpu_checks()
         }
     }
     run_check("gpu aniso gpu --probes 1 == trilinear (bit for bit)", [&] {
-        GpuResult one = run_sample("zoneplate", flags("aniso", Wrap::mirror) + " --probes 1", path);
-        GpuResult tri = run_sample("zoneplate", flags("trilinear", Wrap::mirror), path);
+        SampleResult one = sample("zoneplate", flags("aniso", Wrap::mirror) + " --probes 1", path);
+        SampleResult tri = sample("zoneplate", flags("trilinear", Wrap::mirror), path);
         double worst = 0;
         for (size_t i = 0; i < lookups.size(); ++i) {
-            worst = std::max(worst, max_diff(one.colors[i], tri.colors[i]));
+            worst = std::max(worst, max_channel_diff(one.colors[i], tri.colors[i]));
             CHECK_NEAR(one.colors[i], tri.colors[i], 0.0);
-            CHECK_EQ(double(one.fetches[i]), double(tri.fetches[i]));
+            CHECK_EQ(double(one.stats[i].texel_fetches), double(tri.stats[i].texel_fetches));
         }
         return "max difference " + str(worst);
     });
@@ -839,16 +773,9 @@ void gpu_checks()
 
 int main(int argc, char** argv)
 {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: test_brilinear_aniso PATH/TO/texfilter\n");
-        return 2;
-    }
-    g_texfilter = argv[1];
-    g_work = std::filesystem::temp_directory_path() / ("texfilter-brilinear-aniso-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(g_work);
+    g_texfilter = test::texfilter_path_from_args(argc, argv, "test_brilinear_aniso PATH/TO/texfilter");
+    g_work = test::make_work_dir("brilinear-aniso");
     reference_checks();
     gpu_checks();
-    std::filesystem::remove_all(g_work);
-    std::printf("%s\n", g_failed_checks ? "FAILED" : "all passed");
-    return g_failed_checks ? 1 : 0;
+    return test::finish();
 }

@@ -6,6 +6,7 @@
 #include "image.h"
 #include "image_io.h"
 #include "report.h"
+#include "support.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -22,94 +23,18 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 namespace fs = std::filesystem;
 
-static int g_checks = 0;
-static int g_failures = 0;
-
-#define CHECK(cond)                                                                       \
-    do {                                                                                  \
-        ++g_checks;                                                                       \
-        if (!(cond)) {                                                                    \
-            ++g_failures;                                                                 \
-            std::printf("%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);           \
-        }                                                                                 \
-    } while (0)
-
-#define CHECK_EQ(a, b)                                                                                  \
-    do {                                                                                                \
-        ++g_checks;                                                                                     \
-        const double va_ = double(a), vb_ = double(b);                                                  \
-        if (!(va_ == vb_)) {                                                                            \
-            ++g_failures;                                                                               \
-            std::printf("%s:%d: CHECK_EQ failed: %s == %s (%.17g vs %.17g)\n", __FILE__, __LINE__, #a, \
-                        #b, va_, vb_);                                                                  \
-        }                                                                                               \
-    } while (0)
-
-#define CHECK_NEAR(a, b, tol)                                                                            \
-    do {                                                                                                 \
-        ++g_checks;                                                                                      \
-        const double va_ = double(a), vb_ = double(b), vt_ = double(tol);                                \
-        if (!(std::fabs(va_ - vb_) <= vt_)) {                                                            \
-            ++g_failures;                                                                                \
-            std::printf("%s:%d: CHECK_NEAR failed: %s ~ %s (%.17g vs %.17g, diff %.3g > tol %.3g)\n",    \
-                        __FILE__, __LINE__, #a, #b, va_, vb_, std::fabs(va_ - vb_), vt_);                \
-        }                                                                                                \
-    } while (0)
-
-#define CHECK_STR_CONTAINS(text, part)                                                                  \
-    do {                                                                                                \
-        ++g_checks;                                                                                     \
-        const std::string t_ = (text), p_ = (part);                                                     \
-        if (t_.find(p_) == std::string::npos) {                                                         \
-            ++g_failures;                                                                               \
-            std::printf("%s:%d: CHECK failed: \"%s\" does not contain \"%s\"\n", __FILE__, __LINE__,    \
-                        t_.c_str(), p_.c_str());                                                        \
-        }                                                                                               \
-    } while (0)
-
-// The expression must throw tf::Error whose message contains `part`.
-#define CHECK_THROWS_WITH(expr, part)                                                                    \
-    do {                                                                                                 \
-        ++g_checks;                                                                                      \
-        const std::string p_ = (part);                                                                   \
-        try {                                                                                            \
-            (void)(expr);                                                                                \
-            ++g_failures;                                                                                \
-            std::printf("%s:%d: CHECK failed: %s did not throw\n", __FILE__, __LINE__, #expr);            \
-        } catch (const tf::Error& e_) {                                                                  \
-            if (std::string(e_.what()).find(p_) == std::string::npos) {                                  \
-                ++g_failures;                                                                            \
-                std::printf("%s:%d: CHECK failed: %s threw \"%s\", expected it to contain \"%s\"\n",     \
-                            __FILE__, __LINE__, #expr, e_.what(), p_.c_str());                           \
-            }                                                                                            \
-        } catch (const std::exception& e_) {                                                             \
-            ++g_failures;                                                                                \
-            std::printf("%s:%d: CHECK failed: %s threw a non-tf::Error: %s\n", __FILE__, __LINE__, #expr, \
-                        e_.what());                                                                      \
-        }                                                                                                \
-    } while (0)
+// The text contains `part`.
+#define CHECK_STR_CONTAINS(text, part) check_contains((text), (part), __FILE__, __LINE__)
 
 namespace {
 
-// A scratch directory unique to this process, removed at exit (also when a check fails).
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        std::random_device rd;
-        path = fs::temp_directory_path() /
-               ("texfilter-test-diff-" + std::to_string(getpid()) + "-" + std::to_string(rd()));
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-};
+void check_contains(const std::string& text, const std::string& part, const char* file, int line) {
+    tf::test::check(text.find(part) != std::string::npos, file, line, "\"" + text + "\" contains \"" + part + "\"");
+}
+
+std::string file_in(const fs::path& dir, const std::string& name) { return (dir / name).string(); }
 
 size_t entries_in(const fs::path& dir) {
     return size_t(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
@@ -271,11 +196,11 @@ void test_diff_image() {
 // ---------------------------------------------------------------------------------------------
 // image_io.h
 
-void test_png_round_trip(const TempDir& dir) {
+void test_png_round_trip(const fs::path& dir) {
     tf::Image img = noise_image(37, 23, 4);  // odd sizes catch stride mistakes
     img.at(0, 0) = glm::vec4(0.0f, 1.0f, 0.001f, 0.0f);
     img.at(1, 0) = glm::vec4(2.0f, -1.0f, std::numeric_limits<float>::quiet_NaN(), 1.5f);  // clamped
-    const std::string path = dir.file("round.png");
+    const std::string path = file_in(dir, "round.png");
     tf::write_image(path, img);
     const tf::Image back = tf::read_image(path, tf::ColorSpace::automatic, 16384);
     CHECK_EQ(back.width, 37);
@@ -317,14 +242,14 @@ void test_png_round_trip(const TempDir& dir) {
     // Raw read: the stored codes / 255, no decode.
     const tf::Image raw = tf::read_image_raw(path);
     CHECK_NEAR(raw.at(0, 0).b, std::round(tf::linear_to_srgb(0.001f) * 255.0) / 255.0, 1e-7);
-    CHECK_EQ(entries_in(dir.path), 1u);  // no temp file left beside it
+    CHECK_EQ(entries_in(dir), 1u);  // no temp file left beside it
 }
 
-void test_exr_round_trip(const TempDir& dir) {
+void test_exr_round_trip(const fs::path& dir) {
     tf::Image img = noise_image(19, 11, 5);
     img.at(0, 0) = glm::vec4(1000.5f, 1e-3f, 0.0f, 2.0f);  // outside [0,1] is kept, linear
     img.at(1, 0) = glm::vec4(std::numeric_limits<float>::infinity(), -3.0f, 0.1f, 0.9f);
-    const std::string path = dir.file("round.exr");
+    const std::string path = file_in(dir, "round.exr");
     tf::write_image(path, img);
     const tf::Image back = tf::read_image(path, tf::ColorSpace::automatic, 16384);
     CHECK_EQ(back.width, 19);
@@ -336,57 +261,57 @@ void test_exr_round_trip(const TempDir& dir) {
             if (std::isinf(v)) CHECK_EQ(got, v);
             else CHECK_NEAR(got, v, std::fabs(v) * rel + std::ldexp(1.0, -25));  // abs term: subnormals
         }
-    CHECK_EQ(entries_in(dir.path), 1u);  // no temp file left beside it
+    CHECK_EQ(entries_in(dir), 1u);  // no temp file left beside it
 }
 
-void test_bad_inputs(const TempDir& dir) {
-    const std::string missing = dir.file("missing.png");
+void test_bad_inputs(const fs::path& dir) {
+    const std::string missing = file_in(dir, "missing.png");
     CHECK_THROWS_WITH(tf::read_image(missing, tf::ColorSpace::automatic, 16384), missing + ": no such file");
     CHECK_THROWS_WITH(tf::read_image_raw(missing), missing + ": no such file");
 
-    const std::string empty = dir.file("empty.png");
+    const std::string empty = file_in(dir, "empty.png");
     write_bytes(empty, {});
     CHECK_THROWS_WITH(tf::read_image(empty, tf::ColorSpace::automatic, 16384), empty + ": file is empty");
 
-    const std::string random = dir.file("random.png");
+    const std::string random = file_in(dir, "random.png");
     std::mt19937 rng(6);
     std::vector<char> noise(1000);
     for (char& ch : noise) ch = char(rng() & 0xff);
     write_bytes(random, noise);
     CHECK_THROWS_WITH(tf::read_image(random, tf::ColorSpace::automatic, 16384), random + ":");
-    const std::string random_exr = dir.file("random.exr");
+    const std::string random_exr = file_in(dir, "random.exr");
     write_bytes(random_exr, noise);
     CHECK_THROWS_WITH(tf::read_image(random_exr, tf::ColorSpace::automatic, 16384), random_exr + ":");
 
     // A real PNG cut short, and one with its compressed data scrambled: the header parses, pixels do not.
-    const std::string good = dir.file("good.png");
+    const std::string good = file_in(dir, "good.png");
     tf::write_image(good, noise_image(64, 64, 7));
     std::vector<char> bytes = read_bytes(good);
     CHECK(bytes.size() > 1000);
-    const std::string truncated = dir.file("truncated.png");
+    const std::string truncated = file_in(dir, "truncated.png");
     write_bytes(truncated, std::vector<char>(bytes.begin(), bytes.begin() + long(bytes.size() / 2)));
     CHECK_THROWS_WITH(tf::read_image(truncated, tf::ColorSpace::automatic, 16384), truncated + ":");
     CHECK_THROWS_WITH(tf::read_image_raw(truncated), truncated + ":");
-    const std::string scrambled = dir.file("scrambled.png");
+    const std::string scrambled = file_in(dir, "scrambled.png");
     for (size_t i = 200; i < bytes.size() - 100; i += 7) bytes[i] = char(bytes[i] ^ 0x5a);
     write_bytes(scrambled, bytes);
     CHECK_THROWS_WITH(tf::read_image(scrambled, tf::ColorSpace::automatic, 16384), scrambled + ":");
 
     // A directory is not a file.
-    CHECK_THROWS_WITH(tf::read_image(dir.path.string(), tf::ColorSpace::automatic, 16384), dir.path.string());
+    CHECK_THROWS_WITH(tf::read_image(dir.string(), tf::ColorSpace::automatic, 16384), dir.string());
 
     // Too large for the caller's limit, on either side.
-    tf::write_image(dir.file("wide.png"), tf::make_image(20, 10, glm::vec4(0.5f)));
-    CHECK_THROWS_WITH(tf::read_image(dir.file("wide.png"), tf::ColorSpace::automatic, 16),
-                      dir.file("wide.png") + ": 20x10 exceeds the maximum texture size 16");
-    CHECK_EQ(tf::read_image(dir.file("wide.png"), tf::ColorSpace::automatic, 20).width, 20);
-    tf::write_image(dir.file("tall.png"), tf::make_image(3, 40, glm::vec4(0.5f)));
-    CHECK_THROWS_WITH(tf::read_image(dir.file("tall.png"), tf::ColorSpace::automatic, 39),
+    tf::write_image(file_in(dir, "wide.png"), tf::make_image(20, 10, glm::vec4(0.5f)));
+    CHECK_THROWS_WITH(tf::read_image(file_in(dir, "wide.png"), tf::ColorSpace::automatic, 16),
+                      file_in(dir, "wide.png") + ": 20x10 exceeds the maximum texture size 16");
+    CHECK_EQ(tf::read_image(file_in(dir, "wide.png"), tf::ColorSpace::automatic, 20).width, 20);
+    tf::write_image(file_in(dir, "tall.png"), tf::make_image(3, 40, glm::vec4(0.5f)));
+    CHECK_THROWS_WITH(tf::read_image(file_in(dir, "tall.png"), tf::ColorSpace::automatic, 39),
                       "3x40 exceeds the maximum texture size 39");
 }
 
-void test_bad_outputs(const TempDir& dir) {
-    const fs::path sub = dir.path / "out";
+void test_bad_outputs(const fs::path& dir) {
+    const fs::path sub = dir / "out";
     fs::create_directories(sub);
     const tf::Image img = noise_image(4, 4, 8);
 
@@ -410,11 +335,11 @@ void test_bad_outputs(const TempDir& dir) {
     CHECK_EQ(entries_in(sub), 1u);
 }
 
-void test_channel_layouts(const TempDir& dir) {
+void test_channel_layouts(const fs::path& dir) {
     const double decoded128 = 0.2158605;  // sRGB code 128 in linear light
     const int w = 3, h = 2;
 
-    const std::string grey = dir.file("grey.png");
+    const std::string grey = file_in(dir, "grey.png");
     CHECK(oiio_write(grey, w, h, 1, OIIO::TypeDesc::UINT8, std::vector<uint8_t>(w * h, 128)));
     const tf::Image g = tf::read_image(grey, tf::ColorSpace::automatic, 16384);
     CHECK_EQ(g.width, w);
@@ -430,7 +355,7 @@ void test_channel_layouts(const TempDir& dir) {
     CHECK_EQ(gl.at(2, 1).a, 1.0f);
     CHECK_NEAR(tf::read_image_raw(grey).at(1, 1).b, 128.0 / 255.0, 1e-7);
 
-    const std::string rgb = dir.file("rgb.png");
+    const std::string rgb = file_in(dir, "rgb.png");
     std::vector<uint8_t> px;
     for (int i = 0; i < w * h; ++i) px.insert(px.end(), {128, 0, 255});
     px[3 * 4 + 1] = 10;  // pixel (1, 1) green: below the linear-segment breakpoint
@@ -446,13 +371,13 @@ void test_channel_layouts(const TempDir& dir) {
     CHECK_EQ(cl.at(2, 0).a, 1.0f);
 
     // An 8-bit file that says it is linear is taken at its word, unless sRGB is forced.
-    const std::string lin = dir.file("linear_tagged.png");
+    const std::string lin = file_in(dir, "linear_tagged.png");
     CHECK(oiio_write(lin, w, h, 3, OIIO::TypeDesc::UINT8, std::vector<uint8_t>(w * h * 3, 128), "Linear"));
     CHECK_NEAR(tf::read_image(lin, tf::ColorSpace::automatic, 16384).at(1, 0).r, 128.0 / 255.0, 1e-7);
     CHECK_NEAR(tf::read_image(lin, tf::ColorSpace::srgb, 16384).at(1, 0).r, decoded128, 1e-6);
 
     // Grey + alpha: alpha is never decoded.
-    const std::string ga = dir.file("grey_alpha.png");
+    const std::string ga = file_in(dir, "grey_alpha.png");
     std::vector<uint8_t> gapx;
     for (int i = 0; i < w * h; ++i) gapx.insert(gapx.end(), {128, 64});
     CHECK(oiio_write(ga, w, h, 2, OIIO::TypeDesc::UINT8, gapx));
@@ -462,14 +387,14 @@ void test_channel_layouts(const TempDir& dir) {
     CHECK_NEAR(gat.at(1, 0).a, 64.0 / 255.0, 1e-7);  // unassociated: no premultiply on read
 
     // 16-bit PNG is sRGB too.
-    const std::string deep = dir.file("deep.png");
+    const std::string deep = file_in(dir, "deep.png");
     CHECK(oiio_write(deep, w, h, 4, OIIO::TypeDesc::UINT16, std::vector<uint16_t>(w * h * 4, 32768)));
     const tf::Image d = tf::read_image(deep, tf::ColorSpace::automatic, 16384);
     CHECK_NEAR(d.at(0, 1).g, tf::srgb_to_linear(32768.0 / 65535.0), 1e-6);
     CHECK_NEAR(d.at(0, 1).a, 32768.0 / 65535.0, 1e-7);
 
     // Float EXR is linear unless forced; one channel expands like grey.
-    const std::string fexr = dir.file("grey.exr");
+    const std::string fexr = file_in(dir, "grey.exr");
     CHECK(oiio_write(fexr, w, h, 1, OIIO::TypeDesc::FLOAT, std::vector<float>(w * h, 0.5f)));
     const tf::Image fe = tf::read_image(fexr, tf::ColorSpace::automatic, 16384);
     CHECK_EQ(fe.at(2, 1).r, 0.5f);
@@ -478,7 +403,7 @@ void test_channel_layouts(const TempDir& dir) {
     CHECK_NEAR(tf::read_image(fexr, tf::ColorSpace::srgb, 16384).at(0, 0).g, tf::srgb_to_linear(0.5), 1e-6);
 
     // More than four channels: the first four (R, G, B, A) are used.
-    const std::string five = dir.file("five.exr");
+    const std::string five = file_in(dir, "five.exr");
     std::vector<float> fpx;
     for (int i = 0; i < w * h; ++i) fpx.insert(fpx.end(), {0.1f, 0.2f, 0.3f, 0.4f, 9.0f});
     CHECK(oiio_write(five, w, h, 5, OIIO::TypeDesc::FLOAT, fpx));
@@ -492,8 +417,8 @@ void test_channel_layouts(const TempDir& dir) {
 // ---------------------------------------------------------------------------------------------
 // report.h
 
-void test_report(const TempDir& dir) {
-    const fs::path sub = dir.path / "report";
+void test_report(const fs::path& dir) {
+    const fs::path sub = dir / "report";
     fs::create_directories(sub);
     const std::string path = (sub / "index.html").string();
     std::vector<tf::ReportCase> cases = {
@@ -532,30 +457,29 @@ int main() {
         std::printf("test_diff needs the OpenImageIO build of image_io\n");
         return 1;
     }
-    TempDir dir;
+    const fs::path dir = tf::test::make_work_dir("test-diff");
     const std::vector<std::pair<const char*, std::function<void()>>> tests = {
         {"identical", test_identical},
         {"one_pixel_off", test_one_pixel_off},
         {"nan_fails", test_nan_fails},
         {"size_mismatch", test_size_mismatch},
         {"diff_image", test_diff_image},
-        {"png_round_trip", [&] { test_png_round_trip(TempDir()); }},
-        {"exr_round_trip", [&] { test_exr_round_trip(TempDir()); }},
+        {"png_round_trip", [&] { test_png_round_trip(tf::test::make_work_dir("test-diff-png")); }},
+        {"exr_round_trip", [&] { test_exr_round_trip(tf::test::make_work_dir("test-diff-exr")); }},
         {"bad_inputs", [&] { test_bad_inputs(dir); }},
         {"bad_outputs", [&] { test_bad_outputs(dir); }},
         {"channel_layouts", [&] { test_channel_layouts(dir); }},
         {"report", [&] { test_report(dir); }},
     };
     for (const auto& [name, fn] : tests) {
-        const int before = g_failures;
+        const int before = tf::test::failures();
         try {
             fn();
         } catch (const std::exception& e) {
-            ++g_failures;
-            std::printf("%s: unexpected exception: %s\n", name, e.what());
+            tf::test::fail(std::string(name) + ": unexpected exception: " + e.what());
         }
-        std::printf("%-16s %s\n", name, g_failures == before ? "ok" : "FAILED");
+        std::printf("%-16s %s\n", name, tf::test::failures() == before ? "ok" : "FAILED");
     }
-    std::printf("%d checks, %d failed, %zu tests\n", g_checks, g_failures, tests.size());
-    return g_failures ? 1 : 0;
+    std::printf("%d checks, %d failed, %zu tests\n", tf::test::checks(), tf::test::failures(), tests.size());
+    return tf::test::failures() ? 1 : 0;
 }

@@ -12,14 +12,13 @@
 #include "mip.h"
 #include "procedural.h"
 #include "reference.h"
+#include "support.h"
 #include "vk_context.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -27,16 +26,15 @@
 #include <vector>
 
 #include <glm/glm.hpp>
-#include <unistd.h>
 
 using namespace tf;
+using tf::test::as_float;
 
 namespace {
 
 // TF_EWA_MAX_TEXELS's default: at most K rows of K texels per level.
 constexpr int kMaxTexels = 67;
 
-int g_failures = 0;
 std::string g_texfilter;
 std::filesystem::path g_work;
 
@@ -45,18 +43,11 @@ void check_bound(const char* file, int line, const std::string& what, double mea
     const bool ok = upper ? measured <= bound : measured >= bound; // NaN fails
     std::printf("%-4s %-68s %.3g (%s %.3g)\n", ok ? "ok" : "FAIL", what.c_str(), measured, upper ? "bound" : "at least",
                 bound);
-    if (!ok) {
-        ++g_failures;
-        std::fprintf(stderr, "%s:%d: CHECK failed: %s: %.17g %s %.17g\n", file, line, what.c_str(), measured,
-                     upper ? ">" : "<", bound);
-    }
+    test::check(ok, file, line, what, test::show(measured) + (upper ? " > " : " < ") + test::show(bound));
 }
 void check_true(const char* file, int line, const std::string& what, bool ok, const std::string& detail) {
     std::printf("%-4s %-68s %s\n", ok ? "ok" : "FAIL", what.c_str(), detail.c_str());
-    if (!ok) {
-        ++g_failures;
-        std::fprintf(stderr, "%s:%d: CHECK failed: %s (%s)\n", file, line, what.c_str(), detail.c_str());
-    }
+    test::check(ok, file, line, what, detail);
 }
 #define CHECK_LE(what, measured, bound) check_bound(__FILE__, __LINE__, what, measured, bound, true)
 #define CHECK_GE(what, measured, bound) check_bound(__FILE__, __LINE__, what, measured, bound, false)
@@ -66,11 +57,6 @@ double max_abs(const glm::dvec4& d) { return std::max(std::max(std::abs(d.r), st
 bool finite(const glm::dvec4& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b) && std::isfinite(c.a); }
 
 // ---------------------------------------------------------------- lookups
-
-// The GPU reads lookups as float: the reference must see the same numbers.
-Lookup as_float(const Lookup& l) {
-    return {float(l.u), float(l.v), float(l.dudx), float(l.dvdx), float(l.dudy), float(l.dvdy)};
-}
 
 // Footprints from 1/16 texel to 512 texels, axis ratios 1..64 (past max_aniso 16), any angle, uv in [-1, 2].
 std::vector<Lookup> random_lookups(int count, unsigned seed, int size = 256) {
@@ -466,37 +452,16 @@ void check_counts() {
 
 // ---------------------------------------------------------------- non-finite and huge footprints
 
-std::vector<glm::dvec4> read_colors(const std::string& path, std::vector<LookupStats>* stats) {
-    std::ifstream in(path);
-    std::string line;
-    std::getline(in, line);
-    std::vector<glm::dvec4> colors;
-    while (std::getline(in, line)) {
-        glm::dvec4 c;
-        char* p = line.data();
-        for (int k = 0; k < 4; ++k) {
-            c[k] = std::strtod(p, &p);
-            if (*p == ',') ++p;
-        }
-        if (stats) {
-            LookupStats s;
-            s.texel_fetches = uint32_t(std::strtoul(p, &p, 10));
-            if (*p == ',') ++p;
-            s.hardware_lookups = uint32_t(std::strtoul(p, &p, 10));
-            stats->push_back(s);
-        }
-        colors.push_back(c);
+// Runs `texfilter sample --validate` under its time limit: a shader that hangs fails the check instead of
+// blocking the test. False (and the command on stderr) if it failed.
+bool run_cli(const std::string& flags, const std::string& lookups, bool stats, test::SampleResult& result) {
+    try {
+        result = test::run_sample(g_texfilter, g_work, flags, lookups, stats);
+        return true;
+    } catch (const Error& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return false;
     }
-    return colors;
-}
-
-// Runs `texfilter sample --validate` under a time limit: a shader that hangs fails the test instead of
-// blocking it. Returns false if the command failed.
-bool run_cli(const std::string& args, const std::string& out) {
-    const std::string command = "timeout 120 '" + g_texfilter + "' sample --validate " + args + " -o '" + out + "' > /dev/null";
-    const int rc = std::system(command.c_str());
-    if (rc != 0) std::fprintf(stderr, "command failed (%d): %s\n", rc, command.c_str());
-    return rc == 0;
 }
 
 // Through the CLI (flags --taps, --alpha, --max-aniso, --lod-max end to end): NaN, ±Inf, 0, 1e30,
@@ -533,13 +498,9 @@ void check_non_finite() {
         {"uv Inf", {inf, 0.5, t, 0, 0, t}, false, true},
     };
     const std::string in = (g_work / "nonfinite.csv").string();
-    {
-        std::ofstream f(in);
-        f << "u,v,dudx,dvdx,dudy,dvdy\n";
-        f.precision(9);
-        for (const Row& r : rows)
-            f << r.l.u << "," << r.l.v << "," << r.l.dudx << "," << r.l.dvdx << "," << r.l.dudy << "," << r.l.dvdy << "\n";
-    }
+    std::vector<Lookup> lookups;
+    for (const Row& r : rows) lookups.push_back(r.l);
+    test::write_lookups_csv(in, lookups, false); // as they are: the GPU rounds them, the reference does not
     struct Run {
         std::string flags;
         SamplerOptions options;
@@ -553,14 +514,16 @@ void check_non_finite() {
         runs.push_back({"--taps " + to_string(taps) + " --wrap clamp --lod-max 0", c});
     }
     for (const Run& run : runs) {
-        const std::string args = "--texture " + texture + " --filter ewa " + run.flags + " --lookups '" + in + "'";
-        const std::string out_gpu = (g_work / "nonfinite-gpu.csv").string(), out_ref = (g_work / "nonfinite-ref.csv").string();
-        const bool ok_gpu = run_cli(args + " --stats", out_gpu), ok_ref = run_cli(args + " --backend reference", out_ref);
+        const std::string args = "--texture " + texture + " --filter ewa " + run.flags;
+        test::SampleResult gpu_run, ref_run;
+        const bool ok_gpu = run_cli(args, in, true, gpu_run);
+        const bool ok_ref = run_cli(args + " --backend reference", in, false, ref_run);
         CHECK_TRUE("non-finite/huge: `sample --validate " + run.flags + "` returns", ok_gpu && ok_ref,
                    ok_gpu && ok_ref ? "exit 0 (GPU and reference)" : "command failed");
         if (!ok_gpu || !ok_ref) continue;
-        std::vector<LookupStats> stats;
-        const auto gpu = read_colors(out_gpu, &stats), ref = read_colors(out_ref, nullptr);
+        const auto& gpu = gpu_run.colors;
+        const auto& ref = ref_run.colors;
+        const auto& stats = gpu_run.stats;
         if (gpu.size() != rows.size() || ref.size() != rows.size() || stats.size() != rows.size()) {
             CHECK_TRUE("non-finite/huge: one result per lookup", false, "wrong row count");
             continue;
@@ -592,13 +555,8 @@ void check_non_finite() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: test_ewa PATH/TO/texfilter\n");
-        return 2;
-    }
-    g_texfilter = argv[1];
-    g_work = std::filesystem::temp_directory_path() / ("texfilter-ewa-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(g_work);
+    g_texfilter = test::texfilter_path_from_args(argc, argv, "test_ewa PATH/TO/texfilter");
+    g_work = test::make_work_dir("ewa");
     const char* env = std::getenv("TEXFILTER_VALIDATE");
     try {
         Gpu gpu(env && std::string(env) == "1");
@@ -631,12 +589,9 @@ int main(int argc, char** argv) {
         check_counts();
         g_gpu = nullptr;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "FAIL: %s\n", e.what());
-        ++g_failures;
+        test::fail(e.what());
     }
     check_non_finite();
     CHECK_LE("Vulkan validation messages (in-process)", double(validation_message_count()), 0.0);
-    std::filesystem::remove_all(g_work);
-    std::printf("%s\n", g_failures ? "FAILED" : "all passed");
-    return g_failures ? 1 : 0;
+    return test::finish();
 }

@@ -2,23 +2,19 @@
 // The hardware is allowed exactly what Vulkan lets it round: texel weights to subTexelPrecisionBits
 // (8 on lavapipe) and the level blend to mipmapPrecisionBits (4), plus lavapipe's approximate log2
 // in the LOD (measured ~0.04, DESIGN.md section 4). Anything beyond that is a bug in one of the two.
-#include "lookups_csv.h"
 #include "procedural.h"
 #include "reference.h"
+#include "support.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 #include <glm/glm.hpp>
-#include <unistd.h>
 
 using namespace tf;
+using tf::test::max_channel_diff;
 
 namespace {
 
@@ -28,34 +24,12 @@ const double float_error = 2e-6;
 
 std::string texfilter;
 std::filesystem::path work;
-int failures = 0;
 
-std::vector<glm::dvec4> run_sample(const std::string& texture, const std::string& filter, const std::string& wrap,
-                                   const std::string& lookups)
+std::vector<glm::dvec4> sample_colors(const std::string& texture, const std::string& filter, const std::string& wrap,
+                                      const std::string& lookups)
 {
-    std::string out = (work / (texture + "-" + filter + "-" + wrap + ".csv")).string();
-    std::string command = "'" + texfilter + "' sample --validate --texture " + texture + " --filter " + filter +
-                          " --wrap " + wrap + " --lookups '" + lookups + "' -o '" + out + "' > /dev/null";
-    if (std::system(command.c_str()) != 0) {
-        std::fprintf(stderr, "FAIL: command failed: %s\n", command.c_str());
-        std::exit(1);
-    }
-    std::ifstream in(out);
-    std::string line;
-    std::getline(in, line); // header
-    std::vector<glm::dvec4> colors;
-    while (std::getline(in, line)) {
-        glm::dvec4 c;
-        std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &c.r, &c.g, &c.b, &c.a);
-        colors.push_back(c);
-    }
-    return colors;
-}
-
-double max_channel_diff(glm::dvec4 a, glm::dvec4 b)
-{
-    glm::dvec4 d = glm::abs(a - b);
-    return std::max(std::max(d.r, d.g), std::max(d.b, d.a));
+    const std::string flags = "--texture " + texture + " --filter " + filter + " --wrap " + wrap;
+    return test::run_sample(texfilter, work, flags, lookups, false).colors;
 }
 
 // How far 8-bit weights can move a bilinear lookup: one weight step times the texel differences.
@@ -88,17 +62,6 @@ std::vector<Lookup> random_lookups(int count, unsigned seed)
     return lookups;
 }
 
-void write_lookups(const std::string& path, const std::vector<Lookup>& lookups)
-{
-    std::ofstream out(path);
-    out << "u,v,dudx,dvdx,dudy,dvdy\n";
-    out.precision(9);
-    // Written as float: the GPU sees exactly these numbers, and so does the reference below.
-    for (const Lookup& l : lookups)
-        out << float(l.u) << "," << float(l.v) << "," << float(l.dudx) << "," << float(l.dvdx) << ","
-            << float(l.dudy) << "," << float(l.dvdy) << "\n";
-}
-
 struct Tally {
     std::string name;
     int checked = 0, over = 0;
@@ -114,8 +77,7 @@ struct Tally {
     {
         std::printf("%-44s %5d lookups, worst error/tolerance %.3f, %d over -> %s\n", name.c_str(), checked,
                     worst_ratio, over, over ? "FAIL" : "PASS");
-        if (over || checked == 0)
-            ++failures;
+        CHECK(over == 0 && checked > 0, name);
     }
 };
 
@@ -128,7 +90,7 @@ void compare(const std::string& texture, Wrap wrap, const std::vector<Lookup>& l
 
     // nearest: identical except where the texel coordinate sits within one sub-texel step of an edge.
     {
-        auto manual = run_sample(texture, "nearest", w, path), hw = run_sample(texture, "hw-nearest", w, path);
+        auto manual = sample_colors(texture, "nearest", w, path), hw = sample_colors(texture, "hw-nearest", w, path);
         Tally tally{"nearest vs hw-nearest (" + texture + ", " + w + ")"};
         for (size_t i = 0; i < lookups.size(); ++i) {
             double fx = lookups[i].u * 256.0, fy = lookups[i].v * 256.0;
@@ -140,7 +102,7 @@ void compare(const std::string& texture, Wrap wrap, const std::vector<Lookup>& l
     }
     // bilinear: level 0 only on both sides.
     {
-        auto manual = run_sample(texture, "bilinear", w, path), hw = run_sample(texture, "hw-bilinear", w, path);
+        auto manual = sample_colors(texture, "bilinear", w, path), hw = sample_colors(texture, "hw-bilinear", w, path);
         Tally tally{"bilinear vs hw-bilinear (" + texture + ", " + w + ")"};
         for (size_t i = 0; i < lookups.size(); ++i)
             tally.add(max_channel_diff(manual[i], hw[i]),
@@ -150,7 +112,7 @@ void compare(const std::string& texture, Wrap wrap, const std::vector<Lookup>& l
     // trilinear: the hardware may sit anywhere in [lambda - e, lambda + e]; trilinear is piecewise
     // linear in lambda, so its extremes there are at the ends or at whole levels in between.
     {
-        auto manual = run_sample(texture, "trilinear", w, path), hw = run_sample(texture, "hw-trilinear", w, path);
+        auto manual = sample_colors(texture, "trilinear", w, path), hw = sample_colors(texture, "hw-trilinear", w, path);
         Tally tally{"trilinear vs hw-trilinear (" + texture + ", " + w + ")"};
         int top = int(chain.levels.size()) - 1;
         for (size_t i = 0; i < lookups.size(); ++i) {
@@ -183,22 +145,18 @@ void compare(const std::string& texture, Wrap wrap, const std::vector<Lookup>& l
 
 int main(int argc, char** argv)
 {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: test_hw_vs_manual PATH/TO/texfilter\n");
-        return 2;
+    texfilter = test::texfilter_path_from_args(argc, argv, "test_hw_vs_manual PATH/TO/texfilter");
+    work = test::make_work_dir("hw-vs-manual");
+    // The reference sees the float-rounded values the GPU sees.
+    const std::vector<Lookup> lookups = test::as_float(random_lookups(4096, 2026));
+    const std::string path = (work / "lookups.csv").string();
+    test::write_lookups_csv(path, lookups);
+    try {
+        compare("noise", Wrap::repeat, lookups, path);
+        compare("checker", Wrap::clamp, lookups, path);
+        compare("zoneplate", Wrap::mirror, lookups, path);
+    } catch (const std::exception& e) {
+        test::fail(e.what());
     }
-    texfilter = argv[1];
-    work = std::filesystem::temp_directory_path() / ("texfilter-hw-vs-manual-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(work);
-    std::vector<Lookup> lookups = random_lookups(4096, 2026);
-    for (Lookup& l : lookups) // the reference sees the float-rounded values the GPU sees
-        l = {float(l.u), float(l.v), float(l.dudx), float(l.dvdx), float(l.dudy), float(l.dvdy)};
-    std::string path = (work / "lookups.csv").string();
-    write_lookups(path, lookups);
-    compare("noise", Wrap::repeat, lookups, path);
-    compare("checker", Wrap::clamp, lookups, path);
-    compare("zoneplate", Wrap::mirror, lookups, path);
-    std::filesystem::remove_all(work);
-    std::printf("%s\n", failures ? "FAILED" : "all passed");
-    return failures ? 1 : 0;
+    return test::finish();
 }

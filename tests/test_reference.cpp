@@ -6,6 +6,7 @@
 #include "mip.h"
 #include "procedural.h"
 #include "reference.h"
+#include "support.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,63 +15,10 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-int g_checks = 0;
-int g_failures = 0;
-
-void report(bool ok, const char* file, int line, const std::string& what) {
-    ++g_checks;
-    if (ok) return;
-    ++g_failures;
-    std::fprintf(stderr, "%s:%d: CHECK failed: %s\n", file, line, what.c_str());
-}
-
-std::string str(double x) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", x);
-    return buf;
-}
-
-std::string str(const glm::dvec4& v) {
-    return "(" + str(v.x) + ", " + str(v.y) + ", " + str(v.z) + ", " + str(v.w) + ")";
-}
-
-bool near(double a, double b, double eps) { return a == b || std::fabs(a - b) <= eps; }
-bool near(const glm::dvec4& a, const glm::dvec4& b, double eps) {
-    return near(a.x, b.x, eps) && near(a.y, b.y, eps) && near(a.z, b.z, eps) && near(a.w, b.w, eps);
-}
-
-} // namespace
-
-#define CHECK(expr) report(bool(expr), __FILE__, __LINE__, #expr)
-#define CHECK_EQ(a, b)                                                                                   \
-    do {                                                                                                 \
-        const auto va_ = (a);                                                                            \
-        const auto vb_ = (b);                                                                            \
-        report(va_ == vb_, __FILE__, __LINE__, #a " == " #b "  (" + str(double(va_)) + " vs " + str(double(vb_)) + ")"); \
-    } while (0)
-#define CHECK_NEAR(a, b, eps)                                                                            \
-    do {                                                                                                 \
-        const auto va_ = (a);                                                                            \
-        const auto vb_ = (b);                                                                            \
-        report(near(va_, vb_, eps), __FILE__, __LINE__,                                                  \
-               #a " ~= " #b "  (" + str(va_) + " vs " + str(vb_) + ")");                                 \
-    } while (0)
-#define CHECK_THROWS(stmt)                                                                               \
-    do {                                                                                                 \
-        bool threw_ = false;                                                                             \
-        try {                                                                                            \
-            stmt;                                                                                        \
-        } catch (const tf::Error&) {                                                                     \
-            threw_ = true;                                                                               \
-        }                                                                                                \
-        report(threw_, __FILE__, __LINE__, "throws tf::Error: " #stmt);                                  \
-    } while (0)
-
 using glm::dvec4;
 using tf::Filter;
 using tf::Wrap;
+using tf::test::near;
 
 namespace {
 
@@ -579,6 +527,6 @@ int main() {
     test_constant_texture();
     test_procedural();
     test_names();
-    std::printf("test_reference: %d checks, %d failed\n", g_checks, g_failures);
-    return g_failures == 0 ? 0 : 1;
+    std::printf("test_reference: %d checks, %d failed\n", tf::test::checks(), tf::test::failures());
+    return tf::test::failures() == 0 ? 0 : 1;
 }

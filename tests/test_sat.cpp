@@ -15,6 +15,7 @@
 #include "procedural.h"
 #include "reference.h"
 #include "sat.h"
+#include "support.h"
 
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
@@ -24,30 +25,20 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <random>
 #include <string>
 #include <vector>
-#include <unistd.h>
 
 using namespace tf;
+using tf::test::as_float;
+using tf::test::max_channel_diff;
+using tf::test::SampleResult;
 
 namespace {
 
 std::string texfilter;
 std::filesystem::path work;
-int failures = 0;
-
-void check(bool ok, const char* file, int line, const char* expr, const std::string& values)
-{
-    if (ok)
-        return;
-    ++failures;
-    std::fprintf(stderr, "%s:%d: CHECK failed: %s (%s)\n", file, line, expr, values.c_str());
-}
 
 std::string fmt(const char* format, double a, double b = 0, double c = 0)
 {
@@ -56,17 +47,9 @@ std::string fmt(const char* format, double a, double b = 0, double c = 0)
     return buf;
 }
 
-#define CHECK(expr, values) check(bool(expr), __FILE__, __LINE__, #expr, values)
-
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-double max_channel_diff(glm::dvec4 a, glm::dvec4 b)
-{
-    glm::dvec4 d = glm::abs(a - b);
-    return std::max(std::max(d.r, d.g), std::max(d.b, d.a));
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -162,61 +145,16 @@ void check_exact_box_sums()
 // ---------------------------------------------------------------------------------------------------
 // GPU runs through `texfilter sample`.
 
-struct Sampled {
-    std::vector<glm::dvec4> colors;
-    std::vector<unsigned> fetches;
-};
-
-void write_lookups(const std::string& path, const std::vector<Lookup>& lookups)
-{
-    std::ofstream out(path);
-    out << "u,v,dudx,dvdx,dudy,dvdy\n";
-    out.precision(9);
-    for (const Lookup& l : lookups) // written as float: the GPU and the reference see the same numbers
-        out << float(l.u) << "," << float(l.v) << "," << float(l.dudx) << "," << float(l.dvdx) << ","
-            << float(l.dudy) << "," << float(l.dvdy) << "\n";
-}
-
-std::vector<Lookup> as_float(std::vector<Lookup> lookups)
-{
-    for (Lookup& l : lookups)
-        l = {float(l.u), float(l.v), float(l.dudx), float(l.dvdx), float(l.dudy), float(l.dvdy)};
-    return lookups;
-}
-
-Sampled run_sample(const std::string& texture, int size, const std::string& filter, Wrap wrap,
-                   const std::vector<Lookup>& lookups, const std::string& extra = "")
+// One `texfilter sample --stats` run of these lookups (written out as float) on a procedural texture.
+SampleResult sample(const std::string& texture, int size, const std::string& filter, Wrap wrap,
+                    const std::vector<Lookup>& lookups, const std::string& extra = "")
 {
     static int run = 0;
-    std::string in = (work / ("lookups-" + std::to_string(run) + ".csv")).string();
-    std::string out = (work / ("out-" + std::to_string(run++) + ".csv")).string();
-    write_lookups(in, lookups);
-    std::string command = "'" + texfilter + "' sample --validate --stats --texture " + texture + " --texture-size " +
-                          std::to_string(size) + " --filter " + filter + " --wrap " + to_string(wrap) + " " + extra +
-                          " --lookups '" + in + "' -o '" + out + "' > /dev/null";
-    if (std::system(command.c_str()) != 0) {
-        std::fprintf(stderr, "FAIL: command failed: %s\n", command.c_str());
-        std::exit(1);
-    }
-    std::ifstream file(out);
-    std::string line;
-    std::getline(file, line); // header r,g,b,a,fetches,hw_lookups
-    Sampled s;
-    while (std::getline(file, line)) {
-        glm::dvec4 c;
-        unsigned fetches = 0, hw = 0;
-        if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%u,%u", &c.r, &c.g, &c.b, &c.a, &fetches, &hw) != 6) {
-            std::fprintf(stderr, "FAIL: unreadable row '%s' in %s\n", line.c_str(), out.c_str());
-            std::exit(1);
-        }
-        s.colors.push_back(c);
-        s.fetches.push_back(fetches);
-    }
-    if (s.colors.size() != lookups.size()) {
-        std::fprintf(stderr, "FAIL: %zu rows for %zu lookups in %s\n", s.colors.size(), lookups.size(), out.c_str());
-        std::exit(1);
-    }
-    return s;
+    const std::string in = (work / ("lookups-" + std::to_string(run++) + ".csv")).string();
+    test::write_lookups_csv(in, lookups);
+    const std::string flags = "--texture " + texture + " --texture-size " + std::to_string(size) + " --filter " +
+                              filter + " --wrap " + to_string(wrap) + " " + extra;
+    return test::run_sample(texfilter, work, flags, in, true);
 }
 
 SamplerOptions sat_options(Filter filter, Wrap wrap, int boxes = 4)
@@ -301,7 +239,7 @@ void check_aligned_boxes()
                 sum += glm::dvec4(image.at(x, y));
         exact.push_back(sum / double((b.x1 - b.x0) * (b.y1 - b.y0)));
     }
-    Sampled gpu = run_sample("noise", n, "sat", Wrap::repeat, lookups);
+    SampleResult gpu = sample("noise", n, "sat", Wrap::repeat, lookups);
     // No edge term here: quantisation plus float rounding only.
     const double scale = texture_scale(image), tolerance = 0.5 / 65535.0 * scale + 2e-6 * scale;
     Tally tally, reference;
@@ -356,7 +294,7 @@ bool crosses_border(const Lookup& l, double lod_bias)
 
 double g_worst_gpu_error = 0; // over every GPU-vs-reference comparison, for the summary line
 
-void check_wrap_modes(std::vector<Sampled>& sat_runs, std::vector<Lookup>& lookups_out)
+void check_wrap_modes(std::vector<SampleResult>& sat_runs, std::vector<Lookup>& lookups_out)
 {
     const std::vector<Lookup> lookups = random_lookups(2000, 2026);
     lookups_out = lookups;
@@ -369,7 +307,7 @@ void check_wrap_modes(std::vector<Sampled>& sat_runs, std::vector<Lookup>& looku
         MipChain chain = make_procedural(c.texture, c.size);
         const Image& image = chain.levels[0];
         const double scale = texture_scale(image), range = channel_range(image);
-        Sampled gpu = run_sample(c.texture, c.size, "sat", c.wrap, lookups, "--lod-bias " + std::to_string(c.bias));
+        SampleResult gpu = sample(c.texture, c.size, "sat", c.wrap, lookups, "--lod-bias " + std::to_string(c.bias));
         SamplerOptions options = sat_options(Filter::sat, c.wrap);
         options.lod_bias = c.bias;
         Tally inside, border;
@@ -382,7 +320,7 @@ void check_wrap_modes(std::vector<Sampled>& sat_runs, std::vector<Lookup>& looku
             bool b = crosses_border(lookups[i], c.bias);
             (b ? border : inside).add(e, tol);
             border_count += b;
-            most_fetches = std::max(most_fetches, gpu.fetches[i]);
+            most_fetches = std::max(most_fetches, gpu.stats[i].texel_fetches);
             const Lookup& l = lookups[i];
             const double big = 4.0 / c.size / std::exp2(c.bias);
             if (std::abs(l.dudx) + std::abs(l.dudy) >= big && std::abs(l.dvdx) + std::abs(l.dvdy) >= big)
@@ -418,11 +356,12 @@ void check_constant_time()
                                            {1.0, 1.0, huge, 0, 0, huge},  {-3.2, 7.9, 0.4, 0.1, 0.2, 0.5},
                                            {0.999, 0.5, 0.01, 0, 0, 0.5}, {0.5, 1e4, 0.2, 0, 0, 0.2}});
     for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror}) {
-        Sampled inside = run_sample("noise", 256, "sat", wrap, centre);
-        Sampled edge = run_sample("noise", 256, "sat", wrap, border);
-        unsigned lo = *std::min_element(inside.fetches.begin(), inside.fetches.end());
-        unsigned hi = *std::max_element(inside.fetches.begin(), inside.fetches.end());
-        unsigned edge_hi = *std::max_element(edge.fetches.begin(), edge.fetches.end());
+        SampleResult inside = sample("noise", 256, "sat", wrap, centre);
+        SampleResult edge = sample("noise", 256, "sat", wrap, border);
+        auto by_fetches = [](const LookupStats& a, const LookupStats& b) { return a.texel_fetches < b.texel_fetches; };
+        unsigned lo = std::min_element(inside.stats.begin(), inside.stats.end(), by_fetches)->texel_fetches;
+        unsigned hi = std::max_element(inside.stats.begin(), inside.stats.end(), by_fetches)->texel_fetches;
+        unsigned edge_hi = std::max_element(edge.stats.begin(), edge.stats.end(), by_fetches)->texel_fetches;
         bool ok = lo == 32 && hi == 32 && edge_hi <= 128;
         CHECK(ok, fmt("inside %g..%g, border max %g", lo, hi, edge_hi));
         std::printf("(4) constant time, %s: texelFetch per lookup inside the texture %u (footprint 1e-4 texel) .. %u "
@@ -449,13 +388,13 @@ glm::dvec4 parallelogram_mean(const Image& image, const Lookup& l, Wrap wrap, in
     return sum / double(m * m);
 }
 
-void check_assembly(const std::vector<Sampled>& sat_runs, const std::vector<Lookup>& lookups)
+void check_assembly(const std::vector<SampleResult>& sat_runs, const std::vector<Lookup>& lookups)
 {
     // K = 1 against the sat runs of (3) (noise 256 repeat, clamp): bit for bit (CSV has 9 digits: a float).
     int differ = 0;
     const Wrap wraps[] = {Wrap::repeat, Wrap::clamp};
     for (int w = 0; w < 2; ++w) {
-        Sampled k1 = run_sample("noise", 256, "sat-assembly", wraps[w], lookups, "--boxes 1");
+        SampleResult k1 = sample("noise", 256, "sat-assembly", wraps[w], lookups, "--boxes 1");
         for (size_t i = 0; i < lookups.size(); ++i)
             differ += k1.colors[i] != sat_runs[size_t(w)].colors[i];
     }
@@ -468,7 +407,7 @@ void check_assembly(const std::vector<Sampled>& sat_runs, const std::vector<Look
     MipChain chain = make_procedural("noise", 256);
     const Image& image = chain.levels[0];
     for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror}) {
-        Sampled gpu = run_sample("noise", 256, "sat-assembly", wrap, lookups, "--boxes 4");
+        SampleResult gpu = sample("noise", 256, "sat-assembly", wrap, lookups, "--boxes 4");
         Tally tally;
         int skipped = 0;
         for (size_t i = 0; i < lookups.size(); ++i) {
@@ -511,7 +450,7 @@ void check_assembly(const std::vector<Sampled>& sat_runs, const std::vector<Look
         std::string line;
         std::vector<double> errors;
         for (int k : {1, 2, 4, 8, 16}) {
-            Sampled gpu = run_sample(texture, n, "sat-assembly", Wrap::repeat, slanted, "--boxes " + std::to_string(k));
+            SampleResult gpu = sample(texture, n, "sat-assembly", Wrap::repeat, slanted, "--boxes " + std::to_string(k));
             double sum = 0;
             for (size_t i = 0; i < slanted.size(); ++i)
                 sum += max_channel_diff(gpu.colors[i], truth[i]);
@@ -568,7 +507,7 @@ void check_degenerate()
     const double tolerance = 0.5 / 65535.0 + 2e-6;
     for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror})
         for (const char* filter : {"sat", "sat-assembly"}) {
-            Sampled gpu = run_sample("noise", n, filter, wrap, lookups);
+            SampleResult gpu = sample("noise", n, filter, wrap, lookups);
             double worst = 0;
             int bad = 0;
             for (size_t i = 0; i < cases.size(); ++i) {
@@ -609,18 +548,13 @@ void check_degenerate()
 
 int main(int argc, char** argv)
 {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: test_sat PATH/TO/texfilter\n");
-        return 2;
-    }
-    texfilter = argv[1];
-    work = std::filesystem::temp_directory_path() / ("texfilter-sat-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(work);
+    texfilter = test::texfilter_path_from_args(argc, argv, "test_sat PATH/TO/texfilter");
+    work = test::make_work_dir("sat");
     try {
         auto start = std::chrono::steady_clock::now();
         check_exact_box_sums();
         check_aligned_boxes();
-        std::vector<Sampled> sat_runs;
+        std::vector<SampleResult> sat_runs;
         std::vector<Lookup> lookups;
         check_wrap_modes(sat_runs, lookups);
         check_constant_time();
@@ -629,10 +563,7 @@ int main(int argc, char** argv)
         std::printf("max GPU-vs-reference error over (3) and (5b): %.3g; total %.1f s\n", g_worst_gpu_error,
                     seconds_since(start));
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "FAIL: %s\n", e.what());
-        ++failures;
+        test::fail(e.what());
     }
-    std::filesystem::remove_all(work);
-    std::printf("%s\n", failures ? "FAILED" : "all passed");
-    return failures ? 1 : 0;
+    return test::finish();
 }
