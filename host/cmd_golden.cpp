@@ -30,7 +30,7 @@ void update_goldens(const GoldenRun& run)
         MipChain chain = load_texture(c.texture);
         SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
         std::string path = run.golden_dir + "/" + c.name + ".png";
-        write_image(path, reference_render(scene, chain, c.sampler));
+        write_image(path, reference_render(scene, chain, c.sampler, c.render));
         std::printf("updated %s (CPU reference)\n", path.c_str());
     }
 }
@@ -47,7 +47,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
         MipChain chain = load_texture(c.texture);
         SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
         Image actual = with_texture(gpu.context, chain, needs_sat(c.sampler.filter),
-                                    [&](auto& t) { return gpu_render(gpu.context, t, scene, c.sampler); });
+                                    [&](auto& t) { return gpu_render(gpu.context, t, scene, c.sampler, c.render); });
 
         std::string golden_path = run.golden_dir + "/" + c.name + ".png";
         Image golden = read_image_raw(golden_path);

@@ -16,7 +16,10 @@ int run_render(const std::vector<std::string>& argv)
         {{{"--scene", "S", "plane, tunnel, zoom, minify or slanted"}},
          texture_flags(),
          sampler_flags(),
-         {{"--size", "WxH", "image size, even sides (default 256x256)"}, {"-o", "OUT", "output .png (8-bit sRGB) or .exr (linear half)"}},
+         {{"--size", "WxH", "image size, even sides (default 256x256)"},
+          {"--stage", "S", "fragment (default) or compute (2x2 quads from subgroup quad operations)"},
+          {"--derivatives", "D", "fine (default), coarse (one pair a quad) or ray (ray differentials)"},
+          {"-o", "OUT", "output .png (8-bit sRGB) or .exr (linear half)"}},
          device_flags()});
     Args args = parse_args("render", argv, specs, 0);
     if (args.has("--help")) {
@@ -28,6 +31,8 @@ int run_render(const std::vector<std::string>& argv)
         return 0;
     }
     SceneKind kind = parse_flag(args, "--scene", "", parse_scene);
+    RenderOptions render = make_render_options(kind, parse_flag(args, "--stage", "fragment", parse_stage),
+                                               parse_flag(args, "--derivatives", "fine", parse_gradients));
     SamplerOptions options = sampler_options_from(args);
     Backend backend = backend_from(args);
     auto [width, height] = parse_size("--size", args.get("--size", "256x256"), 2, 8192);
@@ -43,11 +48,11 @@ int run_render(const std::vector<std::string>& argv)
 
     Image image;
     if (backend == Backend::reference) {
-        image = reference_render(scene, chain, options);
+        image = reference_render(scene, chain, options, render);
     } else {
         GpuSession gpu(context_options_from(args));
         image = with_texture(gpu.context, chain, needs_sat(options.filter),
-                             [&](auto& t) { return gpu_render(gpu.context, t, scene, options); });
+                             [&](auto& t) { return gpu_render(gpu.context, t, scene, options, render); });
         gpu.finish();
     }
     write_image(out, image);

@@ -14,6 +14,7 @@ std::vector<GoldenCase> read_manifest(const std::string& path)
         throw Error(path + ": cannot open the golden manifest");
     // A case's options are the render command's flags written key=value, so both share one parser.
     const std::vector<FlagSpec> specs = join({{{"--scene", "S", ""}, {"--size", "WxH", ""}, {"--fail", "X", ""},
+                                               {"--stage", "S", ""}, {"--derivatives", "D", ""},
                                                {"--failpercent", "P", ""}, {"--hardfail", "H", ""}},
                                               texture_flags(),
                                               sampler_flags()});
@@ -44,6 +45,8 @@ std::vector<GoldenCase> read_manifest(const std::string& path)
             c.scene = parse_flag(args, "--scene", "", parse_scene);
             c.texture = texture_source_from(args);
             c.sampler = sampler_options_from(args);
+            c.render = make_render_options(c.scene, parse_flag(args, "--stage", "fragment", parse_stage),
+                                           parse_flag(args, "--derivatives", "fine", parse_gradients));
             std::tie(c.width, c.height) = parse_size("size", args.get("--size", "256x256"), 2, 4096);
             c.thresholds.fail = args.get_double("--fail", c.thresholds.fail, 0.0, 1.0);
             c.thresholds.fail_percent = args.get_double("--failpercent", c.thresholds.fail_percent, 0.0, 100.0);

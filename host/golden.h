@@ -15,6 +15,7 @@ struct GoldenCase {
     SceneKind scene = SceneKind::plane;
     TextureSource texture;
     SamplerOptions sampler;
+    RenderOptions render;
     int width = 256, height = 256;
     // In sRGB-encoded units, GPU side not quantised. Default: half an 8-bit step (the golden's own
     // rounding) plus float32 error; no pixel may be further off unless the manifest allows it.

@@ -42,8 +42,10 @@ auto with_texture(const VulkanContext& context, const MipChain& chain, bool with
     return body(texture);
 }
 
+// Renders the scene: ray-cast in a fragment shader (full-screen triangle) or a compute shader (2x2 quads
+// from subgroup quad operations), or, with render.rasterize, its triangles through the raster pipeline.
 Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
-                 const SamplerOptions& options);
+                 const SamplerOptions& options, const RenderOptions& render);
 
 std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture& texture,
                                   const std::vector<Lookup>& lookups, const SamplerOptions& options,

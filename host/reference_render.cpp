@@ -36,10 +36,12 @@ void parallel_for(size_t count, Body body)
 
 } // namespace
 
-Image reference_render(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options)
+Image reference_render(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options,
+                       const RenderOptions& render)
 {
     int width = scene.kind_size.y, height = scene.kind_size.z;
-    std::vector<PixelLookup> lookups = reference_quad_lookups(scene);
+    // The stage does not change the math: compute quads are the fragment stage's quads.
+    std::vector<PixelLookup> lookups = reference_lookups(scene, render.gradients, render.rasterize);
     Image out = make_image(width, height);
     parallel_for(size_t(height), [&](size_t y) {
         for (int x = 0; x < width; ++x) {

@@ -7,7 +7,8 @@
 
 namespace tf {
 
-Image reference_render(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options);
+Image reference_render(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options,
+                       const RenderOptions& render);
 
 std::vector<glm::dvec4> reference_sample_all(const MipChain& chain, const std::vector<Lookup>& lookups,
                                              const SamplerOptions& options);

@@ -1,6 +1,7 @@
 #include "scene.h"
 #include "../shaders/harness/config.h"
 #include "error.h"
+#include <array>
 #include <cmath>
 
 namespace tf {
@@ -38,12 +39,116 @@ void set_facing_quad(SceneParams& scene, int height, double uv_per_pixel)
     scene.axis_v = glm::vec4(0.0f, float(-unit), 0.0f, 0.0f); // v grows down the screen, like rows
 }
 
+// The triangles scene's mesh: a floor and a wall seen at grazing angles, a panel facing the camera whose
+// two triangles carry different uv offsets (a seam along its diagonal), and a steeply tilted triangle.
+struct Corner {
+    glm::dvec3 position;
+    glm::dvec2 uv;
+};
+
+std::vector<std::array<Corner, 3>> mesh_triangles()
+{
+    auto floor_uv = [](glm::dvec3 p) { return glm::dvec2(p.x / 1.5, p.z / 1.5); };
+    auto wall_uv = [](glm::dvec3 p) { return glm::dvec2(p.z / 1.5, (2.0 - p.y) / 1.5); };
+    auto panel_uv = [](glm::dvec3 p, glm::dvec2 offset) { return glm::dvec2(p.x - 0.2, 1.2 - p.y) * 0.5 + offset; };
+    auto tri = [](glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, auto uv) {
+        return std::array<Corner, 3>{Corner{a, uv(a)}, Corner{b, uv(b)}, Corner{c, uv(c)}};
+    };
+    glm::dvec3 f0(-3, -1, 1.5), f1(3, -1, 1.5), f2(3, -1, 30), f3(-3, -1, 30);
+    glm::dvec3 w0(-3, -1, 1.5), w1(-3, -1, 30), w2(-3, 2, 30), w3(-3, 2, 1.5);
+    glm::dvec3 p0(0.2, -0.8, 6), p1(2.2, -0.8, 6), p2(2.2, 1.2, 6), p3(0.2, 1.2, 6);
+    glm::dvec2 seam(0.37, 0.21);
+    return {tri(f0, f1, f2, floor_uv),
+            tri(f0, f2, f3, floor_uv),
+            tri(w0, w1, w2, wall_uv),
+            tri(w0, w2, w3, wall_uv),
+            tri(p0, p1, p2, [&](glm::dvec3 p) { return panel_uv(p, glm::dvec2(0.0)); }),
+            tri(p0, p2, p3, [&](glm::dvec3 p) { return panel_uv(p, seam); }),
+            tri({-0.5, -1.0, 4.0}, {-2.0, -1.0, 10.0}, {-1.0, 1.0, 8.0},
+                [](glm::dvec3 p) { return glm::dvec2(p.x * 0.8, p.y * 0.8 + p.z * 0.3); })};
+}
+
+glm::dvec3 d3(glm::vec4 v) { return glm::dvec3(v); }
+
+glm::dvec3 camera_ray(const SceneParams& scene, double px, double py)
+{
+    double ndc_x = 2.0 * px / scene.kind_size.y - 1.0;
+    double ndc_y = 1.0 - 2.0 * py / scene.kind_size.z;
+    return d3(scene.forward) + ndc_x * d3(scene.right) + ndc_y * d3(scene.up);
+}
+
+// Barycentric coordinates (b1, b2) of where the ray meets the triangle's plane, and the distance t.
+bool triangle_plane_hit(const SceneParams& scene, int i, glm::dvec3 o, glm::dvec3 d, double& b1, double& b2, double& t)
+{
+    glm::dvec3 a = d3(scene.positions[3 * i]), e1 = d3(scene.positions[3 * i + 1]) - a,
+               e2 = d3(scene.positions[3 * i + 2]) - a;
+    glm::dvec3 n = glm::cross(e1, e2);
+    double dn = glm::dot(d, n);
+    if (dn == 0.0)
+        return false;
+    t = glm::dot(a - o, n) / dn;
+    glm::dvec3 rel = o + t * d - a;
+    // Solve rel = b1 e1 + b2 e2 in the plane (Cramer's rule on the Gram matrix).
+    double g11 = glm::dot(e1, e1), g12 = glm::dot(e1, e2), g22 = glm::dot(e2, e2);
+    double r1 = glm::dot(rel, e1), r2 = glm::dot(rel, e2), det = g11 * g22 - g12 * g12;
+    b1 = (r1 * g22 - r2 * g12) / det;
+    b2 = (r2 * g11 - r1 * g12) / det;
+    return true;
+}
+
+glm::dvec2 triangle_uv(const SceneParams& scene, int i, double b1, double b2)
+{
+    glm::dvec2 uv0(scene.uvs[3 * i]), uv1(scene.uvs[3 * i + 1]), uv2(scene.uvs[3 * i + 2]);
+    return (1.0 - b1 - b2) * uv0 + b1 * uv1 + b2 * uv2;
+}
+
 } // namespace
+
+std::string to_string(Gradients gradients)
+{
+    switch (gradients) {
+    case Gradients::fine: return "fine";
+    case Gradients::coarse: return "coarse";
+    case Gradients::ray: return "ray";
+    }
+    return "?";
+}
+
+Gradients parse_gradients(const std::string& name)
+{
+    for (Gradients g : {Gradients::fine, Gradients::coarse, Gradients::ray})
+        if (to_string(g) == name)
+            return g;
+    throw Error("unknown derivatives '" + name + "' (expected one of: fine, coarse, ray)");
+}
+
+std::string to_string(Stage stage) { return stage == Stage::compute ? "compute" : "fragment"; }
+
+Stage parse_stage(const std::string& name)
+{
+    if (name == "fragment")
+        return Stage::fragment;
+    if (name == "compute")
+        return Stage::compute;
+    throw Error("unknown stage '" + name + "' (expected one of: fragment, compute)");
+}
+
+RenderOptions make_render_options(SceneKind kind, Stage stage, Gradients gradients)
+{
+    bool mesh = kind == SceneKind::mesh;
+    if (mesh && stage == Stage::compute)
+        throw Error("the mesh scene is rasterized by the graphics pipeline; for the compute stage use --scene triangles "
+                    "(the same triangles, ray-cast)");
+    if (mesh && gradients == Gradients::ray)
+        throw Error("ray differentials need a ray-cast scene; the mesh scene is rasterized (use fine or coarse)");
+    return {stage, gradients, mesh};
+}
 
 const std::vector<SceneKind>& all_scenes()
 {
-    static const std::vector<SceneKind> kinds = {SceneKind::plane, SceneKind::tunnel, SceneKind::zoom,
-                                                 SceneKind::minify, SceneKind::slanted};
+    static const std::vector<SceneKind> kinds = {SceneKind::plane,   SceneKind::tunnel,    SceneKind::zoom,
+                                                 SceneKind::minify,  SceneKind::slanted,   SceneKind::triangles,
+                                                 SceneKind::mesh};
     return kinds;
 }
 
@@ -55,6 +160,8 @@ std::string to_string(SceneKind kind)
     case SceneKind::zoom: return "zoom";
     case SceneKind::minify: return "minify";
     case SceneKind::slanted: return "slanted";
+    case SceneKind::triangles: return "triangles";
+    case SceneKind::mesh: return "mesh";
     }
     return "?";
 }
@@ -114,19 +221,51 @@ SceneParams make_scene(SceneKind kind, int width, int height, int texture_width)
         scene.extent.y = 1.5f;
         break;
     }
+    case SceneKind::triangles:
+    case SceneKind::mesh: { // the same triangles: ray-cast (triangles) or rasterized (mesh)
+        set_camera(scene, {{0.0, 0.3, 0.0}, {0.1, -0.15, 1.0}, {0.0, 1.0, 0.0}, 55.0}, width, height);
+        std::vector<std::array<Corner, 3>> mesh = mesh_triangles();
+        scene.kind_size.x = TF_SCENE_TRIANGLES;
+        scene.kind_size.w = int(mesh.size());
+        scene.extent = glm::vec4(0.0f);
+        for (size_t t = 0; t < mesh.size(); ++t)
+            for (size_t k = 0; k < 3; ++k) {
+                scene.positions[3 * t + k] = glm::vec4(glm::vec3(mesh[t][k].position), 1.0f);
+                scene.uvs[3 * t + k] = glm::vec4(glm::vec2(mesh[t][k].uv), 0.0f, 0.0f);
+            }
+        break;
+    }
     }
     return scene;
 }
 
+glm::dvec2 reference_triangle_plane_uv(const SceneParams& scene, int triangle, double px, double py)
+{
+    double b1 = 0, b2 = 0, t = 0;
+    if (!triangle_plane_hit(scene, triangle, d3(scene.origin), camera_ray(scene, px, py), b1, b2, t))
+        return glm::dvec2(0.0);
+    return triangle_uv(scene, triangle, b1, b2);
+}
+
 PixelHit reference_hit(const SceneParams& scene, double px, double py)
 {
-    auto d3 = [](glm::vec4 v) { return glm::dvec3(v); };
-    double ndc_x = 2.0 * px / scene.kind_size.y - 1.0;
-    double ndc_y = 1.0 - 2.0 * py / scene.kind_size.z;
     glm::dvec3 o = d3(scene.origin);
-    glm::dvec3 d = d3(scene.forward) + ndc_x * d3(scene.right) + ndc_y * d3(scene.up);
+    glm::dvec3 d = camera_ray(scene, px, py);
     glm::dvec2 offset(scene.extent.z, scene.extent.w);
     PixelHit result;
+    if (scene.kind_size.x == TF_SCENE_TRIANGLES) { // nearest hit inside a triangle; uv 0 on a miss
+        double best = INFINITY;
+        for (int i = 0; i < scene.kind_size.w; ++i) {
+            double b1, b2, t;
+            const double slack = TF_EDGE_SLACK; // as the GPU: no holes along shared edges
+            if (triangle_plane_hit(scene, i, o, d, b1, b2, t) && t > 0.0 && t < best && b1 >= -slack &&
+                b2 >= -slack && b1 + b2 <= 1.0 + slack) {
+                best = t;
+                result = {true, triangle_uv(scene, i, b1, b2), i};
+            }
+        }
+        return result;
+    }
     if (scene.kind_size.x == TF_SCENE_CYLINDER) {
         double radius = scene.p0.x, length = scene.p0.y;
         double a = d.x * d.x + d.y * d.y, b = 2.0 * (o.x * d.x + o.y * d.y);
@@ -149,7 +288,7 @@ PixelHit reference_hit(const SceneParams& scene, double px, double py)
     return result;
 }
 
-std::vector<PixelLookup> reference_quad_lookups(const SceneParams& scene)
+std::vector<PixelLookup> reference_lookups(const SceneParams& scene, Gradients gradients, bool rasterized)
 {
     int width = scene.kind_size.y, height = scene.kind_size.z;
     if (width % 2 != 0 || height % 2 != 0)
@@ -159,15 +298,37 @@ std::vector<PixelLookup> reference_quad_lookups(const SceneParams& scene)
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
             hits[size_t(y) * width + x] = reference_hit(scene, x + 0.5, y + 0.5);
-    auto at = [&](int x, int y) { return hits[size_t(y) * width + x].uv; };
+    bool triangles = scene.kind_size.x == TF_SCENE_TRIANGLES;
+    // uv of pixel (x, y) as seen from pixel `self`: a rasterizer's helper invocations stay on self's triangle.
+    auto uv_at = [&](int x, int y, const PixelHit& self) {
+        if (rasterized && self.hit && triangles)
+            return reference_triangle_plane_uv(scene, self.triangle, x + 0.5, y + 0.5);
+        return hits[size_t(y) * width + x].uv;
+    };
+    // Ray differentials' ideal: d(uv)/d(pixel) on the hit surface (its plane, for triangles).
+    auto surface_uv = [&](double px, double py, const PixelHit& self) {
+        if (triangles)
+            return self.hit ? reference_triangle_plane_uv(scene, self.triangle, px, py) : glm::dvec2(0.0);
+        return reference_hit(scene, px, py).uv;
+    };
     std::vector<PixelLookup> out(hits.size());
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
-            glm::dvec2 uv = at(x, y);
-            glm::dvec2 dx = at(x | 1, y) - at(x & ~1, y);
-            glm::dvec2 dy = at(x, y | 1) - at(x, y & ~1);
+            const PixelHit& self = hits[size_t(y) * width + x];
+            glm::dvec2 uv = self.uv, dx, dy;
+            if (gradients == Gradients::ray) {
+                const double h = 1.0 / 1024; // central differences: error ~h^2, far below float32's
+                dx = (surface_uv(x + 0.5 + h, y + 0.5, self) - surface_uv(x + 0.5 - h, y + 0.5, self)) / (2 * h);
+                dy = (surface_uv(x + 0.5, y + 0.5 + h, self) - surface_uv(x + 0.5, y + 0.5 - h, self)) / (2 * h);
+            } else {
+                int x0 = x & ~1, y0 = y & ~1;
+                int ax = gradients == Gradients::coarse ? y0 : y; // the row dx is taken along
+                int ay = gradients == Gradients::coarse ? x0 : x; // the column dy is taken down
+                dx = uv_at(x0 | 1, ax, self) - uv_at(x0, ax, self);
+                dy = uv_at(ay, y0 | 1, self) - uv_at(ay, y0, self);
+            }
             PixelLookup& p = out[size_t(y) * width + x];
-            p.hit = hits[size_t(y) * width + x].hit;
+            p.hit = self.hit;
             p.lookup = {uv.x, uv.y, dx.x, dx.y, dy.x, dy.y};
         }
     return out;

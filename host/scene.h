@@ -1,7 +1,8 @@
 #pragma once
 // The test scenes: one description feeds the GPU (uniform buffer, shaders/harness/scene.glsl) and the
-// CPU reference (scene.cpp, in double). Each pixel is ray-cast at its centre; uv derivatives are fine
-// 2x2 quad differences, as dFdxFine/dFdyFine compute them.
+// CPU reference (scene.cpp, in double). Each pixel is ray-cast at its centre (the mesh scene is
+// rasterized on the GPU, ray-cast here); uv derivatives are fine or coarse 2x2 quad differences, as
+// dFdxFine/dFdxCoarse compute them, or ray differentials.
 #include "reference.h"
 #include <glm/glm.hpp>
 #include <string>
@@ -9,7 +10,28 @@
 
 namespace tf {
 
-enum class SceneKind { plane, tunnel, zoom, minify, slanted };
+enum class SceneKind { plane, tunnel, zoom, minify, slanted, triangles, mesh };
+
+// How uv gradients are made: fine or coarse 2x2 quad differences, or ray differentials (ray-cast scenes).
+enum class Gradients { fine, coarse, ray };
+Gradients parse_gradients(const std::string& name); // "fine", "coarse", "ray"
+std::string to_string(Gradients gradients);
+
+// Which pipeline renders: a fragment shader (or, for mesh, the raster pipeline) or a compute shader
+// whose invocations form 2x2 quads through subgroup quad operations.
+enum class Stage { fragment, compute };
+Stage parse_stage(const std::string& name);
+std::string to_string(Stage stage);
+
+struct RenderOptions {
+    Stage stage = Stage::fragment;
+    Gradients gradients = Gradients::fine;
+    bool rasterize = false; // the mesh scene: triangles through the raster pipeline
+};
+
+// The render options a scene allows: mesh is rasterized (fragment stage, quad derivatives only);
+// ray differentials need a ray-cast scene. Throws tf::Error naming the conflict.
+RenderOptions make_render_options(SceneKind kind, Stage stage, Gradients gradients);
 
 SceneKind parse_scene(const std::string& name); // throws tf::Error listing the valid names
 std::string to_string(SceneKind kind);
@@ -26,7 +48,9 @@ struct SceneParams {
     glm::vec4 axis_v;
     glm::vec4 extent;     // xy half extents in uv (hit test), zw uv offset
     glm::vec4 background;
-    glm::ivec4 kind_size; // TF_SCENE_*, width, height
+    glm::ivec4 kind_size; // TF_SCENE_*, width, height, triangle count
+    glm::vec4 positions[3 * 16]; // triangles: xyz of each corner (TF_MAX_TRIANGLES)
+    glm::vec4 uvs[3 * 16];       // triangles: uv of each corner in xy
 };
 
 // zoom and minify scale the quad so that one texel of a texture_width-wide texture spans 8 pixels
@@ -35,17 +59,25 @@ SceneParams make_scene(SceneKind kind, int width, int height, int texture_width)
 
 struct PixelHit {
     bool hit = false;
-    glm::dvec2 uv{0.0}; // defined on a miss too: the unbounded surface
+    glm::dvec2 uv{0.0}; // defined on a miss too: the unbounded surface (triangles: 0 on a miss)
+    int triangle = -1;  // triangles: which one was hit
 };
 
 PixelHit reference_hit(const SceneParams& scene, double px, double py);
 
-// The lookups of a whole image, row-major: uv at the pixel centre and fine quad derivatives
-// (dx = uv(x|1, y) - uv(x&~1, y), dy = uv(x, y|1) - uv(x, y&~1)). Width and height must be even.
+// uv where the ray through (px, py) meets the plane of triangle `triangle`, extrapolated beyond its edges:
+// what a rasterizer's helper invocations compute next to a triangle's edge.
+glm::dvec2 reference_triangle_plane_uv(const SceneParams& scene, int triangle, double px, double py);
+
+// The lookups of a whole image, row-major: uv at the pixel centre and its gradients.
+// fine: dx = uv(x|1, y) - uv(x&~1, y), dy = uv(x, y|1) - uv(x, y&~1); coarse: the quad's top-left pair
+// for all four pixels; ray: the exact derivative of uv with respect to the pixel position (central
+// differences in double), which ray differentials approximate to first order. rasterized (mesh): a
+// pixel's quad neighbours take uv on the plane of the pixel's own triangle. Sides must be even.
 struct PixelLookup {
     bool hit = false;
     Lookup lookup;
 };
-std::vector<PixelLookup> reference_quad_lookups(const SceneParams& scene);
+std::vector<PixelLookup> reference_lookups(const SceneParams& scene, Gradients gradients, bool rasterized);
 
 } // namespace tf

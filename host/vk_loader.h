@@ -76,6 +76,7 @@
     X(vkCmdPushConstants)               \
     X(vkCmdDispatch)                    \
     X(vkCmdDraw)                        \
+    X(vkCmdBindVertexBuffers)           \
     X(vkCmdBeginRendering)              \
     X(vkCmdEndRendering)                \
     X(vkCmdSetViewport)                 \

@@ -127,11 +127,11 @@ DescriptorSet allocate_descriptor_set(const VulkanContext& context, VkDescriptor
     return d;
 }
 
-PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, float sat_scale)
+PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, float sat_scale, int gradients)
 {
     return {int32_t(options.filter), int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max,
             count, options.band, options.probes, int32_t(options.aniso_shape), int32_t(options.taps),
-            options.alpha, options.max_aniso, options.boxes, sat_scale};
+            options.alpha, options.max_aniso, options.boxes, sat_scale, gradients};
 }
 
 } // namespace tf

@@ -54,7 +54,8 @@ struct PushConstants {
     float max_aniso;
     int32_t boxes;
     float sat_scale;
+    int32_t gradients; // TF_GRADIENTS_*
 };
-PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, float sat_scale);
+PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, float sat_scale, int gradients);
 
 } // namespace tf

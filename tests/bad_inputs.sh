@@ -210,6 +210,13 @@ bad_flag_values() {
     expect_error "--alpha inf" --alpha out.png -- "${RENDER[@]}" --alpha inf -o out.png
     expect_error "--max-aniso 0.5" --max-aniso out.png -- "${RENDER[@]}" --max-aniso 0.5 -o out.png
     expect_error "--boxes 17" --boxes out.png -- "${RENDER[@]}" --boxes 17 -o out.png
+    # Quad derivatives: bad values, and combinations the mesh scene cannot do.
+    expect_error "--stage bogus" --stage out.png -- "${RENDER[@]}" --stage bogus -o out.png
+    expect_error "--derivatives bogus" --derivatives out.png -- "${RENDER[@]}" --derivatives bogus -o out.png
+    expect_error "mesh in the compute stage" "mesh scene is rasterized" out.png -- \
+        "$TEXFILTER" render --scene mesh --texture checker --filter nearest "${REF[@]}" --stage compute -o out.png
+    expect_error "mesh with ray differentials" "ray differentials need a ray-cast scene" out.png -- \
+        "$TEXFILTER" render --scene mesh --texture checker --filter nearest "${REF[@]}" --derivatives ray -o out.png
 }
 
 bad_outputs() {

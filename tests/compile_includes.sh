@@ -35,6 +35,7 @@ call_for() {
     nearest) echo "tf_nearest_mip(tex, uv, dx, dy, s) + tf_nearest(tex, uv, s)" ;;
     bilinear) echo "tf_bilinear_mip(tex, uv, dx, dy, s) + tf_bilinear(tex, uv, s)" ;;
     trilinear) echo "tf_trilinear(tex, uv, dx, dy, s)" ;;
+    derivatives) echo "vec4(tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).dUVdx, dx)" ;;
     brilinear) echo "tf_brilinear(tex, uv, dx, dy, s, 0.25)" ;;
     aniso) echo "tf_aniso(tex, uv, dx, dy, s, 8, TF_ANISO_GPU) + tf_aniso_hw(tex, uv, dx, dy, s, 8, TF_ANISO_FELINE)" ;;
     ewa) echo "tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_ewa_hw(tex, uv, dx, dy, s, 2.0, 16.0)" ;;

@@ -22,13 +22,23 @@
 // Scene kinds: a textured plane or quad (plane, zoom, minify, slanted) and a cylinder (tunnel).
 #define TF_SCENE_PLANE 0
 #define TF_SCENE_CYLINDER 1
+#define TF_SCENE_TRIANGLES 2 // ray-cast triangle list (triangles, and the mesh scene's CPU twin)
+#define TF_MAX_TRIANGLES 16
+#define TF_EDGE_SLACK 1e-5 // triangles: barycentric slack at edges (watertight ray casts; see scene.glsl)
+
+// How the harness gets uv gradients (render): quads of fine or coarse differences, or ray differentials.
+#define TF_GRADIENTS_FINE 0
+#define TF_GRADIENTS_COARSE 1
+#define TF_GRADIENTS_RAY 2
+
+#define TF_RENDER_TILE 8 // compute render: 8x8 pixels a workgroup of 64 invocations, as 2x2 quads
 
 // Descriptor set 0.
 #define TF_BINDING_TEXTURE 0 // combined image sampler: the MIP chain. texelFetch ignores the sampler; hardware
                              // taps and hw-* filters use it (trilinear with the wrap mode, or the hw-* state)
 #define TF_BINDING_SCENE 1   // uniform buffer: tf_SceneParams (render)
 #define TF_BINDING_LOOKUPS 1 // storage buffer: 6 floats a lookup (sample)
-#define TF_BINDING_RESULTS 2 // storage buffer: vec4 a lookup (sample)
+#define TF_BINDING_RESULTS 2 // storage buffer: vec4 a lookup (sample), vec4 a pixel (compute render)
 #define TF_BINDING_STATS 3   // storage buffer: uvec2 a lookup, texel fetches and hardware lookups (sample)
 #define TF_BINDING_SAT_LOW 4  // usampler2D RGBA32UI: summed-area table, low 32 bits per channel
 #define TF_BINDING_SAT_HIGH 5 // usampler2D R32UI: bits 32..39 of the four channels, one byte each

@@ -33,6 +33,7 @@ layout(push_constant) uniform tf_PushConstants {
     float maxAniso;  // ewa
     int boxes;       // sat-assembly
     float satScale;  // sat: value of one quantisation step x 65535 (see sat.glsl)
+    int gradients;   // render: TF_GRADIENTS_FINE / COARSE / RAY
 } pc;
 
 vec4 tf_harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)

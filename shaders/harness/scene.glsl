@@ -15,12 +15,18 @@ struct tf_SceneParams {
     vec4 axisV;      // plane: world vector of one unit of v
     vec4 extent;     // xy: half extents in uv around 0 (hit test), zw: uv offset added after
     vec4 background; // colour of pixels that hit nothing
-    ivec4 kindSize;  // x: TF_SCENE_*, y: width, z: height
+    ivec4 kindSize;  // x: TF_SCENE_*, y: width, z: height, w: triangle count
+    vec4 positions[3 * TF_MAX_TRIANGLES]; // triangles: corner positions (xyz)
+    vec4 uvs[3 * TF_MAX_TRIANGLES];       // triangles: corner uvs (xy)
 };
 
 struct tf_Hit {
     bool hit;
-    vec2 uv; // defined even on a miss (the unbounded surface), so quad derivatives stay defined
+    vec2 uv;     // defined even on a miss (the unbounded surface; triangles: 0), so quad derivatives stay defined
+    float t;     // ray parameter of the hit (direction not normalised)
+    vec3 normal; // surface frame for ray differentials
+    vec3 dPdu;
+    vec3 dPdv;
 };
 
 vec3 tf_camera_ray(tf_SceneParams scene, vec2 pixelCentre)
@@ -38,7 +44,7 @@ tf_Hit tf_hit_plane(tf_SceneParams scene, vec3 o, vec3 d)
     vec2 st = vec2(dot(rel, scene.axisU.xyz) / dot(scene.axisU.xyz, scene.axisU.xyz),
                    dot(rel, scene.axisV.xyz) / dot(scene.axisV.xyz, scene.axisV.xyz));
     bool inside = t > 0.0 && abs(st.x) <= scene.extent.x && abs(st.y) <= scene.extent.y;
-    return tf_Hit(inside, st + scene.extent.zw);
+    return tf_Hit(inside, st + scene.extent.zw, t, n, scene.axisU.xyz, scene.axisV.xyz);
 }
 
 tf_Hit tf_hit_cylinder(tf_SceneParams scene, vec3 o, vec3 d)
@@ -48,7 +54,48 @@ tf_Hit tf_hit_cylinder(tf_SceneParams scene, vec3 o, vec3 d)
     float t = (-b + sqrt(b * b - 4.0 * a * c)) / (2.0 * a); // camera inside: c < 0, one positive root
     vec3 p = o + t * d;
     vec2 uv = vec2(atan(p.y, p.x) * (scene.p0.z / 6.283185307179586) + 0.5 * scene.p0.z, p.z * scene.p0.w);
-    return tf_Hit(t > 0.0 && p.z < len, uv + scene.extent.zw);
+    // u turns p0.z times around the axis, v runs p0.w per unit of z.
+    vec3 dPdu = vec3(-p.y, p.x, 0.0) * (6.283185307179586 / scene.p0.z);
+    return tf_Hit(t > 0.0 && p.z < len, uv + scene.extent.zw, t, vec3(p.xy, 0.0), dPdu, vec3(0.0, 0.0, 1.0 / scene.p0.w));
+}
+
+// Where the ray meets triangle i's plane: barycentrics (b1, b2) and t, unbounded (outside the triangle too).
+vec3 tf_triangle_plane(tf_SceneParams scene, int i, vec3 o, vec3 d)
+{
+    vec3 a = scene.positions[3 * i].xyz;
+    vec3 e1 = scene.positions[3 * i + 1].xyz - a, e2 = scene.positions[3 * i + 2].xyz - a;
+    vec3 n = cross(e1, e2);
+    float t = dot(a - o, n) / dot(d, n);
+    vec3 rel = o + t * d - a;
+    float g11 = dot(e1, e1), g12 = dot(e1, e2), g22 = dot(e2, e2), r1 = dot(rel, e1), r2 = dot(rel, e2);
+    float det = g11 * g22 - g12 * g12;
+    return vec3((r1 * g22 - r2 * g12) / det, (r2 * g11 - r1 * g12) / det, t);
+}
+
+// Triangle i's hit record for barycentrics b (from tf_triangle_plane), with the frame ray differentials need:
+// [dPdu dPdv] maps uv changes to position changes on the triangle.
+tf_Hit tf_triangle_hit(tf_SceneParams scene, int i, vec3 b, bool inside)
+{
+    vec3 a = scene.positions[3 * i].xyz;
+    vec3 e1 = scene.positions[3 * i + 1].xyz - a, e2 = scene.positions[3 * i + 2].xyz - a;
+    vec2 uv0 = scene.uvs[3 * i].xy, d1 = scene.uvs[3 * i + 1].xy - uv0, d2 = scene.uvs[3 * i + 2].xy - uv0;
+    vec2 uv = uv0 + b.x * d1 + b.y * d2;
+    float inverseDet = 1.0 / (d1.x * d2.y - d2.x * d1.y); // e = [dPdu dPdv] [d1 d2]
+    vec3 dPdu = (e1 * d2.y - e2 * d1.y) * inverseDet, dPdv = (e2 * d1.x - e1 * d2.x) * inverseDet;
+    return tf_Hit(inside, uv, b.z, cross(e1, e2), dPdu, dPdv);
+}
+
+tf_Hit tf_hit_triangles(tf_SceneParams scene, vec3 o, vec3 d)
+{
+    tf_Hit best = tf_Hit(false, vec2(0.0), 1.0 / 0.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0));
+    // Edges widened by TF_EDGE_SLACK so that a ray along an edge shared by two triangles hits one of them
+    // (barycentrics round differently in each): no holes. The nearer hit wins where both claim it.
+    for (int i = 0; i < min(scene.kindSize.w, TF_MAX_TRIANGLES); ++i) {
+        vec3 b = tf_triangle_plane(scene, i, o, d);
+        if (b.z > 0.0 && b.z < best.t && b.x >= -TF_EDGE_SLACK && b.y >= -TF_EDGE_SLACK && b.x + b.y <= 1.0 + TF_EDGE_SLACK)
+            best = tf_triangle_hit(scene, i, b, true);
+    }
+    return best;
 }
 
 tf_Hit tf_scene_hit(tf_SceneParams scene, vec2 pixelCentre)
@@ -56,7 +103,13 @@ tf_Hit tf_scene_hit(tf_SceneParams scene, vec2 pixelCentre)
     vec3 d = tf_camera_ray(scene, pixelCentre);
     if (scene.kindSize.x == TF_SCENE_CYLINDER)
         return tf_hit_cylinder(scene, scene.origin.xyz, d);
+    if (scene.kindSize.x == TF_SCENE_TRIANGLES)
+        return tf_hit_triangles(scene, scene.origin.xyz, d);
     return tf_hit_plane(scene, scene.origin.xyz, d);
 }
+
+// Camera ray direction change one pixel right and one pixel down (the ray differentials' dD/dx, dD/dy).
+vec3 tf_camera_ray_dx(tf_SceneParams scene) { return scene.right.xyz * (2.0 / float(scene.kindSize.y)); }
+vec3 tf_camera_ray_dy(tf_SceneParams scene) { return scene.up.xyz * (-2.0 / float(scene.kindSize.z)); }
 
 #endif

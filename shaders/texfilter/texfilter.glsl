@@ -8,6 +8,7 @@
 #define TF_TEXFILTER_GLSL
 
 #include "common.glsl"
+#include "derivatives.glsl"
 #include "lod.glsl"
 #include "nearest.glsl"
 #include "bilinear.glsl"

@@ -1,0 +1,26 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Harness: the triangles scene rasterized from a vertex buffer, with the ray-cast camera's projection.
+#include "config.h"
+#include "scene.glsl"
+
+layout(set = 0, binding = TF_BINDING_SCENE, std140) uniform tf_SceneBlock { tf_SceneParams scene; };
+
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec2 uv;
+layout(location = 0) out vec2 outUV; // smooth: perspective-correct interpolation
+
+const float TF_NEAR = 0.05, TF_FAR = 1000.0;
+
+void main()
+{
+    // The ray through ndc (x, y) is forward + x right + y up (right, up scaled by the half-fov tangents),
+    // so a point at depth z along forward projects to x = dot(c, right) / (|right|² z), likewise y.
+    vec3 c = position - scene.origin.xyz;
+    float z = dot(c, scene.forward.xyz);
+    vec3 right = scene.right.xyz, up = scene.up.xyz;
+    // Vulkan's framebuffer y grows downward; the scene's ndc y grows upward.
+    gl_Position = vec4(dot(c, right) / dot(right, right), -dot(c, up) / dot(up, up),
+                       (z - TF_NEAR) * TF_FAR / (TF_FAR - TF_NEAR), z);
+    outUV = uv;
+}

@@ -1,0 +1,29 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_quad : require
+// Harness: the fragment render in a compute shader. Invocations form 2x2 quads through subgroup quad
+// operations (texfilter/derivatives.glsl), so the quad derivatives are the fragment stage's.
+#define TF_COMPUTE_QUADS
+#include "config.h"
+#include "filter_select.glsl"
+#include "gradients.glsl"
+
+layout(local_size_x = TF_RENDER_TILE * TF_RENDER_TILE) in;
+
+layout(set = 0, binding = TF_BINDING_SCENE, std140) uniform tf_SceneBlock { tf_SceneParams scene; };
+layout(set = 0, binding = TF_BINDING_RESULTS, std430) writeonly buffer tf_Pixels { vec4 pixels[]; };
+
+void main()
+{
+    ivec2 pixel = tf_quad_pixel(ivec2(gl_WorkGroupID.xy) * TF_RENDER_TILE, TF_RENDER_TILE);
+    vec2 centre = vec2(pixel) + 0.5;
+    tf_Hit h = tf_scene_hit(scene, centre);
+    // All lanes (those past the image's edge too) take part in the quad operations.
+    tf_Gradients quad = tf_compute_quad_gradients(h.uv, pc.gradients == TF_GRADIENTS_COARSE ? TF_DERIVATIVES_COARSE
+                                                                                            : TF_DERIVATIVES_FINE);
+    tf_Gradients g = pc.gradients == TF_GRADIENTS_RAY ? tf_harness_ray_gradients(scene, centre, h) : quad;
+    vec4 c = tf_harness_filter(h.uv, g.dUVdx, g.dUVdy);
+    ivec2 size = scene.kindSize.yz;
+    if (all(lessThan(pixel, size)))
+        pixels[pixel.y * size.x + pixel.x] = h.hit ? c : scene.background;
+}
