@@ -77,22 +77,20 @@ glm::dvec3 camera_ray(const SceneParams& scene, double px, double py)
     return d3(scene.forward) + ndc_x * d3(scene.right) + ndc_y * d3(scene.up);
 }
 
-// Barycentric coordinates (b1, b2) of where the ray meets the triangle's plane, and the distance t.
+// Barycentric coordinates (b1, b2) of where the ray meets the triangle's plane, and the distance t, by
+// Moller-Trumbore (Cramer's rule on [-d e1 e2]); deliberately not the shader's Gram-matrix form.
 bool triangle_plane_hit(const SceneParams& scene, int i, glm::dvec3 o, glm::dvec3 d, double& b1, double& b2, double& t)
 {
     glm::dvec3 a = d3(scene.positions[3 * i]), e1 = d3(scene.positions[3 * i + 1]) - a,
                e2 = d3(scene.positions[3 * i + 2]) - a;
-    glm::dvec3 n = glm::cross(e1, e2);
-    double dn = glm::dot(d, n);
-    if (dn == 0.0)
-        return false;
-    t = glm::dot(a - o, n) / dn;
-    glm::dvec3 rel = o + t * d - a;
-    // Solve rel = b1 e1 + b2 e2 in the plane (Cramer's rule on the Gram matrix).
-    double g11 = glm::dot(e1, e1), g12 = glm::dot(e1, e2), g22 = glm::dot(e2, e2);
-    double r1 = glm::dot(rel, e1), r2 = glm::dot(rel, e2), det = g11 * g22 - g12 * g12;
-    b1 = (r1 * g22 - r2 * g12) / det;
-    b2 = (r2 * g11 - r1 * g12) / det;
+    glm::dvec3 p = glm::cross(d, e2);
+    double det = glm::dot(e1, p);
+    if (det == 0.0)
+        return false; // the ray runs in the triangle's plane
+    glm::dvec3 s = o - a, q = glm::cross(s, e1);
+    b1 = glm::dot(s, p) / det;
+    b2 = glm::dot(d, q) / det;
+    t = glm::dot(e2, q) / det;
     return true;
 }
 
