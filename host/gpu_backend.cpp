@@ -181,6 +181,8 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
     pipeline_info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipeline_info.stage.module = module;
     pipeline_info.stage.pName = "main";
+    FilterSpecialization specialization;
+    pipeline_info.stage.pSpecializationInfo = filter_specialization(options.filter, specialization);
     pipeline_info.layout = pipeline_layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     TF_VK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &pipeline));

@@ -148,6 +148,8 @@ Image render_compute(const VulkanContext& context, const GpuTexture& texture, co
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     info.stage.module = module;
     info.stage.pName = "main";
+    FilterSpecialization specialization;
+    info.stage.pSpecializationInfo = filter_specialization(options.filter, specialization);
     info.layout = pass.pipeline_layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     TF_VK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
@@ -221,6 +223,8 @@ Image render_graphics(const VulkanContext& context, const GpuTexture& texture, c
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stages[1].module = frag;
     stages[1].pName = "main";
+    FilterSpecialization specialization;
+    stages[1].pSpecializationInfo = filter_specialization(options.filter, specialization);
     VkVertexInputBindingDescription binding{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX};
     VkVertexInputAttributeDescription attributes[2] = {
         {0, 0, VK_FORMAT_R32G32B32_SFLOAT, uint32_t(offsetof(MeshVertex, position))},

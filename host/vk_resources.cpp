@@ -1,4 +1,5 @@
 #include "vk_resources.h"
+#include "../shaders/harness/config.h"
 #include "error.h"
 #include <algorithm>
 
@@ -127,9 +128,17 @@ DescriptorSet allocate_descriptor_set(const VulkanContext& context, VkDescriptor
     return d;
 }
 
+const VkSpecializationInfo* filter_specialization(Filter filter, FilterSpecialization& s)
+{
+    s.filter_id = int32_t(filter);
+    s.entry = {TF_SPEC_FILTER, 0, sizeof(int32_t)};
+    s.info = {1, &s.entry, sizeof(int32_t), &s.filter_id};
+    return &s.info;
+}
+
 PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, float sat_scale, int gradients)
 {
-    return {int32_t(options.filter), int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max,
+    return {int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max,
             count, options.band, options.probes, int32_t(options.aniso_shape), int32_t(options.taps),
             options.alpha, options.max_aniso, options.boxes, sat_scale, gradients};
 }

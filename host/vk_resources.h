@@ -40,7 +40,6 @@ DescriptorSet allocate_descriptor_set(const VulkanContext& context, VkDescriptor
 
 // Mirrors tf_PushConstants in shaders/harness/filter_select.glsl.
 struct PushConstants {
-    int32_t filter_id;
     int32_t wrap_mode;
     float lod_bias;
     float lod_min;
@@ -56,6 +55,15 @@ struct PushConstants {
     float sat_scale;
     int32_t gradients; // TF_GRADIENTS_*
 };
+// The filter, as the harness shaders' specialization constant TF_SPEC_FILTER (pipelines are per filter).
+struct FilterSpecialization {
+    int32_t filter_id;
+    VkSpecializationMapEntry entry;
+    VkSpecializationInfo info;
+};
+// Fills `s` and returns &s.info, which points into s: keep s alive until the pipeline is created.
+const VkSpecializationInfo* filter_specialization(Filter filter, FilterSpecialization& s);
+
 PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, float sat_scale, int gradients);
 
 } // namespace tf

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Quick start, part 1: set up, build, and render the demo scenes on lavapipe into demo/.
-# Each scene is rendered unfiltered (nearest, level 0: the aliasing the seed slides show) and with
-# the manual trilinear include, plus the hardware trilinear sampler for comparison.
+# Each scene is rendered unfiltered (nearest, level 0: the aliasing the seed slides show), with the
+# manual trilinear include and the hardware trilinear sampler for comparison; then the filter suite
+# (brilinear, aniso, ewa, sat) on the plane and the rasterized mesh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./tools/build.sh
@@ -11,7 +12,7 @@ render() { # scene texture filter [extra flags]
   local scene=$1 texture=$2 filter=$3
   shift 3
   "$texfilter" render --scene "$scene" --texture "$texture" --filter "$filter" --size 512x512 "$@" \
-    -o "demo/$scene-$texture-$filter.png"
+    -o "demo/$scene-$texture-$filter${*:+$(printf '%s' "$*" | tr -d ' -' | sed 's/^/-/')}.png"
 }
 for filter in nearest trilinear hw-trilinear; do
   render plane checker "$filter"
@@ -22,4 +23,11 @@ for filter in nearest trilinear hw-trilinear; do
 done
 render tunnel mipcolors nearest-mip
 render tunnel mipcolors bilinear-mip
+for filter in brilinear aniso ewa sat sat-assembly hw-aniso; do
+  render plane checker "$filter"
+done
+render triangles checker trilinear
+render triangles checker trilinear --derivatives ray
+render mesh zoneplate aniso
+render mesh mipcolors trilinear
 echo "demo images are in $(pwd)/demo/"

@@ -45,4 +45,6 @@
 
 #define TF_SAMPLE_LOCAL_SIZE 64
 
+#define TF_SPEC_FILTER 0 // specialization constant id of the filter (TF_FILTER_*)
+
 #endif

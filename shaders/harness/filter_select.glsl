@@ -17,9 +17,13 @@ layout(set = 0, binding = TF_BINDING_TEXTURE) uniform sampler2D u_texture;
 layout(set = 0, binding = TF_BINDING_SAT_LOW) uniform usampler2D u_satLow;
 layout(set = 0, binding = TF_BINDING_SAT_HIGH) uniform usampler2D u_satHigh;
 
+// The filter is a specialization constant, so each pipeline holds one filter's code: with a run-time
+// switch every family's texture calls stayed in the shader, and lavapipe generated its anisotropic
+// sampling code for all of them (hw-aniso renders ran ~30x slower).
+layout(constant_id = TF_SPEC_FILTER) const int TF_FILTER_ID = 0;
+
 // Mirrors tf::PushConstants (host/vk_resources.h).
 layout(push_constant) uniform tf_PushConstants {
-    int filterId;
     int wrapMode;
     float lodBias;
     float lodMin;
@@ -40,7 +44,7 @@ vec4 tf_harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
 {
     tf_Sampler s = tf_Sampler(pc.wrapMode, pc.lodBias, pc.lodMin, pc.lodMax);
     bool hardwareTaps = pc.taps == TF_TAPS_HARDWARE;
-    switch (pc.filterId) {
+    switch (TF_FILTER_ID) {
     case TF_FILTER_NEAREST: return tf_nearest(u_texture, uv, s);
     case TF_FILTER_BILINEAR: return tf_bilinear(u_texture, uv, s);
     case TF_FILTER_TRILINEAR: return tf_trilinear(u_texture, uv, dUVdx, dUVdy, s);

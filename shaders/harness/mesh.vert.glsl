@@ -1,10 +1,9 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 // Harness: the triangles scene rasterized from a vertex buffer, with the ray-cast camera's projection.
 #include "config.h"
 #include "scene.glsl"
-
-layout(set = 0, binding = TF_BINDING_SCENE, std140) uniform tf_SceneBlock { tf_SceneParams scene; };
 
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec2 uv;

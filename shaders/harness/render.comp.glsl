@@ -1,5 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 #extension GL_KHR_shader_subgroup_quad : require
 // Harness: the fragment render in a compute shader. Invocations form 2x2 quads through subgroup quad
 // operations (texfilter/derivatives.glsl), so the quad derivatives are the fragment stage's.
@@ -10,7 +11,6 @@
 
 layout(local_size_x = TF_RENDER_TILE * TF_RENDER_TILE) in;
 
-layout(set = 0, binding = TF_BINDING_SCENE, std140) uniform tf_SceneBlock { tf_SceneParams scene; };
 layout(set = 0, binding = TF_BINDING_RESULTS, std430) writeonly buffer tf_Pixels { vec4 pixels[]; };
 
 void main()
@@ -22,8 +22,7 @@ void main()
     tf_Gradients quad = tf_compute_quad_gradients(h.uv, pc.gradients == TF_GRADIENTS_COARSE ? TF_DERIVATIVES_COARSE
                                                                                             : TF_DERIVATIVES_FINE);
     tf_Gradients g = pc.gradients == TF_GRADIENTS_RAY ? tf_harness_ray_gradients(scene, centre, h) : quad;
-    vec4 c = tf_harness_filter(h.uv, g.dUVdx, g.dUVdy);
     ivec2 size = scene.kindSize.yz;
-    if (all(lessThan(pixel, size)))
-        pixels[pixel.y * size.x + pixel.x] = h.hit ? c : scene.background;
+    if (all(lessThan(pixel, size))) // filter hits only (see render.frag.glsl)
+        pixels[pixel.y * size.x + pixel.x] = h.hit ? tf_harness_filter(h.uv, g.dUVdx, g.dUVdy) : scene.background;
 }
