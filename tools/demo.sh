@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./tools/build.sh
-mkdir -p demo
+rm -rf demo && mkdir -p demo # no images of an earlier run left beside these
 texfilter=./build/texfilter
 render() { # scene texture filter [extra flags]
   local scene=$1 texture=$2 filter=$3
