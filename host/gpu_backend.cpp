@@ -174,19 +174,8 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
     cleanup.add([=] { vkDestroyDescriptorSetLayout(device, set_layout, nullptr); });
     VkPipelineLayout pipeline_layout = create_pipeline_layout(context, set_layout, VK_SHADER_STAGE_COMPUTE_BIT);
     cleanup.add([=] { vkDestroyPipelineLayout(device, pipeline_layout, nullptr); });
-    VkShaderModule module = create_shader_module(context, tf_spirv_sample_comp, sizeof(tf_spirv_sample_comp));
-    cleanup.add([=] { vkDestroyShaderModule(device, module, nullptr); });
-    VkComputePipelineCreateInfo pipeline_info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    pipeline_info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    pipeline_info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    pipeline_info.stage.module = module;
-    pipeline_info.stage.pName = "main";
-    FilterSpecialization specialization;
-    pipeline_info.stage.pSpecializationInfo = filter_specialization(options.filter, specialization);
-    pipeline_info.layout = pipeline_layout;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    TF_VK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &pipeline));
-    cleanup.add([=] { vkDestroyPipeline(device, pipeline, nullptr); });
+    VkPipeline pipeline = create_compute_pipeline(context, tf_spirv_sample_comp, sizeof(tf_spirv_sample_comp),
+                                                  pipeline_layout, options.filter, cleanup);
 
     DescriptorSet descriptors = allocate_descriptor_set(context, set_layout);
     cleanup.add([=] { vkDestroyDescriptorPool(device, descriptors.pool, nullptr); });

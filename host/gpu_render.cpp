@@ -136,24 +136,12 @@ Image render_compute(const VulkanContext& context, const GpuTexture& texture, co
     if (context.info.subgroup_size % 4 != 0 || (TF_RENDER_TILE * TF_RENDER_TILE) % context.info.subgroup_size != 0)
         throw Error("the compute render lays 2x2 quads over subgroups of " +
                     std::to_string(context.info.subgroup_size) + " invocations, which it cannot do");
-    VkDevice device = context.device;
     Cleanup cleanup;
     PassResources pass;
     create_pass_resources(context, texture, scene, options, VK_SHADER_STAGE_COMPUTE_BIT, VK_SHADER_STAGE_COMPUTE_BIT,
                           true, pass, cleanup);
-    VkShaderModule module = create_shader_module(context, tf_spirv_render_comp, sizeof(tf_spirv_render_comp));
-    cleanup.add([=] { vkDestroyShaderModule(device, module, nullptr); });
-    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    info.stage.module = module;
-    info.stage.pName = "main";
-    FilterSpecialization specialization;
-    info.stage.pSpecializationInfo = filter_specialization(options.filter, specialization);
-    info.layout = pass.pipeline_layout;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    TF_VK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-    cleanup.add([=] { vkDestroyPipeline(device, pipeline, nullptr); });
+    VkPipeline pipeline = create_compute_pipeline(context, tf_spirv_render_comp, sizeof(tf_spirv_render_comp),
+                                                  pass.pipeline_layout, options.filter, cleanup);
 
     PushConstants push = make_push_constants(options, 0, texture.sat_scale, gradients_id(render.gradients));
     uint32_t width = uint32_t(scene.kind_size.y), height = uint32_t(scene.kind_size.z);

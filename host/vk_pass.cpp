@@ -85,6 +85,26 @@ VkWriteDescriptorSet write_buffer(VkDescriptorSet set, uint32_t binding, VkDescr
     return w;
 }
 
+VkPipeline create_compute_pipeline(const VulkanContext& context, const uint32_t* code, size_t size_bytes,
+                                   VkPipelineLayout layout, Filter filter, Cleanup& cleanup)
+{
+    VkDevice device = context.device;
+    VkShaderModule module = create_shader_module(context, code, size_bytes);
+    cleanup.add([=] { vkDestroyShaderModule(device, module, nullptr); });
+    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module;
+    info.stage.pName = "main";
+    FilterSpecialization specialization;
+    info.stage.pSpecializationInfo = filter_specialization(filter, specialization);
+    info.layout = layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    TF_VK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    cleanup.add([=] { vkDestroyPipeline(device, pipeline, nullptr); });
+    return pipeline;
+}
+
 void write_textures(std::vector<VkWriteDescriptorSet>& writes, VkDescriptorSet set, const PassSamplers& samplers)
 {
     writes.push_back(write_texture(set, TF_BINDING_TEXTURE, &samplers.infos[0]));

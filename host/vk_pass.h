@@ -43,4 +43,8 @@ void write_textures(std::vector<VkWriteDescriptorSet>& writes, VkDescriptorSet s
 
 void destroy_image(const VulkanContext& context, GpuImage& image);
 
+// A compute pipeline from embedded SPIR-V, specialised to `filter`; destroyed (with its module) by cleanup.
+VkPipeline create_compute_pipeline(const VulkanContext& context, const uint32_t* code, size_t size_bytes,
+                                   VkPipelineLayout layout, Filter filter, Cleanup& cleanup);
+
 } // namespace tf
