@@ -242,4 +242,16 @@ SampleResult run_sample(const std::string& texfilter, const fs::path& work, cons
     return result;
 }
 
+void texel_contrast(const Image& level, double u, double v, Wrap wrap, double& across, double& down)
+{
+    double x = u * level.width - 0.5, y = v * level.height - 0.5;
+    long long i0 = (long long)std::floor(x), j0 = (long long)std::floor(y);
+    glm::dvec4 t[2][2];
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+            t[j][i] = glm::dvec4(level.at(wrap_texel(i0 + i, level.width, wrap), wrap_texel(j0 + j, level.height, wrap)));
+    across = std::max(max_channel_diff(t[0][0], t[0][1]), max_channel_diff(t[1][0], t[1][1]));
+    down = std::max(max_channel_diff(t[0][0], t[1][0]), max_channel_diff(t[0][1], t[1][1]));
+}
+
 } // namespace tf::test

@@ -30,6 +30,10 @@ bool check_throws(bool threw, const std::string& message, const std::string& par
 bool near(double a, double b, double eps);
 bool near(const glm::dvec4& a, const glm::dvec4& b, double eps);
 double max_channel_diff(const glm::dvec4& a, const glm::dvec4& b);
+
+// Largest channel difference between the 2x2 texels a bilinear lookup at uv reads on `level`, across (x)
+// and down (y): what a rounded weight can move the result by, per unit of weight.
+void texel_contrast(const Image& level, double u, double v, Wrap wrap, double& across, double& down);
 std::string show(double x); // every digit (%.17g)
 std::string show(const glm::dvec4& v);
 

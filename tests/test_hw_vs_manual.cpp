@@ -35,14 +35,8 @@ std::vector<glm::dvec4> sample_colors(const std::string& texture, const std::str
 // How far 8-bit weights can move a bilinear lookup: one weight step times the texel differences.
 double bilinear_tolerance(const Image& level, double u, double v, Wrap wrap)
 {
-    double x = u * level.width - 0.5, y = v * level.height - 0.5;
-    long long i0 = (long long)std::floor(x), j0 = (long long)std::floor(y);
-    glm::dvec4 t[2][2];
-    for (int j = 0; j < 2; ++j)
-        for (int i = 0; i < 2; ++i)
-            t[j][i] = glm::dvec4(level.at(wrap_texel(i0 + i, level.width, wrap), wrap_texel(j0 + j, level.height, wrap)));
-    double across = std::max(max_channel_diff(t[0][0], t[0][1]), max_channel_diff(t[1][0], t[1][1]));
-    double down = std::max(max_channel_diff(t[0][0], t[1][0]), max_channel_diff(t[0][1], t[1][1]));
+    double across = 0, down = 0;
+    test::texel_contrast(level, u, v, wrap, across, down);
     // A step in alpha moves both rows, a step in beta moves between rows (themselves moved by alpha).
     return sub_texel_step * (across + down + across) + float_error;
 }
