@@ -21,11 +21,10 @@ vec4 tf_bilinear_level(sampler2D tex, vec2 uv, int level, int wrapMode)
     vec2 x = uv * vec2(size) - 0.5;
     vec2 i0 = floor(x);
     vec2 a = x - i0;
-    int x0 = tf_wrap(i0.x, size.x, wrapMode), x1 = tf_wrap(i0.x + 1.0, size.x, wrapMode);
-    int y0 = tf_wrap(i0.y, size.y, wrapMode), y1 = tf_wrap(i0.y + 1.0, size.y, wrapMode);
+    ivec2 xs = tf_wrap_pair(i0.x, size.x, wrapMode), ys = tf_wrap_pair(i0.y, size.y, wrapMode);
     TF_COUNT_FETCHES(4);
-    vec4 top = mix(texelFetch(tex, ivec2(x0, y0), level), texelFetch(tex, ivec2(x1, y0), level), a.x);
-    vec4 bottom = mix(texelFetch(tex, ivec2(x0, y1), level), texelFetch(tex, ivec2(x1, y1), level), a.x);
+    vec4 top = mix(texelFetch(tex, ivec2(xs.x, ys.x), level), texelFetch(tex, ivec2(xs.y, ys.x), level), a.x);
+    vec4 bottom = mix(texelFetch(tex, ivec2(xs.x, ys.y), level), texelFetch(tex, ivec2(xs.y, ys.y), level), a.x);
     return mix(top, bottom, a.y);
 }
 

@@ -40,19 +40,31 @@ tf_Sampler tf_sampler(int wrap) { return tf_Sampler(wrap, 0.0, 0.0, 1000.0); }
 // Texel coordinates past ±2^24 carry no information in float; clamping there keeps int math defined.
 const float TF_MAX_TEXEL_COORD = 16777216.0;
 
-// Wraps an integer-valued float texel coordinate into [0, size). GLSL's % is undefined for negative
-// operands, so the coordinate is shifted positive first.
+// Wraps an integer-valued float texel coordinate into [0, size). In float, without integer division: a
+// SIMD implementation (lavapipe) has no vector integer divide and ran % one lane at a time, which made
+// manual trilinear twice the hardware's time. t - n·floor(t/n) is exact for |t| < 2^24 - n (integers,
+// products below 2^24); a quotient one off from rounding is put right by the single step after it.
 int tf_wrap(float i, int size, int wrapMode)
 {
-    int t = int(clamp(i, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD));
+    float t = clamp(i, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
     if (wrapMode == TF_WRAP_CLAMP)
-        return clamp(t, 0, size - 1);
-    if (wrapMode == TF_WRAP_MIRROR) {
-        int period = 2 * size;
-        int m = (t + (16777216 / period + 1) * period) % period;
-        return m < size ? m : period - 1 - m;
-    }
-    return (t + (16777216 / size + 1) * size) % size;
+        return clamp(int(t), 0, size - 1);
+    float n = float(size);
+    float period = wrapMode == TF_WRAP_MIRROR ? 2.0 * n : n;
+    float m = t - period * floor(t / period);
+    m = m < 0.0 ? m + period : (m >= period ? m - period : m);
+    if (wrapMode == TF_WRAP_MIRROR && m >= n)
+        m = period - 1.0 - m;
+    return int(m);
+}
+
+// The texel pair (i, i + 1) of a linear lookup, wrapped: repeat wraps once and steps (one division, not two).
+ivec2 tf_wrap_pair(float i, int size, int wrapMode)
+{
+    int first = tf_wrap(i, size, wrapMode);
+    if (wrapMode == TF_WRAP_REPEAT)
+        return ivec2(first, first + 1 == size ? 0 : first + 1);
+    return ivec2(first, tf_wrap(i + 1.0, size, wrapMode));
 }
 
 // Size of a MIP level by the Vulkan floor rule. Derived from level 0 on purpose: textureSize() with a
