@@ -14,7 +14,8 @@ std::vector<FlagSpec> texture_flags()
 std::vector<FlagSpec> sampler_flags()
 {
     return {{"--filter", "F", "nearest, bilinear, trilinear, nearest-mip, bilinear-mip, brilinear, aniso, ewa, "
-                              "sat, sat-assembly, hw-nearest, hw-bilinear, hw-trilinear, hw-aniso"},
+                              "sat, sat-assembly, hw-nearest, hw-bilinear, hw-trilinear, hw-aniso; render only: "
+                              "ground-truth (supersampled), none (no texture: the benchmark's baseline)"},
             {"--wrap", "W", "repeat (default), clamp or mirror"},
             {"--aniso", "N", "hw-aniso: maximum anisotropy, 1..16 (default 16)"},
             {"--band", "B", "brilinear: trilinear band around each level transition, 0..1 (default 0.25)"},
@@ -24,6 +25,8 @@ std::vector<FlagSpec> sampler_flags()
             {"--alpha", "A", "ewa: Gaussian exp(-A r^2), 0.05..16 (default 2)"},
             {"--max-aniso", "E", "ewa: largest major/minor axis ratio, 1..64 (default 16)"},
             {"--boxes", "K", "sat-assembly: boxes along the major axis, 1..16 (default 4)"},
+            {"--pixel-filter", "P", "ground-truth: box (over the pixel, default) or gaussian (sigma 0.5 px)"},
+            {"--spp", "N", "ground-truth: samples a pixel, a square number 1..4096 (default 256)"},
             {"--lod-bias", "B", "added to the LOD (default 0)"},
             {"--lod-min", "L", "lowest LOD used (default 0)"},
             {"--lod-max", "L", "highest LOD used (default: the last level)"},
@@ -67,6 +70,8 @@ SamplerOptions sampler_options_from(const Args& args)
     options.alpha = float(args.get_double("--alpha", options.alpha, 0.05, 16.0));
     options.max_aniso = float(args.get_double("--max-aniso", options.max_aniso, 1.0, 64.0));
     options.boxes = args.get_int("--boxes", options.boxes, 1, 16);
+    options.pixel_filter = parse_flag(args, "--pixel-filter", "box", parse_pixel_filter);
+    options.truth_side = parse_flag(args, "--spp", "256", parse_spp_side);
     options.lod_bias = float(args.get_double("--lod-bias", 0.0, -16.0, 16.0));
     options.lod_min = float(args.get_double("--lod-min", 0.0, 0.0, 1000.0));
     options.lod_max = float(args.get_double("--lod-max", 1000.0, 0.0, 1000.0));
@@ -74,6 +79,21 @@ SamplerOptions sampler_options_from(const Args& args)
         throw Error("bad values: --lod-min " + args.get("--lod-min", "0") + " is above --lod-max " +
                     args.get("--lod-max", "1000"));
     return options;
+}
+
+int parse_spp_side(const std::string& text)
+{
+    const int largest = max_ground_truth_side * max_ground_truth_side;
+    char* end = nullptr;
+    long spp = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || spp < 1 || spp > largest)
+        throw Error("'" + text + "' is not a whole number in 1.." + std::to_string(largest));
+    int side = 1;
+    while ((side + 1) * (side + 1) <= spp)
+        ++side;
+    if (side * side != spp)
+        throw Error("'" + text + "' is not a square number (the samples form a side x side grid: 64, 256, 1024, ...)");
+    return side;
 }
 
 ContextOptions context_options_from(const Args& args)

@@ -18,6 +18,8 @@ std::vector<FlagSpec> join(std::vector<std::vector<FlagSpec>> groups);
 
 TextureSource texture_source_from(const Args& args);
 SamplerOptions sampler_options_from(const Args& args);
+// --spp: a square number of samples a pixel, 1..4096; returns the grid side. Throws naming what is wrong.
+int parse_spp_side(const std::string& text);
 ContextOptions context_options_from(const Args& args);
 Backend backend_from(const Args& args);
 

@@ -4,6 +4,7 @@
 #include "gpu_backend.h"
 #include "image_io.h"
 #include "output_path.h"
+#include "pfm.h"
 #include "reference_render.h"
 #include "scene.h"
 #include <cstdio>
@@ -19,12 +20,12 @@ int run_render(const std::vector<std::string>& argv)
          {{"--size", "WxH", "image size, even sides (default 256x256)"},
           {"--stage", "S", "fragment (default) or compute (2x2 quads from subgroup quad operations)"},
           {"--derivatives", "D", "fine (default), coarse (one pair a quad) or ray (ray differentials)"},
-          {"-o", "OUT", "output .png (8-bit sRGB) or .exr (linear half)"}},
+          {"-o", "OUT", "output .png (8-bit sRGB), .exr (linear half) or .pfm (linear float, any build)"}},
          device_flags()});
     Args args = parse_args("render", argv, specs, 0);
     if (args.has("--help")) {
         std::fputs(format_help("texfilter render --scene S --texture T|PATH --filter F [--size WxH] "
-                               "[--backend vulkan|reference] [--aniso N] -o OUT.png|OUT.exr",
+                               "[--backend vulkan|reference] [--aniso N] -o OUT.png|OUT.exr|OUT.pfm",
                                specs)
                        .c_str(),
                    stdout);
@@ -39,9 +40,10 @@ int run_render(const std::vector<std::string>& argv)
     if (width % 2 || height % 2)
         throw Error("bad value for --size: '" + args.get("--size", "") + "' (sides must be even: derivatives come from 2x2 quads)");
     std::string out = args.require("-o");
-    if (!image_io_available())
-        throw Error(out + ": image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON)");
-    check_output_path(out, {".png", ".exr"});
+    if (!image_io_available() && !is_pfm_path(out))
+        throw Error(out + ": image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON; "
+                          ".pfm output is built in)");
+    check_output_path(out, {".png", ".exr", ".pfm"});
     TextureSource source = texture_source_from(args);
     MipChain chain = load_texture(source);
     SceneParams scene = make_scene(kind, width, height, chain.levels[0].width);

@@ -53,6 +53,9 @@ int run_sample(const std::vector<std::string>& argv)
         return 0;
     }
     SamplerOptions options = sampler_options_from(args);
+    if (options.filter == Filter::ground_truth)
+        throw Error("bad value for --filter: ground-truth integrates over a scene's pixels, not around a lookup "
+                    "(use render)");
     Backend backend = backend_from(args);
     std::string out = args.require("-o");
     check_output_path(out, {".csv"});

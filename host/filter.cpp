@@ -24,10 +24,15 @@ const std::pair<Filter, const char*> kFilterNames[] = {
     {Filter::ewa, "ewa"},
     {Filter::sat, "sat"},
     {Filter::sat_assembly, "sat-assembly"},
+    {Filter::ground_truth, "ground-truth"},
+    {Filter::none, "none"},
 };
 
 const std::pair<AnisoShape, const char*> kShapeNames[] = {{AnisoShape::gpu, "gpu"}, {AnisoShape::feline, "feline"}};
 const std::pair<Taps, const char*> kTapsNames[] = {{Taps::manual, "manual"}, {Taps::hardware, "hardware"}};
+
+const std::pair<PixelFilter, const char*> kPixelFilterNames[] = {{PixelFilter::box, "box"},
+                                                                 {PixelFilter::gaussian, "gaussian"}};
 
 const std::pair<Wrap, const char*> kWrapNames[] = {
     {Wrap::repeat, "repeat"},
@@ -69,11 +74,14 @@ AnisoShape parse_aniso_shape(const std::string& name) { return parse_name(kShape
 std::string to_string(AnisoShape shape) { return name_of(kShapeNames, shape, "aniso shape"); }
 Taps parse_taps(const std::string& name) { return parse_name(kTapsNames, name, "taps form"); }
 std::string to_string(Taps taps) { return name_of(kTapsNames, taps, "taps form"); }
+PixelFilter parse_pixel_filter(const std::string& name) { return parse_name(kPixelFilterNames, name, "pixel filter"); }
+std::string to_string(PixelFilter filter) { return name_of(kPixelFilterNames, filter, "pixel filter"); }
 
 const std::vector<Filter>& all_filters() {
     static const std::vector<Filter> filters = [] {
         std::vector<Filter> list;
-        for (const auto& entry : kFilterNames) list.push_back(entry.first);
+        for (const auto& entry : kFilterNames)
+            if (!is_scene_level(entry.first)) list.push_back(entry.first);
         return list;
     }();
     return filters;
@@ -90,5 +98,7 @@ bool is_hardware(Filter filter) {
         return false;
     }
 }
+
+bool is_scene_level(Filter filter) { return filter == Filter::ground_truth || filter == Filter::none; }
 
 } // namespace tf

@@ -62,13 +62,5 @@ std::vector<GoldenCase> read_manifest(const std::string& path)
     return cases;
 }
 
-Image encode_srgb(const Image& linear)
-{
-    Image out = linear;
-    for (glm::vec4& t : out.texels)
-        for (int c = 0; c < 3; ++c)
-            t[c] = float(linear_to_srgb(std::min(1.0, std::max(0.0, double(t[c])))));
-    return out;
-}
 
 } // namespace tf

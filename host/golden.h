@@ -27,7 +27,4 @@ struct GoldenCase {
 // failpercent, hardfail. '#' starts a comment. Throws naming file:line.
 std::vector<GoldenCase> read_manifest(const std::string& path);
 
-// Linear image -> sRGB-encoded values in float (no quantisation), alpha unchanged.
-Image encode_srgb(const Image& linear);
-
 } // namespace tf

@@ -3,8 +3,9 @@
 // 2x2 quads (compute), and the triangles rasterized from a vertex buffer (mesh).
 #include "../shaders/harness/config.h"
 #include "error.h"
-#include "gpu_backend.h"
-#include "vk_pass.h"
+#include "gpu_render.h"
+#include <algorithm>
+#include <chrono>
 #include <cstring>
 
 #include "mesh_frag.h"
@@ -64,16 +65,6 @@ VkImageView create_attachment(const VulkanContext& context, VkFormat format, VkI
     return view;
 }
 
-// What every form of the pass binds: textures, the scene's uniform buffer, a pixel buffer (compute).
-struct PassResources {
-    Buffer uniforms, pixels;
-    PassSamplers samplers;
-    VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-    VkPipelineLayout pipeline_layout = VK_NULL_HANDLE;
-    DescriptorSet descriptors;
-    VkDescriptorBufferInfo uniform_info{}, pixel_info{};
-};
-
 void create_pass_resources(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
                            const SamplerOptions& options, VkShaderStageFlags stages, VkShaderStageFlags push_stages,
                            bool pixel_buffer, PassResources& pass, Cleanup& cleanup)
@@ -128,79 +119,30 @@ Image copy_out(const Buffer& buffer, int width, int height)
     return out;
 }
 
-Image render_compute(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
-                     const SamplerOptions& options, const RenderOptions& render)
-{
-    if (!context.info.quad_ops_compute)
-        throw Error(context.info.name + " has no subgroup quad operations in compute shaders: use --stage fragment");
-    if (context.info.subgroup_size % 4 != 0 || (TF_RENDER_TILE * TF_RENDER_TILE) % context.info.subgroup_size != 0)
-        throw Error("the compute render lays 2x2 quads over subgroups of " +
-                    std::to_string(context.info.subgroup_size) + " invocations, which it cannot do");
-    Cleanup cleanup;
-    PassResources pass;
-    create_pass_resources(context, texture, scene, options, VK_SHADER_STAGE_COMPUTE_BIT, VK_SHADER_STAGE_COMPUTE_BIT,
-                          true, pass, cleanup);
-    VkPipeline pipeline = create_compute_pipeline(context, tf_spirv_render_comp, sizeof(tf_spirv_render_comp),
-                                                  pass.pipeline_layout, options.filter, cleanup);
-
-    PushConstants push = make_push_constants(options, 0, texture.sat_scale, gradients_id(render.gradients));
-    uint32_t width = uint32_t(scene.kind_size.y), height = uint32_t(scene.kind_size.z);
-    submit_and_wait(context, [&](VkCommandBuffer cb) {
-        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline_layout, 0, 1, &pass.descriptors.set,
-                                0, nullptr);
-        vkCmdPushConstants(cb, pass.pipeline_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
-        vkCmdDispatch(cb, (width + TF_RENDER_TILE - 1) / TF_RENDER_TILE, (height + TF_RENDER_TILE - 1) / TF_RENDER_TILE, 1);
-        VkMemoryBarrier host = host_read_barrier(VK_ACCESS_SHADER_WRITE_BIT);
-        vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host, 0,
-                             nullptr, 0, nullptr);
-    });
-    return copy_out(pass.pixels, int(width), int(height));
-}
 
 struct MeshVertex {
     float position[3];
     float uv[2];
 };
 
-Image render_graphics(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
-                      const SamplerOptions& options, const RenderOptions& render)
+void check_compute_quads(const VulkanContext& context)
 {
-    const uint32_t width = uint32_t(scene.kind_size.y), height = uint32_t(scene.kind_size.z);
-    const bool mesh = render.rasterize;
+    if (!context.info.quad_ops_compute)
+        throw Error(context.info.name + " has no subgroup quad operations in compute shaders: use --stage fragment");
+    if (context.info.subgroup_size % 4 != 0 || (TF_RENDER_TILE * TF_RENDER_TILE) % context.info.subgroup_size != 0)
+        throw Error("the compute render lays 2x2 quads over subgroups of " +
+                    std::to_string(context.info.subgroup_size) + " invocations, which it cannot do");
+}
+
+// The graphics pipeline: the full-screen triangle (ray-cast scenes) or the mesh's triangles, depth-tested.
+VkPipeline create_graphics_pipeline(const VulkanContext& context, const GpuRenderer& r, Filter filter, Cleanup& cleanup)
+{
     VkDevice device = context.device;
-    Cleanup cleanup;
-
-    VkImage target = VK_NULL_HANDLE, depth = VK_NULL_HANDLE;
-    VkImageView target_view =
-        create_attachment(context, color_format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                          VK_IMAGE_ASPECT_COLOR_BIT, width, height, target, cleanup);
-    VkImageView depth_view = mesh ? create_attachment(context, depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                                                      VK_IMAGE_ASPECT_DEPTH_BIT, width, height, depth, cleanup)
-                                  : VK_NULL_HANDLE;
-    Buffer readback = create_host_buffer(context, VkDeviceSize(width) * height * sizeof(glm::vec4),
-                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    cleanup.add([&] { destroy_buffer(context, readback); });
-    Buffer vertices;
-    uint32_t vertex_count = 3; // the full-screen triangle
-    if (mesh) {
-        vertex_count = uint32_t(3 * scene.kind_size.w);
-        vertices = create_host_buffer(context, vertex_count * sizeof(MeshVertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-        cleanup.add([&] { destroy_buffer(context, vertices); });
-        MeshVertex* v = static_cast<MeshVertex*>(vertices.mapped);
-        for (uint32_t i = 0; i < vertex_count; ++i)
-            v[i] = {{scene.positions[i].x, scene.positions[i].y, scene.positions[i].z}, {scene.uvs[i].x, scene.uvs[i].y}};
-    }
-
-    PassResources pass;
-    create_pass_resources(context, texture, scene, options, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
-                          VK_SHADER_STAGE_FRAGMENT_BIT, false, pass, cleanup);
-
-    VkShaderModule vert = mesh ? create_shader_module(context, tf_spirv_mesh_vert, sizeof(tf_spirv_mesh_vert))
-                               : create_shader_module(context, tf_spirv_render_vert, sizeof(tf_spirv_render_vert));
+    VkShaderModule vert = r.mesh ? create_shader_module(context, tf_spirv_mesh_vert, sizeof(tf_spirv_mesh_vert))
+                                 : create_shader_module(context, tf_spirv_render_vert, sizeof(tf_spirv_render_vert));
     cleanup.add([=] { vkDestroyShaderModule(device, vert, nullptr); });
-    VkShaderModule frag = mesh ? create_shader_module(context, tf_spirv_mesh_frag, sizeof(tf_spirv_mesh_frag))
-                               : create_shader_module(context, tf_spirv_render_frag, sizeof(tf_spirv_render_frag));
+    VkShaderModule frag = r.mesh ? create_shader_module(context, tf_spirv_mesh_frag, sizeof(tf_spirv_mesh_frag))
+                                 : create_shader_module(context, tf_spirv_render_frag, sizeof(tf_spirv_render_frag));
     cleanup.add([=] { vkDestroyShaderModule(device, frag, nullptr); });
 
     VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
@@ -212,13 +154,13 @@ Image render_graphics(const VulkanContext& context, const GpuTexture& texture, c
     stages[1].module = frag;
     stages[1].pName = "main";
     FilterSpecialization specialization;
-    stages[1].pSpecializationInfo = filter_specialization(options.filter, specialization);
+    stages[1].pSpecializationInfo = filter_specialization(filter, specialization);
     VkVertexInputBindingDescription binding{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX};
     VkVertexInputAttributeDescription attributes[2] = {
         {0, 0, VK_FORMAT_R32G32B32_SFLOAT, uint32_t(offsetof(MeshVertex, position))},
         {1, 0, VK_FORMAT_R32G32_SFLOAT, uint32_t(offsetof(MeshVertex, uv))}};
     VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    if (mesh) {
+    if (r.mesh) {
         vertex_input.vertexBindingDescriptionCount = 1;
         vertex_input.pVertexBindingDescriptions = &binding;
         vertex_input.vertexAttributeDescriptionCount = 2;
@@ -226,8 +168,8 @@ Image render_graphics(const VulkanContext& context, const GpuTexture& texture, c
     }
     VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {width, height}};
+    VkViewport viewport{0.0f, 0.0f, float(r.width), float(r.height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, {r.width, r.height}};
     VkPipelineViewportStateCreateInfo viewport_state{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport_state.viewportCount = 1;
     viewport_state.pViewports = &viewport;
@@ -240,7 +182,7 @@ Image render_graphics(const VulkanContext& context, const GpuTexture& texture, c
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
     VkPipelineDepthStencilStateCreateInfo depth_state{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depth_state.depthTestEnable = depth_state.depthWriteEnable = mesh ? VK_TRUE : VK_FALSE;
+    depth_state.depthTestEnable = depth_state.depthWriteEnable = r.mesh ? VK_TRUE : VK_FALSE;
     depth_state.depthCompareOp = VK_COMPARE_OP_LESS;
     VkPipelineColorBlendAttachmentState blend_attachment{};
     blend_attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
@@ -251,7 +193,7 @@ Image render_graphics(const VulkanContext& context, const GpuTexture& texture, c
     VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
     rendering.colorAttachmentCount = 1;
     rendering.pColorAttachmentFormats = &color_format;
-    rendering.depthAttachmentFormat = mesh ? depth_format : VK_FORMAT_UNDEFINED;
+    rendering.depthAttachmentFormat = r.mesh ? depth_format : VK_FORMAT_UNDEFINED;
     VkGraphicsPipelineCreateInfo pipeline_info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
     pipeline_info.pNext = &rendering;
     pipeline_info.stageCount = 2;
@@ -263,79 +205,245 @@ Image render_graphics(const VulkanContext& context, const GpuTexture& texture, c
     pipeline_info.pMultisampleState = &multisample;
     pipeline_info.pDepthStencilState = &depth_state;
     pipeline_info.pColorBlendState = &blend;
-    pipeline_info.layout = pass.pipeline_layout;
+    pipeline_info.layout = r.pass.pipeline_layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     TF_VK(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &pipeline));
     cleanup.add([=] { vkDestroyPipeline(device, pipeline, nullptr); });
+    return pipeline;
+}
 
-    PushConstants push = make_push_constants(options, 0, texture.sat_scale, gradients_id(render.gradients));
-    submit_and_wait(context, [&](VkCommandBuffer cb) {
-        image_barrier(cb, target, 1, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, 0,
-                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT);
-        VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        color.imageView = target_view;
-        color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        // The full-screen triangle covers every pixel; the mesh leaves the background where it has none.
-        color.loadOp = mesh ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-        color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        color.clearValue.color = {{scene.background.r, scene.background.g, scene.background.b, scene.background.a}};
-        VkRenderingAttachmentInfo depth_attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        depth_attachment.imageView = depth_view;
-        depth_attachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-        depth_attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-        depth_attachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-        depth_attachment.clearValue.depthStencil = {1.0f, 0};
-        if (mesh) {
-            VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-            barrier.dstAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-            barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-            barrier.newLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-            barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-            barrier.image = depth;
-            barrier.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-            vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT, 0, 0,
-                                 nullptr, 0, nullptr, 1, &barrier);
+// One frame: the draw (into the colour target, which ends in TRANSFER_SRC layout) or the dispatch (into
+// the pixel buffer). `timestamps` (or null) bracket the work itself, not the layout changes around it.
+void record_frame(const GpuRenderer& r, VkCommandBuffer cb, VkQueryPool timestamps, uint32_t query)
+{
+    auto stamp = [&](VkPipelineStageFlagBits stage, uint32_t index) {
+        if (timestamps != VK_NULL_HANDLE)
+            vkCmdWriteTimestamp(cb, stage, timestamps, index);
+    };
+    if (r.compute) {
+        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipeline);
+        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, r.pass.pipeline_layout, 0, 1,
+                                &r.pass.descriptors.set, 0, nullptr);
+        vkCmdPushConstants(cb, r.pass.pipeline_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(r.push), &r.push);
+        // The previous frame's writes to the pixel buffer come first (write after write).
+        VkMemoryBarrier previous{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        previous.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+        previous.dstAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+        vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
+                             &previous, 0, nullptr, 0, nullptr);
+        stamp(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, query);
+        vkCmdDispatch(cb, (r.width + TF_RENDER_TILE - 1) / TF_RENDER_TILE, (r.height + TF_RENDER_TILE - 1) / TF_RENDER_TILE, 1);
+        stamp(VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, query + 1);
+        return;
+    }
+    // UNDEFINED: the previous frame's content is not needed (the whole target is redrawn or cleared).
+    image_barrier(cb, r.target, 1, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                  VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT);
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = r.target_view;
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    // The full-screen triangle covers every pixel; the mesh leaves the background where it has none.
+    color.loadOp = r.mesh ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    color.clearValue.color = r.background;
+    VkRenderingAttachmentInfo depth_attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth_attachment.imageView = r.depth_view;
+    depth_attachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth_attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth_attachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    depth_attachment.clearValue.depthStencil = {1.0f, 0};
+    if (r.mesh) {
+        VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+        barrier.srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+        barrier.dstAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+        barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        barrier.newLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        barrier.image = r.depth;
+        barrier.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+        vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+                             0, 0, nullptr, 0, nullptr, 1, &barrier);
+    }
+    VkRect2D area{{0, 0}, {r.width, r.height}};
+    VkRenderingInfo rendering_info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering_info.renderArea = area;
+    rendering_info.layerCount = 1;
+    rendering_info.colorAttachmentCount = 1;
+    rendering_info.pColorAttachments = &color;
+    rendering_info.pDepthAttachment = r.mesh ? &depth_attachment : nullptr;
+    stamp(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, query);
+    vkCmdBeginRendering(cb, &rendering_info);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, r.pipeline);
+    vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, r.pass.pipeline_layout, 0, 1, &r.pass.descriptors.set,
+                            0, nullptr);
+    vkCmdPushConstants(cb, r.pass.pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(r.push), &r.push);
+    if (r.mesh) {
+        VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(cb, 0, 1, &r.vertices.buffer, &offset);
+    }
+    vkCmdDraw(cb, r.vertex_count, 1, 0, 0);
+    vkCmdEndRendering(cb);
+    stamp(VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, query + 1);
+    image_barrier(cb, r.target, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+                  VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+}
+
+// After record_frame: the frame into host-visible memory.
+void record_readback(const GpuRenderer& r, VkCommandBuffer cb)
+{
+    if (r.compute) {
+        VkMemoryBarrier host = host_read_barrier(VK_ACCESS_SHADER_WRITE_BIT);
+        vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host, 0,
+                             nullptr, 0, nullptr);
+        return;
+    }
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {r.width, r.height, 1};
+    vkCmdCopyImageToBuffer(cb, r.target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, r.readback.buffer, 1, &copy);
+    VkMemoryBarrier host = host_read_barrier(VK_ACCESS_TRANSFER_WRITE_BIT);
+    vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host, 0, nullptr, 0,
+                         nullptr);
+}
+
+// One submit and wait a frame, timed on the host. A frame slower than `slow_ms` ends the warm-up and cuts
+// the timed frames to three: a pathological case (lavapipe's hw-aniso on some scenes takes seconds a frame)
+// must not hold the whole benchmark up.
+std::vector<double> time_frames_on_host(const GpuRenderer& r, int warmup, int frames)
+{
+    const double slow_ms = 250.0;
+    std::vector<double> ms;
+    for (int f = 0; f < warmup + frames && int(ms.size()) < frames; ++f) {
+        auto start = std::chrono::steady_clock::now();
+        submit_and_wait(*r.context, [&](VkCommandBuffer cb) { record_frame(r, cb, VK_NULL_HANDLE, 0); });
+        double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        if (f >= warmup)
+            ms.push_back(elapsed);
+        if (elapsed > slow_ms) {
+            warmup = std::min(warmup, f + 1);
+            frames = std::min(frames, 3);
         }
-        VkRenderingInfo rendering_info{VK_STRUCTURE_TYPE_RENDERING_INFO};
-        rendering_info.renderArea = scissor;
-        rendering_info.layerCount = 1;
-        rendering_info.colorAttachmentCount = 1;
-        rendering_info.pColorAttachments = &color;
-        rendering_info.pDepthAttachment = mesh ? &depth_attachment : nullptr;
-        vkCmdBeginRendering(cb, &rendering_info);
-        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline_layout, 0, 1, &pass.descriptors.set,
-                                0, nullptr);
-        vkCmdPushConstants(cb, pass.pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push), &push);
-        if (mesh) {
-            VkDeviceSize offset = 0;
-            vkCmdBindVertexBuffers(cb, 0, 1, &vertices.buffer, &offset);
-        }
-        vkCmdDraw(cb, vertex_count, 1, 0, 0);
-        vkCmdEndRendering(cb);
-        image_barrier(cb, target, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
-                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-        VkBufferImageCopy copy{};
-        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        copy.imageExtent = {width, height, 1};
-        vkCmdCopyImageToBuffer(cb, target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &copy);
-        VkMemoryBarrier host = host_read_barrier(VK_ACCESS_TRANSFER_WRITE_BIT);
-        vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host, 0, nullptr,
-                             0, nullptr);
-    });
-    return copy_out(readback, int(width), int(height));
+    }
+    return ms;
 }
 
 } // namespace
 
+std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const GpuTexture& texture,
+                                             const SceneParams& scene, const SamplerOptions& options,
+                                             const RenderOptions& render)
+{
+    auto r = std::make_unique<GpuRenderer>();
+    GpuRenderer& out = *r;
+    Cleanup& cleanup = out.cleanup;
+    out.context = &context;
+    out.compute = render.stage == Stage::compute;
+    // Ground truth supersamples by ray casting: the mesh through its ray-cast twin.
+    out.mesh = render.rasterize && options.filter != Filter::ground_truth;
+    out.width = uint32_t(scene.kind_size.y);
+    out.height = uint32_t(scene.kind_size.z);
+    out.background = {{scene.background.r, scene.background.g, scene.background.b, scene.background.a}};
+    out.push = make_push_constants(options, 0, texture.sat_scale, gradients_id(render.gradients));
+
+    if (out.compute) {
+        check_compute_quads(context);
+        create_pass_resources(context, texture, scene, options, VK_SHADER_STAGE_COMPUTE_BIT,
+                              VK_SHADER_STAGE_COMPUTE_BIT, true, out.pass, cleanup);
+        out.pipeline = create_compute_pipeline(context, tf_spirv_render_comp, sizeof(tf_spirv_render_comp),
+                                               out.pass.pipeline_layout, options.filter, cleanup);
+        return r;
+    }
+    out.target_view = create_attachment(context, color_format,
+                                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                        VK_IMAGE_ASPECT_COLOR_BIT, out.width, out.height, out.target, cleanup);
+    if (out.mesh)
+        out.depth_view = create_attachment(context, depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                           VK_IMAGE_ASPECT_DEPTH_BIT, out.width, out.height, out.depth, cleanup);
+    out.readback = create_host_buffer(context, VkDeviceSize(out.width) * out.height * sizeof(glm::vec4),
+                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    cleanup.add([&context, &out] { destroy_buffer(context, out.readback); });
+    if (out.mesh) {
+        out.vertex_count = uint32_t(3 * scene.kind_size.w);
+        out.vertices = create_host_buffer(context, out.vertex_count * sizeof(MeshVertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        cleanup.add([&context, &out] { destroy_buffer(context, out.vertices); });
+        MeshVertex* v = static_cast<MeshVertex*>(out.vertices.mapped);
+        for (uint32_t i = 0; i < out.vertex_count; ++i)
+            v[i] = {{scene.positions[i].x, scene.positions[i].y, scene.positions[i].z}, {scene.uvs[i].x, scene.uvs[i].y}};
+    }
+    create_pass_resources(context, texture, scene, options, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                          VK_SHADER_STAGE_FRAGMENT_BIT, false, out.pass, cleanup);
+    out.pipeline = create_graphics_pipeline(context, out, options.filter, cleanup);
+    return r;
+}
+
+Image render_frame(GpuRenderer& r, const SceneParams& scene)
+{
+    if (uint32_t(scene.kind_size.y) != r.width || uint32_t(scene.kind_size.z) != r.height)
+        throw Error("render_frame: the scene's size changed since the renderer was made");
+    std::memcpy(r.pass.uniforms.mapped, &scene, sizeof(SceneParams)); // no frame in flight: submits wait
+    submit_and_wait(*r.context, [&](VkCommandBuffer cb) {
+        record_frame(r, cb, VK_NULL_HANDLE, 0);
+        record_readback(r, cb);
+    });
+    return copy_out(r.compute ? r.pass.pixels : r.readback, int(r.width), int(r.height));
+}
+
+std::vector<double> time_frames(GpuRenderer& r, int warmup, int frames, FrameTimer timer)
+{
+    const VulkanContext& context = *r.context;
+    if (warmup < 0 || frames < 1)
+        throw Error("time_frames: need at least one timed frame");
+    if (timer == FrameTimer::wall_clock)
+        return time_frames_on_host(r, warmup, frames);
+    if (context.info.timestamp_valid_bits == 0 || context.info.timestamp_period_ns <= 0.0f)
+        throw Error(context.info.name + " has no timestamps on its graphics and compute queue: use the wall-clock timer");
+    VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    info.queryCount = uint32_t(2 * frames);
+    VkQueryPool pool = VK_NULL_HANDLE;
+    TF_VK(vkCreateQueryPool(context.device, &info, nullptr, &pool));
+    struct Release {
+        VkDevice device;
+        VkQueryPool pool;
+        ~Release() { vkDestroyQueryPool(device, pool, nullptr); }
+    } release{context.device, pool};
+
+    submit_and_wait(context, [&](VkCommandBuffer cb) {
+        vkCmdResetQueryPool(cb, pool, 0, info.queryCount);
+        for (int f = 0; f < warmup + frames; ++f)
+            record_frame(r, cb, f < warmup ? VK_NULL_HANDLE : pool, uint32_t(2 * (f - warmup)));
+    });
+    std::vector<uint64_t> ticks(info.queryCount);
+    TF_VK(vkGetQueryPoolResults(context.device, pool, 0, info.queryCount, ticks.size() * sizeof(uint64_t), ticks.data(),
+                                sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    const uint64_t mask = context.info.timestamp_valid_bits >= 64 ? ~0ull : (1ull << context.info.timestamp_valid_bits) - 1;
+    std::vector<double> ms(static_cast<size_t>(frames));
+    for (int f = 0; f < frames; ++f) {
+        uint64_t elapsed = (ticks[size_t(2 * f + 1)] - ticks[size_t(2 * f)]) & mask; // wraps within valid bits
+        ms[size_t(f)] = double(elapsed) * double(context.info.timestamp_period_ns) * 1e-6;
+    }
+    return ms;
+}
+
+FrameTimer parse_frame_timer(const std::string& name)
+{
+    if (name == "timestamps")
+        return FrameTimer::timestamps;
+    if (name == "wall-clock")
+        return FrameTimer::wall_clock;
+    throw Error("unknown timer '" + name + "' (expected timestamps or wall-clock)");
+}
+
+std::string to_string(FrameTimer timer) { return timer == FrameTimer::timestamps ? "timestamps" : "wall-clock"; }
+
 Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
                  const SamplerOptions& options, const RenderOptions& render)
 {
-    if (render.stage == Stage::compute)
-        return render_compute(context, texture, scene, options, render);
-    return render_graphics(context, texture, scene, options, render);
+    std::unique_ptr<GpuRenderer> renderer = create_renderer(context, texture, scene, options, render);
+    return render_frame(*renderer, scene);
 }
 
 } // namespace tf

@@ -2,6 +2,7 @@
 
 #include "error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -26,6 +27,15 @@ double srgb_to_linear(double encoded) {
 double linear_to_srgb(double linear) {
     if (linear <= 0.0031308) return linear * 12.92;
     return 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+Image encode_srgb(const Image& linear)
+{
+    Image out = linear;
+    for (glm::vec4& t : out.texels)
+        for (int c = 0; c < 3; ++c)
+            t[c] = float(linear_to_srgb(std::min(1.0, std::max(0.0, double(t[c])))));
+    return out;
 }
 
 } // namespace tf

@@ -22,4 +22,8 @@ Image make_image(int width, int height, glm::vec4 fill = glm::vec4(0.0f));
 double srgb_to_linear(double encoded);
 double linear_to_srgb(double linear);
 
+// Linear image -> sRGB-encoded values in float (clamped to [0,1] first, no quantisation), alpha unchanged:
+// the display values goldens and benchmark errors are measured in.
+Image encode_srgb(const Image& linear);
+
 } // namespace tf

@@ -1,6 +1,7 @@
 // Image files through OpenImageIO. OIIO stays inside this file so that the rest of the project
 // (and a lean build with image_io_stub.cpp instead) never sees its headers.
 #include "image_io.h"
+#include "pfm.h"
 #include "output_path.h"
 
 #include "error.h"
@@ -192,10 +193,11 @@ Image read_image_raw(const std::string& path) {
 }
 
 void write_image(const std::string& path, const Image& image) {
+    if (is_pfm_path(path)) return write_pfm(path, image); // built in: no OpenImageIO needed
     const std::string ext = extension_of(path);
     const bool png = ext == ".png";
     if (!png && ext != ".exr")
-        throw Error(path + ": unsupported output format '" + ext + "' (use .png or .exr)");
+        throw Error(path + ": unsupported output format '" + ext + "' (use .png, .exr or .pfm)");
     if (image.width <= 0 || image.height <= 0 ||
         image.texels.size() != size_t(image.width) * size_t(image.height))
         throw Error(path + ": cannot write an empty or inconsistent " + std::to_string(image.width) + "x" +

@@ -17,7 +17,8 @@ enum class ColorSpace { automatic, srgb, linear };
 // problem: missing, empty, unreadable/corrupt, or larger than max_dimension on a side.
 Image read_image(const std::string& path, ColorSpace space, int max_dimension);
 
-// Writes a linear image. .png: 8-bit sRGB-encoded RGBA; .exr: half-float linear RGBA (zip).
+// Writes a linear image. .png: 8-bit sRGB-encoded RGBA; .exr: half-float linear RGBA (zip); .pfm:
+// float RGB, linear (built in, so also in builds without image I/O).
 // Other extensions: tf::Error. Writes to a temporary file beside the target and renames it, so a
 // failure never leaves a partial output.
 void write_image(const std::string& path, const Image& image);

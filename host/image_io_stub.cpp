@@ -3,6 +3,7 @@
 #include "image_io.h"
 
 #include "error.h"
+#include "pfm.h"
 
 namespace tf {
 namespace {
@@ -17,7 +18,12 @@ bool image_io_available() { return false; }
 
 Image read_image(const std::string& path, ColorSpace, int) { left_out(path); }
 
-void write_image(const std::string& path, const Image&) { left_out(path); }
+void write_image(const std::string& path, const Image& image)
+{
+    if (!is_pfm_path(path))
+        left_out(path);
+    write_pfm(path, image);
+}
 
 Image read_image_raw(const std::string& path) { left_out(path); }
 

@@ -11,10 +11,11 @@ const char* usage = "usage: texfilter COMMAND [options]\n"
                     "\n"
                     "commands:\n"
                     "  info      list Vulkan devices, their filtering limits, and the one texfilter would use\n"
-                    "  render    render a test scene with a filter (GPU or CPU reference) to PNG/EXR\n"
+                    "  render    render a test scene with a filter (GPU or CPU reference) to PNG/EXR/PFM\n"
                     "  sample    filter point lookups from a CSV file to a CSV of colours\n"
                     "  diff      compare two images (idiff-style thresholds)\n"
                     "  golden    render every golden case on the GPU and compare; --update re-blesses from the CPU reference\n"
+                    "  bench     time, count and score every scene x filter against ground truth (JSON, CSV, images)\n"
                     "\n"
                     "texfilter COMMAND --help shows a command's options.\n";
 
@@ -43,6 +44,8 @@ int main(int argc, char** argv)
             return tf::run_diff(rest);
         if (command == "golden")
             return tf::run_golden(rest);
+        if (command == "bench")
+            return tf::run_bench(rest);
         std::fprintf(stderr, "texfilter: unknown command '%s'\n\n%s", command.c_str(), usage);
         return 2;
     } catch (const tf::Error& e) {

@@ -1,4 +1,5 @@
 #include "procedural.h"
+#include "hash.h"
 
 #include "error.h"
 
@@ -56,13 +57,7 @@ Image grid(int size) {
 
 // Integer avalanche hash (multiply / xor-shift rounds): deterministic on every platform, unlike std::rand.
 uint32_t hash3(uint32_t x, uint32_t y, uint32_t z) {
-    uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u ^ z * 0xcb1ab31fu;
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    h ^= h >> 16;
-    return h;
+    return mix32(x * 0x8da6b343u ^ y * 0xd8163841u ^ z * 0xcb1ab31fu);
 }
 
 Image noise(int size) {

@@ -97,6 +97,8 @@ glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options
     if (chain.levels.empty()) throw Error("reference_sample: empty MIP chain");
     if (options.filter == Filter::hw_aniso)
         throw Error("hw-aniso has no CPU reference: anisotropic filtering is implementation-defined in Vulkan");
+    if (options.filter == Filter::ground_truth)
+        throw Error("ground-truth integrates over a pixel of a scene, not around one lookup: render it");
     if (!std::isfinite(lookup.u) || !std::isfinite(lookup.v)) return glm::dvec4(0.0);
 
     const Image& base = chain.levels[0];
@@ -127,7 +129,10 @@ glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options
     case Filter::sat:
     case Filter::sat_assembly:
         return reference_sat(chain, options, lookup);
+    case Filter::none: // the baseline: the scene's uv as colour, no texture
+        return glm::dvec4(lookup.u - std::floor(lookup.u), lookup.v - std::floor(lookup.v), 0.5, 1.0);
     case Filter::hw_aniso:
+    case Filter::ground_truth:
         break;
     }
     throw Error("reference_sample: invalid filter");

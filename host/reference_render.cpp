@@ -1,44 +1,15 @@
 #include "reference_render.h"
+#include "ground_truth.h"
+#include "parallel.h"
 #include <algorithm>
-#include <atomic>
-#include <thread>
 
 namespace tf {
-
-namespace {
-
-// Runs body(i) for i in [0, count) on every core; exceptions from workers are rethrown here.
-template <typename Body>
-void parallel_for(size_t count, Body body)
-{
-    unsigned threads = std::max(1u, std::min(std::thread::hardware_concurrency(), 64u));
-    std::atomic<size_t> next{0};
-    std::exception_ptr failure;
-    std::atomic<bool> failed{false};
-    auto work = [&] {
-        try {
-            for (size_t i; !failed && (i = next.fetch_add(1)) < count;)
-                body(i);
-        } catch (...) {
-            if (!failed.exchange(true))
-                failure = std::current_exception();
-        }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t)
-        pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool)
-        t.join();
-    if (failure)
-        std::rethrow_exception(failure);
-}
-
-} // namespace
 
 Image reference_render(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options,
                        const RenderOptions& render)
 {
+    if (options.filter == Filter::ground_truth)
+        return reference_ground_truth(scene, chain, options);
     int width = scene.kind_size.y, height = scene.kind_size.z;
     // The stage does not change the math: compute quads are the fragment stage's quads.
     std::vector<PixelLookup> lookups = reference_lookups(scene, render.gradients, render.rasterize);

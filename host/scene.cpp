@@ -97,7 +97,7 @@ bool triangle_plane_hit(const SceneParams& scene, int i, glm::dvec3 o, glm::dvec
 glm::dvec2 triangle_uv(const SceneParams& scene, int i, double b1, double b2)
 {
     glm::dvec2 uv0(scene.uvs[3 * i]), uv1(scene.uvs[3 * i + 1]), uv2(scene.uvs[3 * i + 2]);
-    return (1.0 - b1 - b2) * uv0 + b1 * uv1 + b2 * uv2;
+    return (1.0 - b1 - b2) * uv0 + b1 * uv1 + b2 * uv2 + glm::dvec2(scene.extent.z, scene.extent.w);
 }
 
 } // namespace
@@ -235,6 +235,21 @@ SceneParams make_scene(SceneKind kind, int width, int height, int texture_width)
     }
     }
     return scene;
+}
+
+SceneParams make_minified_scene(int width, int height, int texture_width, double texels_per_pixel)
+{
+    SceneParams scene = make_scene(SceneKind::minify, width, height, texture_width);
+    set_facing_quad(scene, height, texels_per_pixel / texture_width);
+    return scene;
+}
+
+SceneParams scene_at_frame(const SceneParams& scene, int frame, int texture_width)
+{
+    SceneParams moved = scene;
+    moved.extent.z += float(frame * camera_step_texels.x / texture_width);
+    moved.extent.w += float(frame * camera_step_texels.y / texture_width);
+    return moved;
 }
 
 glm::dvec2 reference_triangle_plane_uv(const SceneParams& scene, int triangle, double px, double py)

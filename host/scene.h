@@ -56,6 +56,16 @@ struct SceneParams {
 // zoom and minify scale the quad so that one texel of a texture_width-wide texture spans 8 pixels
 // (zoom) or 1/8 pixel (minify) at the image centre.
 SceneParams make_scene(SceneKind kind, int width, int height, int texture_width);
+// The minify scene at another scale: texels_per_pixel level-0 texels across each pixel (the benchmark's
+// footprint-size sweep).
+SceneParams make_minified_scene(int width, int height, int texture_width, double texels_per_pixel);
+
+// The benchmark's camera path: frame f of a glide across the surface, which slides the scene's uv by
+// f * camera_step_texels level-0 texels (planes: the camera moves parallel to the plane; tunnel: along
+// and around the axis; triangles and mesh: the texture slides across them). Sub-texel steps in both
+// axes, so a filter that snaps to texels or levels shows it as flicker.
+constexpr glm::dvec2 camera_step_texels{0.37, 0.23};
+SceneParams scene_at_frame(const SceneParams& scene, int frame, int texture_width);
 
 struct PixelHit {
     bool hit = false;

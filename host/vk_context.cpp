@@ -61,6 +61,15 @@ int find_queue_family(VkPhysicalDevice physical)
     return -1;
 }
 
+uint32_t queue_family_timestamp_bits(VkPhysicalDevice physical, uint32_t family)
+{
+    uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
+    return family < count ? families[family].timestampValidBits : 0;
+}
+
 std::string usability_problem(VkPhysicalDevice physical, const DeviceInfo& info)
 {
     if (VK_API_VERSION_MINOR(info.api_version) < 3 && VK_API_VERSION_MAJOR(info.api_version) == 1)
@@ -174,6 +183,9 @@ std::vector<DeviceInfo> list_devices(VkInstance instance)
         d.quad_ops_fragment = quad && (subgroup.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT);
         d.quad_ops_compute = quad && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
         d.sampler_anisotropy = features.samplerAnisotropy == VK_TRUE;
+        d.timestamp_period_ns = limits.timestampPeriod;
+        if (int family = find_queue_family(physicals[i]); family >= 0)
+            d.timestamp_valid_bits = queue_family_timestamp_bits(physicals[i], uint32_t(family));
         d.why_not_usable = usability_problem(physicals[i], d);
         d.usable = d.why_not_usable.empty();
         devices.push_back(d);

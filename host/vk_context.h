@@ -24,6 +24,8 @@ struct DeviceInfo {
     bool quad_ops_fragment = false;
     bool quad_ops_compute = false;
     bool sampler_anisotropy = false; // feature
+    float timestamp_period_ns = 0;     // nanoseconds a timestamp tick
+    uint32_t timestamp_valid_bits = 0; // of the queue texfilter uses; 0: no timestamps (no bench timings)
     bool usable = false;
     std::string why_not_usable; // empty when usable
 };

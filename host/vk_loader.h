@@ -80,7 +80,12 @@
     X(vkCmdBeginRendering)              \
     X(vkCmdEndRendering)                \
     X(vkCmdSetViewport)                 \
-    X(vkCmdSetScissor)
+    X(vkCmdSetScissor)                  \
+    X(vkCreateQueryPool)                \
+    X(vkDestroyQueryPool)               \
+    X(vkCmdResetQueryPool)              \
+    X(vkCmdWriteTimestamp)              \
+    X(vkGetQueryPoolResults)
 
 #define TF_VK_DECLARE(name) extern PFN_##name name;
 TF_VK_GLOBAL_FUNCTIONS(TF_VK_DECLARE)

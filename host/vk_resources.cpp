@@ -140,7 +140,8 @@ PushConstants make_push_constants(const SamplerOptions& options, uint32_t count,
 {
     return {int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max,
             count, options.band, options.probes, int32_t(options.aniso_shape), int32_t(options.taps),
-            options.alpha, options.max_aniso, options.boxes, sat_scale, gradients};
+            options.alpha, options.max_aniso, options.boxes, sat_scale, gradients,
+            options.truth_side, int32_t(options.pixel_filter)};
 }
 
 } // namespace tf

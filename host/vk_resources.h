@@ -54,6 +54,8 @@ struct PushConstants {
     int32_t boxes;
     float sat_scale;
     int32_t gradients; // TF_GRADIENTS_*
+    int32_t truth_side;   // ground-truth: samples a pixel = side^2
+    int32_t pixel_filter; // ground-truth: TF_PIXEL_FILTER_*
 };
 // The filter, as the harness shaders' specialization constant TF_SPEC_FILTER (pipelines are per filter).
 struct FilterSpecialization {

@@ -18,6 +18,14 @@
 #define TF_FILTER_EWA 11
 #define TF_FILTER_SAT 12
 #define TF_FILTER_SAT_ASSEMBLY 13
+#define TF_FILTER_GROUND_TRUTH 14 // render only: supersampled integral of the level-0 texture
+#define TF_FILTER_NONE 15         // render only: no texture (the benchmark's baseline)
+
+// Ground truth's pixel filters (tf::PixelFilter) and its stratified grid's largest side.
+#define TF_PIXEL_FILTER_BOX 0
+#define TF_PIXEL_FILTER_GAUSSIAN 1
+#define TF_GROUND_TRUTH_SIGMA 0.5 // Gaussian pixel filter: standard deviation in pixels
+#define TF_MAX_TRUTH_SIDE 64
 
 // Scene kinds: a textured plane or quad (plane, zoom, minify, slanted) and a cylinder (tunnel).
 #define TF_SCENE_PLANE 0

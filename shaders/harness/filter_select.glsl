@@ -38,6 +38,8 @@ layout(push_constant) uniform tf_PushConstants {
     int boxes;       // sat-assembly
     float satScale;  // sat: value of one quantisation step x 65535 (see sat.glsl)
     int gradients;   // render: TF_GRADIENTS_FINE / COARSE / RAY
+    int truthSide;   // ground-truth: side of the stratified sample grid (samples a pixel = side^2)
+    int pixelFilter; // ground-truth: TF_PIXEL_FILTER_BOX / GAUSSIAN
 } pc;
 
 vec4 tf_harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
@@ -60,6 +62,8 @@ vec4 tf_harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
     case TF_FILTER_SAT: return tf_sat(u_satLow, u_satHigh, uv, dUVdx, dUVdy, s, pc.satScale);
     case TF_FILTER_SAT_ASSEMBLY:
         return tf_sat_assembly(u_satLow, u_satHigh, uv, dUVdx, dUVdy, s, pc.satScale, pc.boxes);
+    case TF_FILTER_NONE: return vec4(fract(uv), 0.5, 1.0); // the scene without the texture: baseline cost
+    case TF_FILTER_GROUND_TRUTH: return vec4(0.0);         // per pixel, not per lookup: see ground_truth.glsl
     default:
         TF_COUNT_HW_LOOKUPS(1);
         return textureGrad(u_texture, uv, dUVdx, dUVdy); // hw-*: sampler state set by the host

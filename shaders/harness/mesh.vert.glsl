@@ -21,5 +21,5 @@ void main()
     // Vulkan's framebuffer y grows downward; the scene's ndc y grows upward.
     gl_Position = vec4(dot(c, right) / dot(right, right), -dot(c, up) / dot(up, up),
                        (z - TF_NEAR) * TF_FAR / (TF_FAR - TF_NEAR), z);
-    outUV = uv;
+    outUV = uv + scene.extent.zw; // the camera path's slide, as the ray-cast twin
 }

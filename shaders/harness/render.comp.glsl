@@ -8,6 +8,7 @@
 #include "config.h"
 #include "filter_select.glsl"
 #include "gradients.glsl"
+#include "ground_truth.glsl"
 
 layout(local_size_x = TF_RENDER_TILE * TF_RENDER_TILE) in;
 
@@ -17,12 +18,19 @@ void main()
 {
     ivec2 pixel = tf_quad_pixel(ivec2(gl_WorkGroupID.xy) * TF_RENDER_TILE, TF_RENDER_TILE);
     vec2 centre = vec2(pixel) + 0.5;
+    ivec2 size = scene.kindSize.yz;
+    if (TF_FILTER_ID == TF_FILTER_GROUND_TRUTH) { // no quads needed: a specialization constant, uniform
+        if (all(lessThan(pixel, size)))
+            pixels[pixel.y * size.x + pixel.x] = tf_ground_truth(pixel);
+        return;
+    }
     tf_Hit h = tf_scene_hit(scene, centre);
     // All lanes (those past the image's edge too) take part in the quad operations.
     tf_Gradients quad = tf_compute_quad_gradients(h.uv, pc.gradients == TF_GRADIENTS_COARSE ? TF_DERIVATIVES_COARSE
                                                                                             : TF_DERIVATIVES_FINE);
     tf_Gradients g = pc.gradients == TF_GRADIENTS_RAY ? tf_harness_ray_gradients(scene, centre, h) : quad;
-    ivec2 size = scene.kindSize.yz;
-    if (all(lessThan(pixel, size))) // filter hits only (see render.frag.glsl)
-        pixels[pixel.y * size.x + pixel.x] = h.hit ? tf_harness_filter(h.uv, g.dUVdx, g.dUVdy) : scene.background;
+    tf_Lookup l = tf_harness_lookup(h, g);
+    vec4 color = tf_harness_filter(l.uv, l.dUVdx, l.dUVdy);
+    if (all(lessThan(pixel, size)))
+        pixels[pixel.y * size.x + pixel.x] = h.hit ? color : scene.background;
 }

@@ -6,11 +6,16 @@
 #include "config.h"
 #include "filter_select.glsl"
 #include "gradients.glsl"
+#include "ground_truth.glsl"
 
 layout(location = 0) out vec4 outColor;
 
 void main()
 {
+    if (TF_FILTER_ID == TF_FILTER_GROUND_TRUTH) { // a specialization constant: uniform control flow
+        outColor = tf_ground_truth(ivec2(gl_FragCoord.xy));
+        return;
+    }
     tf_Hit h = tf_scene_hit(scene, gl_FragCoord.xy);
     // Every lane of the quad computes uv, hit or not, before any branch.
     tf_Gradients fine = tf_quad_gradients_fine(h.uv);
@@ -18,7 +23,7 @@ void main()
     tf_Gradients g = pc.gradients == TF_GRADIENTS_COARSE ? coarse
                      : pc.gradients == TF_GRADIENTS_RAY  ? tf_harness_ray_gradients(scene, gl_FragCoord.xy, h)
                                                          : fine;
-    // Filter hits only: a miss's uv and gradients are those of the unbounded surface, often enormous, and
-    // a hardware anisotropic sampler may spend unbounded time on them (lavapipe's does).
-    outColor = h.hit ? tf_harness_filter(h.uv, g.dUVdx, g.dUVdy) : scene.background;
+    tf_Lookup l = tf_harness_lookup(h, g);
+    vec4 color = tf_harness_filter(l.uv, l.dUVdx, l.dUVdy);
+    outColor = h.hit ? color : scene.background;
 }

@@ -13,7 +13,7 @@ struct tf_SceneParams {
     vec4 p0;         // plane: a point (uv = 0 there); cylinder: x radius, y length, z u-repeats, w v per unit
     vec4 axisU;      // plane: world vector of one unit of u
     vec4 axisV;      // plane: world vector of one unit of v
-    vec4 extent;     // xy: half extents in uv around 0 (hit test), zw: uv offset added after
+    vec4 extent;     // xy: half extents in uv around 0 (hit test), zw: uv offset added after (all scenes)
     vec4 background; // colour of pixels that hit nothing
     ivec4 kindSize;  // x: TF_SCENE_*, y: width, z: height, w: triangle count
 };
@@ -86,7 +86,7 @@ tf_Hit tf_triangle_hit(tf_SceneParams scene, int i, vec3 b, bool inside)
     vec3 a = tf_trianglePositions[3 * i].xyz;
     vec3 e1 = tf_trianglePositions[3 * i + 1].xyz - a, e2 = tf_trianglePositions[3 * i + 2].xyz - a;
     vec2 uv0 = tf_triangleUVs[3 * i].xy, d1 = tf_triangleUVs[3 * i + 1].xy - uv0, d2 = tf_triangleUVs[3 * i + 2].xy - uv0;
-    vec2 uv = uv0 + b.x * d1 + b.y * d2;
+    vec2 uv = uv0 + b.x * d1 + b.y * d2 + scene.extent.zw; // extent.zw: the camera path's slide (0 otherwise)
     float inverseDet = 1.0 / (d1.x * d2.y - d2.x * d1.y); // e = [dPdu dPdv] [d1 d2]
     vec3 dPdu = (e1 * d2.y - e2 * d1.y) * inverseDet, dPdv = (e2 * d1.x - e1 * d2.x) * inverseDet;
     return tf_Hit(inside, uv, b.z, cross(e1, e2), dPdu, dPdv);

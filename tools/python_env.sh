@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Creates or updates tools/.venv from tools/requirements.txt and prints the venv's python on the
+# last stdout line:  py=$(tools/python_env.sh | tail -1)
+# Quiet and fast when already up to date; pip's output goes to stderr so stdout stays parseable.
+# Needs Debian's python3-venv (tools/setup.sh installs it).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+venv=tools/.venv
+req=tools/requirements.txt
+stamp=$venv/.requirements-stamp
+py=$venv/bin/python
+
+# A venv whose interpreter no longer runs (e.g. system python replaced) is rebuilt from scratch.
+if [ -e "$venv" ] && ! "$py" -c '' 2>/dev/null; then
+  echo "python_env: $venv is broken, recreating" >&2
+  rm -rf "$venv"
+fi
+
+if [ ! -e "$venv" ]; then
+  base=/usr/bin/python3
+  [ -x "$base" ] || base=$(command -v python3) || { echo "python_env: python3 not found" >&2; exit 1; }
+  echo "python_env: creating $venv" >&2
+  if ! "$base" -m venv "$venv" >&2; then
+    rm -rf "$venv"  # a half-made venv (no pip) would otherwise look usable next time
+    echo "python_env: '$base -m venv' failed; install python3-venv (tools/setup.sh does)" >&2
+    exit 1
+  fi
+fi
+
+# Keep the venv out of git without touching .gitignore (python3.13's venv does the same).
+[ -f "$venv/.gitignore" ] || echo '*' >"$venv/.gitignore"
+
+if [ ! -f "$stamp" ] || [ "$req" -nt "$stamp" ]; then
+  echo "python_env: installing $req" >&2
+  "$py" -m pip install -q -r "$req" >&2
+  touch "$stamp"  # only after a successful install, so a failed one is retried
+fi
+
+echo "$PWD/$py"
