@@ -35,8 +35,10 @@ void set_facing_quad(SceneParams& scene, int height, double uv_per_pixel)
     double pixel_world = 2.0 * distance * double(scene.up.y) / double(height); // up is (0, tan_y, 0)
     double unit = pixel_world / uv_per_pixel;                                  // world length of one uv
     scene.p0 = glm::vec4(0.0f, 0.0f, float(distance), 0.0f);
-    scene.axis_u = glm::vec4(float(unit), 0.0f, 0.0f, 0.0f);
-    scene.axis_v = glm::vec4(0.0f, float(-unit), 0.0f, 0.0f); // v grows down the screen, like rows
+    // u grows to the right of the screen (the camera's right is world -x: forward x up with forward +z, up +y)
+    // and v down it, like rows: an image reads as it does in a viewer, not mirrored.
+    scene.axis_u = glm::vec4(float(-unit), 0.0f, 0.0f, 0.0f);
+    scene.axis_v = glm::vec4(0.0f, float(-unit), 0.0f, 0.0f);
 }
 
 // The triangles scene's mesh: a floor and a wall seen at grazing angles, a panel facing the camera whose
