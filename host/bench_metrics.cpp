@@ -14,6 +14,15 @@ void check_same_size(const Image& a, const Image& b)
                     std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" + std::to_string(b.height) + ")");
 }
 
+// A filter that writes NaN or Inf must not pass for black or white (the display transform clamps).
+bool all_finite(const Image& image)
+{
+    for (const glm::vec4& t : image.texels)
+        if (!std::isfinite(t.r) || !std::isfinite(t.g) || !std::isfinite(t.b))
+            return false;
+    return true;
+}
+
 } // namespace
 
 TimeSummary summarize_times(std::vector<double> ms)
@@ -29,6 +38,8 @@ TimeSummary summarize_times(std::vector<double> ms)
 double display_rmse(const Image& image, const Image& truth)
 {
     check_same_size(image, truth);
+    if (!all_finite(image) || !all_finite(truth))
+        return NAN;
     Image a = encode_srgb(image), b = encode_srgb(truth);
     double sum = 0;
     for (size_t i = 0; i < a.texels.size(); ++i)
@@ -39,7 +50,12 @@ double display_rmse(const Image& image, const Image& truth)
     return std::sqrt(sum / (3.0 * double(a.texels.size())));
 }
 
-double psnr_from_rmse(double rmse) { return rmse < 1e-5 ? 99.0 : std::min(99.0, -20.0 * std::log10(rmse)); }
+double psnr_from_rmse(double rmse)
+{
+    if (!std::isfinite(rmse))
+        return NAN;
+    return rmse < 1e-5 ? 99.0 : std::min(99.0, -20.0 * std::log10(rmse));
+}
 
 double display_flicker(const std::vector<Image>& frames, const std::vector<Image>& truth)
 {
@@ -48,6 +64,8 @@ double display_flicker(const std::vector<Image>& frames, const std::vector<Image
     std::vector<Image> f, g;
     for (size_t t = 0; t < frames.size(); ++t) {
         check_same_size(frames[t], truth[t]);
+        if (!all_finite(frames[t]) || !all_finite(truth[t]))
+            return NAN;
         f.push_back(encode_srgb(frames[t]));
         g.push_back(encode_srgb(truth[t]));
     }

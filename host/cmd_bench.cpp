@@ -129,7 +129,7 @@ int run_bench(const std::vector<std::string>& argv)
 
     fs::path out = args.require("--out");
     check_output_directory(out);
-    StagingDirectory staging{out.string() + ".partial-" + std::to_string(getpid())};
+    StagingDirectory staging{out.string() + ".tmp-" + std::to_string(getpid())};
     fs::create_directories(staging.path);
 
     GpuSession gpu(context_options_from(args));

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -61,9 +62,17 @@ Image read_pfm(const std::string& path)
     in >> magic >> width >> height >> scale;
     if (!in || magic != "PF")
         throw Error(path + ": not a colour PFM file (expected a \"PF\" header)");
-    if (width < 1 || height < 1 || width > max_side || height > max_side || scale == 0)
+    if (width < 1 || height < 1 || width > max_side || height > max_side || !std::isfinite(scale) || scale == 0)
         throw Error(path + ": bad PFM header (" + std::to_string(width) + "x" + std::to_string(height) + ")");
     in.get(); // the single whitespace byte that ends the header
+    // The length first: a tiny file must not make us allocate what its header claims.
+    std::streamoff start = in.tellg();
+    in.seekg(0, std::ios::end);
+    std::streamoff expected = start + std::streamoff(width * height * 12);
+    if (in.tellg() != expected)
+        throw Error(path + ": " + std::to_string(in.tellg() - start) + " bytes of pixels, a " + std::to_string(width) +
+                    "x" + std::to_string(height) + " PFM has " + std::to_string(width * height * 12));
+    in.seekg(start);
     bool little = scale < 0;
     Image image = make_image(int(width), int(height));
     std::vector<uint32_t> row(size_t(width) * 3);

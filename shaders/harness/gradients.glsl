@@ -11,19 +11,31 @@ tf_Gradients tf_harness_ray_gradients(tf_SceneParams scene, vec2 pixelCentre, tf
                                          tf_camera_ray_dy(scene), h.t, h.normal, h.dPdu, h.dPdv);
 }
 
-// What a pixel filters. Every lane filters, hit or miss, and the result is chosen afterwards: behind a
-// branch, lavapipe still ran the lookup for the missed lanes of a SIMD batch, with the uv and gradients
-// of the unbounded surface (enormous past its horizon), and its anisotropic sampler spent a minute a
-// frame on the slanted scene. A miss filters a tiny isotropic footprint at the texture's centre instead.
+// What a pixel filters. Every lane filters, hit or miss, and the hit picks the result afterwards: behind
+// a branch, lavapipe still ran the lookup for the missed lanes of a SIMD batch. Its anisotropic sampler
+// is an EWA that scans the bounding box of an ellipse made from the quad's uv differences (not the
+// gradients passed), for as long as any lane of the batch, masked ones included, has texels left. Missed
+// lanes carried the unbounded surface's uv, enormous near its horizon, and one frame of the plane or
+// the slanted scene took up to a minute. So a missed lane takes the uv of a quad neighbour that hit (no
+// spread for the ellipse), or 0.5 in an all-miss quad, with gradients of one texture per pixel.
 struct tf_Lookup {
     vec2 uv, dUVdx, dUVdy;
 };
 
-tf_Lookup tf_harness_lookup(tf_Hit h, tf_Gradients g)
+// One step of that adoption. q = (uv, 1) where the lane has a uv (hit or adopted), (0, 0, 0) where not;
+// across, down: the horizontal and vertical quad neighbours' q. Two steps reach the diagonal neighbour.
+vec3 tf_adopt_uv(vec3 q, vec3 across, vec3 down)
+{
+    return q.z > 0.5 ? q : across.z > 0.5 ? across : down.z > 0.5 ? down : q;
+}
+
+vec3 tf_uv_or_none(tf_Hit h) { return h.hit ? vec3(h.uv, 1.0) : vec3(0.0); }
+
+tf_Lookup tf_harness_lookup(tf_Hit h, tf_Gradients g, vec3 adopted)
 {
     if (h.hit)
         return tf_Lookup(h.uv, g.dUVdx, g.dUVdy);
-    return tf_Lookup(vec2(0.5), vec2(1e-4, 0.0), vec2(0.0, 1e-4));
+    return tf_Lookup(adopted.z > 0.5 ? adopted.xy : vec2(0.5), vec2(1.0, 0.0), vec2(0.0, 1.0));
 }
 
 #endif

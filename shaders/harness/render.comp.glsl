@@ -29,7 +29,10 @@ void main()
     tf_Gradients quad = tf_compute_quad_gradients(h.uv, pc.gradients == TF_GRADIENTS_COARSE ? TF_DERIVATIVES_COARSE
                                                                                             : TF_DERIVATIVES_FINE);
     tf_Gradients g = pc.gradients == TF_GRADIENTS_RAY ? tf_harness_ray_gradients(scene, centre, h) : quad;
-    tf_Lookup l = tf_harness_lookup(h, g);
+    vec3 q = tf_uv_or_none(h);
+    [[unroll]] for (int step = 0; step < 2; ++step)
+        q = tf_adopt_uv(q, subgroupQuadSwapHorizontal(q), subgroupQuadSwapVertical(q));
+    tf_Lookup l = tf_harness_lookup(h, g, q);
     vec4 color = tf_harness_filter(l.uv, l.dUVdx, l.dUVdy);
     if (all(lessThan(pixel, size)))
         pixels[pixel.y * size.x + pixel.x] = h.hit ? color : scene.background;

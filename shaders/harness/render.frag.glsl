@@ -23,7 +23,14 @@ void main()
     tf_Gradients g = pc.gradients == TF_GRADIENTS_COARSE ? coarse
                      : pc.gradients == TF_GRADIENTS_RAY  ? tf_harness_ray_gradients(scene, gl_FragCoord.xy, h)
                                                          : fine;
-    tf_Lookup l = tf_harness_lookup(h, g);
+    // A neighbour's q from fine differences: exact where this lane's q is 0 (the only case adoption uses).
+    bvec2 odd = equal(ivec2(gl_FragCoord.xy) & 1, ivec2(1));
+    vec3 q = tf_uv_or_none(h);
+    [[unroll]] for (int step = 0; step < 2; ++step) {
+        vec3 dx = dFdxFine(q), dy = dFdyFine(q);
+        q = tf_adopt_uv(q, q + (odd.x ? -dx : dx), q + (odd.y ? -dy : dy));
+    }
+    tf_Lookup l = tf_harness_lookup(h, g, q);
     vec4 color = tf_harness_filter(l.uv, l.dUVdx, l.dUVdy);
     outColor = h.hit ? color : scene.background;
 }
