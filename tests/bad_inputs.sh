@@ -261,6 +261,33 @@ diff_contract() {
     expect_exit "diff: checker vs noise exits 1" 1 -- "$TEXFILTER" diff a16.png noise16.png
 }
 
+ground_truth_and_bench_errors() {
+    local truth=("$TEXFILTER" render --scene zoom --texture checker --filter ground-truth "${REF[@]}")
+    expect_error "render --spp 10 (not a square)" "square" out.png -- "${truth[@]}" --spp 10 -o out.png
+    expect_error "render --spp 0" --spp out.png -- "${truth[@]}" --spp 0 -o out.png
+    expect_error "render --spp 8192 (over 4096)" --spp out.png -- "${truth[@]}" --spp 8192 -o out.png
+    expect_error "render --pixel-filter bogus" bogus out.png -- "${truth[@]}" --pixel-filter bogus -o out.png
+    expect_error "sample --filter ground-truth" ground-truth out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter ground-truth --lookups good.csv --backend reference -o out.csv
+    local bench=("$TEXFILTER" bench --quick --scenes zoom)
+    expect_error "bench --filters bogus" bogus bench-out -- "${bench[@]}" --filters bogus --out bench-out
+    expect_error "bench --scenes bogus" bogus bench-out -- "$TEXFILTER" bench --quick --scenes bogus --out bench-out
+    expect_error "bench --spp 10" --spp bench-out -- "${bench[@]}" --spp 10 --out bench-out
+    expect_error "bench --frames 0" --frames bench-out -- "${bench[@]}" --frames 0 --out bench-out
+    expect_error "bench --flicker-frames 1" --flicker-frames bench-out -- "${bench[@]}" --flicker-frames 1 --out bench-out
+    expect_error "bench --timer bogus" bogus bench-out -- "${bench[@]}" --timer bogus --out bench-out
+    expect_error "bench without --out" --out - -- "${bench[@]}"
+    expect_error "bench --out in a missing directory" "parent directory" missing/bench-out -- \
+        "${bench[@]}" --out missing/bench-out
+    # An earlier run's results are never overwritten or touched.
+    mkdir -p earlier && echo keep >earlier/bench.json
+    expect_error "bench --out a non-empty directory" "not an empty directory" - -- "${bench[@]}" --out earlier
+    if [[ $(cat earlier/bench.json) != keep || $(ls earlier | wc -l) -ne 1 ]]; then
+        fail "bench --out a non-empty directory" "the earlier results were changed"
+    fi
+    rm -rf earlier
+}
+
 golden_errors() {
     expect_error "golden --case nonexistent" nonexistent golden-out -- \
         "$TEXFILTER" golden --case nonexistent --out golden-out
@@ -276,6 +303,8 @@ vulkan_errors() {
         "${no_driver[@]}" sample --texture checker --filter bilinear --lookups good.csv --backend vulkan -o out.csv
     EXPECT_ONE_LINE=1 expect_error "golden without a Vulkan driver" Vulkan golden-out -- \
         "${no_driver[@]}" golden --out golden-out
+    EXPECT_ONE_LINE=1 expect_error "bench without a Vulkan driver" Vulkan bench-out -- \
+        "${no_driver[@]}" bench --quick --out bench-out
 
     # --device 99 can only be told apart from "no driver" where a device exists.
     if ! "$TEXFILTER" info >/dev/null 2>&1; then
@@ -293,6 +322,7 @@ bad_flag_values
 bad_outputs
 bad_lookups
 diff_contract
+ground_truth_and_bench_errors
 golden_errors
 vulkan_errors
 
