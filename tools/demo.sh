@@ -2,7 +2,7 @@
 # Quick start, part 1: set up, build, and render the demo scenes on lavapipe into demo/.
 # Each scene is rendered unfiltered (nearest, level 0: the aliasing the seed slides show), with the
 # manual trilinear include and the hardware trilinear sampler for comparison; then the filter suite
-# (brilinear, aniso, ewa, sat) on the plane and the rasterized mesh.
+# (brilinear, aniso, ewa, sat) on the plane and the rasterized mesh, and the plane's ground truth.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./tools/build.sh
@@ -26,6 +26,7 @@ render tunnel mipcolors bilinear-mip
 for filter in brilinear aniso ewa sat sat-assembly hw-aniso; do
   render plane checker "$filter"
 done
+render plane checker ground-truth --pixel-filter gaussian # what every filter above is judged against
 render triangles checker trilinear
 render triangles checker trilinear --derivatives ray
 render mesh zoneplate aniso

@@ -8,7 +8,7 @@ packages=(
   libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers vulkan-tools
   glslang-tools glslc spirv-tools
   libglm-dev libopenimageio-dev openimageio-tools libglfw3-dev
-  python3
+  python3 python3-venv
 )
 
 missing=()
