@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# The includes as a product: install texfilter to a temporary prefix, check what landed there, and build
+# and run examples/ (a standalone project) against the installed package only.
+#
+# usage: install_consumer.sh BUILD_DIR REPO_ROOT
+set -euo pipefail
+if [[ $# -ne 2 ]]; then
+    echo "usage: $0 BUILD_DIR REPO_ROOT" >&2
+    exit 2
+fi
+build=$(realpath "$1")
+root=$(realpath "$2")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+prefix=$work/prefix
+
+cmake --install "$build" --prefix "$prefix" >/dev/null
+for file in bin/texfilter include/texfilter/texfilter.glsl include/texfilter/version.glsl \
+    lib/cmake/texfilter/texfilterConfig.cmake lib/cmake/texfilter/texfilterConfigVersion.cmake \
+    lib/cmake/texfilter/texfilterShaders.cmake share/doc/texfilter/CHANGELOG.md; do
+    [[ -s $prefix/$file ]] || { echo "install_consumer: $file was not installed" >&2; exit 1; }
+done
+# Every include of the source tree, and nothing of the harness.
+diff <(cd "$root/shaders/texfilter" && ls *.glsl) <(cd "$prefix/include/texfilter" && ls)
+"$prefix/bin/texfilter" --help >/dev/null
+
+# The package's version check: this minor version is found, another is refused.
+mkdir -p "$work/versions"
+cat >"$work/versions/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.22)
+project(versions NONE)
+find_package(texfilter ${WANT} REQUIRED)
+CMAKE
+version=$(sed -n 's/^project(texfilter VERSION \([0-9.]*\).*/\1/p' "$root/CMakeLists.txt")
+minor=${version%.*}
+cmake -S "$work/versions" -B "$work/versions/ok" -DWANT="$minor" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+if cmake -S "$work/versions" -B "$work/versions/no" -DWANT=99.0 -DCMAKE_PREFIX_PATH="$prefix" >/dev/null 2>&1; then
+    echo "install_consumer: find_package(texfilter 99.0) succeeded against $version" >&2
+    exit 1
+fi
+
+# The example, configured and built from the installed package alone (no path into this tree).
+generator=()
+command -v ninja >/dev/null && generator=(-G Ninja)
+cmake -S "$root/examples" -B "$work/example" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build "$work/example" >/dev/null
+mkdir -p "$work/out"
+# Validation layers on: the example counts their messages and fails on any.
+VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation "$work/example/texfilter_example" "$work/out"
+for image in fragment.ppm compute.ppm; do
+    [[ -s $work/out/$image ]] || { echo "install_consumer: the example wrote no $image" >&2; exit 1; }
+done
+echo "install_consumer: installed texfilter $version; the example built against it and rendered"
