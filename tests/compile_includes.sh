@@ -1,14 +1,24 @@
 #!/usr/bin/env bash
 # Compiles every shaders/texfilter/*.glsl include on its own, the way a user would include it, with
-# both glslangValidator and glslc, for #version 450 and 460, in a fragment and a compute shader.
+# both glslangValidator and glslc (target Vulkan 1.2, SPIR-V 1.5), in three stages:
+#   fragment and compute   #version 450 and 460 (gradients: dFdxFine / a buffer)
+#   ray generation (.rgen) #version 460 only: GL_EXT_ray_tracing requires GLSL 4.60 (both compilers refuse
+#                          450: "ray tracing shaders require ... version 460 or above"). Gradients come
+#                          from the hit shader's ray differentials through the ray payload; no dFdx.
 #
 # usage: compile_includes.sh GLSLANG GLSLC INCLUDE_DIR
 #   INCLUDE_DIR is the `shaders` folder: shaders write #include "texfilter/NAME.glsl".
 #
-# Each test shader includes exactly one file and calls one of its tf_ functions with a uniform
-# sampler2D, so a missing dependency (an include that relies on another being included first) or
-# code that only breaks once instantiated is caught. A second shader includes the file twice to check
-# its include guard. Prints one line per compile; exits non-zero if any fails.
+# Each test shader includes exactly one file and calls its tf_ functions with a uniform sampler2D (and
+# the SAT's two usampler2D), so a missing dependency (an include that relies on another being included
+# first) or code that only breaks once instantiated is caught. Everything the shader declares comes
+# after the include: an include must not depend on anything the user declares. Further shaders:
+#   - each include twice (450 fragment): its include guard;
+#   - derivatives.glsl with TF_COMPUTE_QUADS and GL_KHR_shader_subgroup_quad (compute, 450 and 460);
+#   - texfilter.glsl with every overridable define set before including (TF_COUNT_FETCHES,
+#     TF_COUNT_HW_LOOKUPS, TF_EWA_MAX_TEXELS, TF_ANISO_RATIO_SLACK; TF_COMPUTE_QUADS in compute), 460,
+#     all three stages.
+# Prints one line per compile; exits non-zero if any fails.
 set -euo pipefail
 
 if [[ $# -ne 3 ]]; then
@@ -25,51 +35,74 @@ trap 'rm -rf "$WORK"' EXIT
 failures=0
 compiles=0
 
-# The expression a test shader evaluates for include NAME (file name without .glsl). It may use
-# tex (sampler2D), uv, dx, dy (vec2 gradients) and s (tf_Sampler), and must give a vec4.
+# The expression a test shader evaluates for include NAME (file name without .glsl) in STAGE (frag,
+# comp, rgen). It may use tex (sampler2D), satLow, satHigh (usampler2D), uv, dx, dy (vec2 gradients,
+# provided by the stage's template) and s (tf_Sampler; declared only where common.glsl was included), and
+# must give a vec4. It must not call dFdx & co. itself: compute and ray-tracing stages have none.
 # A new include needs a case here: the default branch fails so that nobody forgets to add one.
 call_for() {
-    case "$1" in
+    local name=$1 stage=$2
+    case "$name" in
+    version) echo "vec4(float(TF_VERSION_MAJOR), float(TF_VERSION_MINOR), float(TF_VERSION_PATCH), float(TF_VERSION))" ;;
     common) echo "tf_fetch(tex, ivec2(uv * 16.0), 0, s.wrap)" ;;
     lod) echo "vec4(tf_lod(tex, dx, dy, s), float(tf_mip_level_nearest(tf_lod(tex, dx, dy, s))), 0.0, 1.0)" ;;
     nearest) echo "tf_nearest_mip(tex, uv, dx, dy, s) + tf_nearest(tex, uv, s)" ;;
-    bilinear) echo "tf_bilinear_mip(tex, uv, dx, dy, s) + tf_bilinear(tex, uv, s)" ;;
+    bilinear) echo "tf_bilinear_mip(tex, uv, dx, dy, s) + tf_bilinear(tex, uv, s) + tf_bilinear_level(tex, uv, 1, s.wrap)" ;;
     trilinear) echo "tf_trilinear(tex, uv, dx, dy, s)" ;;
-    derivatives) echo "vec4(tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).dUVdx, dx)" ;;
+    derivatives)
+        local rd="tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0))"
+        if [[ $stage == frag ]]; then # the quad macros exist only where dFdx does
+            echo "vec4($rd.dUVdx, dx) + vec4(tf_quad_gradients_fine(uv).dUVdx, tf_quad_gradients_coarse(uv).dUVdy)"
+        else
+            echo "vec4($rd.dUVdx, dx)"
+        fi
+        ;;
     brilinear) echo "tf_brilinear(tex, uv, dx, dy, s, 0.25)" ;;
     aniso) echo "tf_aniso(tex, uv, dx, dy, s, 8, TF_ANISO_GPU) + tf_aniso_hw(tex, uv, dx, dy, s, 8, TF_ANISO_FELINE)" ;;
     ewa) echo "tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_ewa_hw(tex, uv, dx, dy, s, 2.0, 16.0)" ;;
     sat) echo "tf_sat(satLow, satHigh, uv, dx, dy, s, 1.0) + tf_sat_assembly(satLow, satHigh, uv, dx, dy, s, 1.0, 4)" ;;
-    texfilter) echo "tf_trilinear(tex, uv, dx, dy, s) + tf_nearest_mip(tex, uv, dx, dy, s) + tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_sat(satLow, satHigh, uv, dx, dy, s, 1.0)" ;;
+    texfilter) echo "tf_trilinear(tex, uv, dx, dy, s) + tf_nearest_mip(tex, uv, dx, dy, s) + tf_brilinear(tex, uv, dx, dy, s, 0.25) + tf_aniso(tex, uv, dx, dy, s, 16, TF_ANISO_GPU) + tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_sat(satLow, satHigh, uv, dx, dy, s, 1.0) + vec4(tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).dUVdy, 0.0, 0.0)" ;;
     *) return 1 ;;
     esac
 }
 
-# write_shader VERSION STAGE NAME CALL INCLUDE_COUNT > file
-# The sampler is declared after the include on purpose: an include must not depend on anything the
-# user declares.
+# write_shader VERSION STAGE NAME CALL INCLUDE_COUNT [PRELUDE] > file
+# PRELUDE: lines placed before the include (defines a user may set, extensions). The sampler, textures
+# and buffers are declared after the include on purpose: an include must not depend on anything the
+# user declares. `s` is declared only where common.glsl was pulled in (version.glsl alone has no
+# tf_Sampler); every other include's call uses `s`, so one that lost common.glsl still fails.
 write_shader() {
-    local version=$1 stage=$2 name=$3 call=$4 count=$5
+    local version=$1 stage=$2 name=$3 call=$4 count=$5 prelude=${6:-}
     echo "#version $version"
     echo "#extension GL_GOOGLE_include_directive : require"
+    if [[ $stage == rgen ]]; then
+        echo "#extension GL_EXT_ray_tracing : require"
+    fi
+    if [[ -n $prelude ]]; then
+        echo "$prelude"
+    fi
     for ((i = 0; i < count; ++i)); do
         echo "#include \"texfilter/$name.glsl\""
     done
     echo "layout(set = 0, binding = 0) uniform sampler2D tex;"
     echo "layout(set = 0, binding = 3) uniform usampler2D satLow;  // the SAT's two integer words (sat.glsl)"
     echo "layout(set = 0, binding = 4) uniform usampler2D satHigh;"
-    if [[ $stage == frag ]]; then
+    case "$stage" in
+    frag)
         cat <<EOF
 layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 outColor;
 void main()
 {
     vec2 dx = dFdxFine(uv), dy = dFdyFine(uv);
+#ifdef TF_COMMON_GLSL
     tf_Sampler s = tf_sampler(TF_WRAP_REPEAT);
+#endif
     outColor = $call;
 }
 EOF
-    else
+        ;;
+    comp)
         # Compute shaders have no derivatives: the gradients come from a buffer, as in `texfilter sample`.
         cat <<EOF
 layout(local_size_x = 64) in;
@@ -80,11 +113,35 @@ void main()
 {
     uint i = gl_GlobalInvocationID.x;
     vec2 uv = lookups[i].uv, dx = lookups[i].dUVdx, dy = lookups[i].dUVdy;
+#ifdef TF_COMMON_GLSL
     tf_Sampler s = tf_sampler(TF_WRAP_CLAMP);
+#endif
     colors[i] = $call;
 }
 EOF
-    fi
+        ;;
+    rgen)
+        # Ray generation: no quads, no dFdx. The closest-hit shader (not compiled here) returns the hit's
+        # uv and its gradients from ray differentials (tf_ray_differential_gradients) in the payload.
+        cat <<EOF
+layout(set = 0, binding = 1) uniform accelerationStructureEXT topLevel;
+layout(set = 0, binding = 2, rgba32f) uniform writeonly image2D colors;
+struct Hit { vec2 uv, dUVdx, dUVdy; };
+layout(location = 0) rayPayloadEXT Hit hit;
+void main()
+{
+    ivec2 pixel = ivec2(gl_LaunchIDEXT.xy);
+    vec2 ndc = 2.0 * (vec2(pixel) + 0.5) / vec2(gl_LaunchSizeEXT.xy) - 1.0;
+    traceRayEXT(topLevel, gl_RayFlagsOpaqueEXT, 0xFF, 0, 0, 0, vec3(0.0), 0.0, normalize(vec3(ndc, 1.0)), 1e30, 0);
+    vec2 uv = hit.uv, dx = hit.dUVdx, dy = hit.dUVdy;
+#ifdef TF_COMMON_GLSL
+    tf_Sampler s = tf_sampler(TF_WRAP_MIRROR);
+#endif
+    imageStore(colors, pixel, $call);
+}
+EOF
+        ;;
+    esac
 }
 
 # run_compiler TOOL SHADER: one compiler on one shader, SPIR-V next to it.
@@ -112,8 +169,10 @@ compile() {
     done
 }
 
-# The guard must be named after the file (TF_NAME_GLSL) so two includes never share a guard.
-check_guard_name() {
+# The guard must be named after the file (TF_NAME_GLSL) so two includes never share a guard; the file
+# opens with its header comment ("// texfilter/NAME.glsl — ..."); dependencies are included by a path
+# relative to the including file ("common.glsl"), which every compiler resolves whatever -I says.
+check_layout() {
     local file=$1 name=$2 guard
     guard="TF_$(echo "$name" | tr '[:lower:]-' '[:upper:]_')_GLSL"
     if grep -q "^#ifndef $guard\$" "$file" && grep -q "^#define $guard\$" "$file"; then
@@ -122,6 +181,26 @@ check_guard_name() {
         printf 'FAIL  %-17s %s\n' "guard" "$name.glsl: no '#ifndef $guard' / '#define $guard' pair"
         failures=$((failures + 1))
     fi
+    if head -n 1 "$file" | grep -q "^// texfilter/$name.glsl "; then
+        printf 'ok    %-17s %s\n' "header" "$name.glsl"
+    else
+        printf 'FAIL  %-17s %s\n' "header" "$name.glsl: line 1 is not '// texfilter/$name.glsl — what it does'"
+        failures=$((failures + 1))
+    fi
+    if grep -n '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]\(texfilter/\|\.\./\|/\)' "$file"; then
+        printf 'FAIL  %-17s %s\n' "relative" "$name.glsl: include dependencies by bare name (\"common.glsl\")"
+        failures=$((failures + 1))
+    else
+        printf 'ok    %-17s %s\n' "relative" "$name.glsl"
+    fi
+}
+
+# check VERSION STAGE NAME CALL COUNT PRELUDE LABEL: writes one shader and compiles it with both tools.
+check() {
+    local version=$1 stage=$2 name=$3 call=$4 count=$5 prelude=$6 label=$7
+    local shader="$WORK/${name}_${version}_${count}_$((compiles / 2)).$stage"
+    write_shader "$version" "$stage" "$name" "$call" "$count" "$prelude" >"$shader"
+    compile "$version $stage $label" "$shader"
 }
 
 shopt -s nullglob
@@ -133,24 +212,50 @@ fi
 
 for file in "${includes[@]}"; do
     name=$(basename "$file" .glsl)
-    if ! call=$(call_for "$name"); then
+    if ! call_for "$name" frag >/dev/null; then
         echo "FAIL  $name.glsl: no test call for this include; add a case to call_for() in $0"
         failures=$((failures + 1))
         continue
     fi
-    check_guard_name "$file" "$name"
-    for version in 450 460; do
-        for stage in frag comp; do
-            shader="$WORK/${name}_$version.$stage"
-            write_shader "$version" "$stage" "$name" "$call" 1 >"$shader"
-            compile "$version $stage $name.glsl" "$shader"
+    check_layout "$file" "$name"
+    for stage in frag comp rgen; do
+        call=$(call_for "$name" "$stage")
+        if [[ $call == *dFd* || $call == *fwidth* ]]; then
+            echo "FAIL  $name.glsl: the $stage call uses implicit derivatives; take dx, dy from the template"
+            failures=$((failures + 1))
+            continue
+        fi
+        for version in 450 460; do
+            if [[ $stage == rgen && $version == 450 ]]; then
+                continue # GL_EXT_ray_tracing needs #version 460 (see the header)
+            fi
+            check "$version" "$stage" "$name" "$call" 1 "" "$name.glsl"
         done
     done
     # Included twice: without a working guard every function is defined twice.
-    shader="$WORK/${name}_twice.frag"
-    write_shader 450 frag "$name" "$call" 2 >"$shader"
-    compile "450 frag $name.glsl included twice" "$shader"
+    check 450 frag "$name" "$(call_for "$name" frag)" 2 "" "$name.glsl included twice"
 done
+
+# derivatives.glsl's compute quads: opt-in with TF_COMPUTE_QUADS and the subgroup quad extension.
+quads="#extension GL_KHR_shader_subgroup_quad : require
+#define TF_COMPUTE_QUADS"
+quadCall="vec4(tf_compute_quad_gradients(uv, TF_DERIVATIVES_FINE).dUVdx, tf_compute_quad_gradients(uv, TF_DERIVATIVES_COARSE).dUVdy) + vec4(vec2(tf_quad_pixel(ivec2(0), 8)), dx)"
+for version in 450 460; do
+    check "$version" comp derivatives "$quadCall" 1 "$quads" "derivatives.glsl with TF_COMPUTE_QUADS"
+done
+
+# Every define a user may override, set before the umbrella include (the counters are the user's own).
+options="uint fetchCount = 0u, hwLookupCount = 0u;
+#define TF_COUNT_FETCHES(n) fetchCount += uint(n)
+#define TF_COUNT_HW_LOOKUPS(n) hwLookupCount += uint(n)
+#define TF_EWA_MAX_TEXELS 15
+#define TF_ANISO_RATIO_SLACK (1.0 / 16.0)"
+optionsCall="$(call_for texfilter comp) + tf_ewa_hw(tex, uv, dx, dy, s, 2.0, 16.0) + tf_aniso_hw(tex, uv, dx, dy, s, 4, TF_ANISO_GPU) + vec4(float(fetchCount), float(hwLookupCount), 0.0, 0.0)"
+check 460 frag texfilter "$optionsCall" 1 "$options" "texfilter.glsl with every option overridden"
+check 460 comp texfilter "$optionsCall + vec4(tf_compute_quad_gradients(uv, TF_DERIVATIVES_FINE).dUVdx, 0.0, 0.0)" 1 \
+    "$quads
+$options" "texfilter.glsl with every option overridden and TF_COMPUTE_QUADS"
+check 460 rgen texfilter "$optionsCall" 1 "$options" "texfilter.glsl with every option overridden"
 
 echo "$compiles compiles of ${#includes[@]} includes, $failures failure(s)"
 [[ $failures -eq 0 ]]

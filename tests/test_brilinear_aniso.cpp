@@ -755,6 +755,23 @@ void gpu_checks()
         }
         return "max difference " + str(worst);
     });
+    // A finite uv whose texel coordinate overflows float (u * 512 > 3.4e38) once gave NaN weights (Inf - Inf)
+    // in every bilinear-based manual form; the coordinate is clamped to +-2^24 now. The value is that of some
+    // texel, so only finiteness and the [0, 1] range of a checker are asserted.
+    run_check("gpu huge finite uv: manual bilinear-based forms stay finite", [&] {
+        const std::vector<Lookup> huge = {{1e38, 0.5, 0.001, 0, 0, 0.001}, {-3e38, 1e38, 0.01, 0, 0, 0.02},
+                                          {3.4e38, -3.4e38, 0.003, 0.002, -0.001, 0.004}};
+        const std::string huge_path = (g_work / "huge.csv").string();
+        test::write_lookups_csv(huge_path, huge);
+        for (const std::string filter : {"bilinear", "bilinear-mip", "trilinear", "brilinear", "aniso"}) {
+            SampleResult r = sample("checker", flags(filter, Wrap::repeat), huge_path);
+            for (size_t i = 0; i < huge.size(); ++i)
+                for (int c = 0; c < 4; ++c)
+                    CHECK(std::isfinite(r.colors[i][c]) && r.colors[i][c] >= 0.0 && r.colors[i][c] <= 1.0,
+                          filter + " lookup " + std::to_string(i) + " channel " + std::to_string(c));
+        }
+        return std::string("5 filters x 3 lookups finite");
+    });
 }
 
 } // namespace

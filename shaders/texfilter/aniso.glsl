@@ -1,33 +1,38 @@
 // texfilter/aniso.glsl — anisotropic filtering: N trilinear probes along the footprint's major axis.
 //
-// Use:     vec4 c = tf_aniso(tex, uv, dUVdx, dUVdy, s, maxProbes, shape);    // probes from texelFetch
-//          vec4 c = tf_aniso_hw(tex, uv, dUVdx, dUVdy, s, maxProbes, shape); // probes = hardware lookups
-// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as in lod.glsl; maxProbes N_max, clamped to [1, 16];
-//          shape TF_ANISO_GPU or TF_ANISO_FELINE (any other value: TF_ANISO_GPU). J = [dUVdx dUVdy] in
-//          level-0 texels (DESIGN.md §3).
+// Use:     vec4 tf_aniso(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+//          vec4 tf_aniso_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes,
+//                           int shape); // the same probes as hardware trilinear lookups
+// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as in lod.glsl; maxProbes N_max, clamped to
+//          [1, TF_ANISO_MAX_PROBES = 16]; shape TF_ANISO_GPU or TF_ANISO_FELINE (any other value: TF_ANISO_GPU).
+//          TF_ANISO_RATIO_SLACK: define before including (default 1.0 / 64.0): the slack s_r in N below,
+//          which keeps near-isotropic footprints at one probe instead of flipping between 1 and 2.
+//          J = [dUVdx dUVdy] in level-0 texels (DESIGN.md §3).
 //   TF_ANISO_GPU (the Vulkan / EXT_texture_filter_anisotropic model): Px = |J e_x|, Py = |J e_y|,
-//          N = min(ceil(Pmax/Pmin − 1/64), N_max) (the 1/64 slack: see tf_aniso_count), λ = log2(Pmax/N) + lodBias, then lodMin/lodMax and the levels
-//          clamp it as in tf_lod. The major column A (dUVdx if Px >= Py, else dUVdy) is cut into N equal
+//          N = min(ceil(Pmax/Pmin − s_r), N_max), λ = log2(Pmax/N) + lodBias, then lodMin/lodMax and the
+//          levels clamp it as in tf_lod. The major column A (dUVdx if Px >= Py, else dUVdy) is cut into N equal
 //          pieces, one probe at the centre of each: uv + ((k + ½)/N − ½)·A, k = 0..N−1, weights 1/N.
 //          N = 1 is tf_trilinear, bit for bit.
 //   TF_ANISO_FELINE (after McCormack et al., "Feline", 1999): the pixel's pre-image as the ellipse
 //          J·(disk of radius ½), whose full axes are the singular values σ1 >= σ2 of J = U diag(σ1, σ2) Vᵀ
 //          (a closed-form 2x2 SVD: no atan, no iteration). The probes lie on the true major axis
 //          A = σ1·u1 (u1 = U e_x) at the same places as above, uv + t_k·A, t_k = (k + ½)/N − ½, with
-//          N = min(ceil(σ1/σ2 − 1/64), N_max) and λ = log2(max(σ2, σ1/N)) + lodBias: the minor axis's LOD, coarser
-//          only where N_max runs out. Weights: a Gaussian along the axis, w_k ∝ exp(−2 x_k²) with
+//          N = min(ceil(σ1/σ2 − s_r), N_max) and λ = log2(max(σ2, σ1/N)) + lodBias: the minor axis's LOD,
+//          coarser only where N_max runs out. Weights: a Gaussian along the axis, w_k ∝ exp(−2 x_k²) with
 //          x_k = 2 t_k in (−1, 1) the place in half major axes (α = 2, tf_ewa's default), i.e.
 //          σ = σ1/4 texels: a quarter pixel along the major axis, about what each probe's own trilinear
 //          footprint gives across it, so the filter is roughly round in screen space. Weights sum to 1.
 //          N = 1 is one trilinear probe at λ = log2(σ1): tf_trilinear where J's columns are orthogonal
 //          (then σ1 = max(Px, Py)), a little blurrier where they are not.
-// Taps:    tf_aniso does every probe from texelFetch (two bilinear levels, like tf_trilinear).
-//          tf_aniso_hw takes each probe as one textureLod(tex, uv_k, λ) through the sampler bound with the
-//          texture, which must filter linearly in both (min and mip) with the wrap mode in s.wrap and
-//          apply no bias (λ already holds it) and no clamp narrower than the levels. It differs from
-//          tf_aniso only by the sampler's precision (subTexelPrecisionBits, mipmapPrecisionBits).
+// Needs:   tex with a full MIP chain. tf_aniso: any sampler2D (every probe from texelFetch, two bilinear
+//          levels, like tf_trilinear). tf_aniso_hw: each probe is one textureLod(tex, uv_k, λ) through the
+//          sampler bound with the texture, which must filter linearly in both (min/mag and mipmapMode)
+//          with the wrap mode in s.wrap, and apply no bias (λ already holds it) and no LOD clamp narrower
+//          than the levels. It differs from tf_aniso only by the sampler's precision
+//          (subTexelPrecisionBits, mipmapPrecisionBits).
 // Cost:    tf_aniso 8N texel fetches (4N where λ sits on a level or is clamped to the last one),
 //          tf_aniso_hw N hardware lookups; N <= 16 for every input, the loop never runs more than 16 times.
+//          Plane scene, N_max 16 (docs/FILTERS.md): 31.5 fetches on average (max 128); hardware taps 4.9.
 // Degenerate input: zero gradients give one probe on the finest level (λ clamped from −∞); NaN or ±Inf
 //          gradients (or a J entry past float range, |dUVdx|·size >= 2^128) give one probe on the
 //          coarsest level, as tf_lod does; a zero minor axis (one column zero, parallel columns) gives

@@ -1,11 +1,15 @@
-// texfilter/bilinear.glsl — manual bilinear lookups from texelFetch (4 fetches).
+// texfilter/bilinear.glsl — manual bilinear lookups from texelFetch (Vulkan LINEAR filtering, one level).
 //
-// Use:     vec4 c = tf_bilinear(tex, uv, s);                     // level 0 only (no MIP chain)
-//          vec4 c = tf_bilinear_mip(tex, uv, dUVdx, dUVdy, s);   // one level chosen by LOD
-//          vec4 c = tf_bilinear_level(tex, uv, level, wrapMode); // a given level
-// Options: s.wrap selects repeat/clamp/mirror; LOD bias and clamp as in lod.glsl.
-//          Vulkan linear filtering: i0 = floor(u·w_l − ½), α = frac(u·w_l − ½), full float weights
-//          (hardware samplers round α to subTexelPrecisionBits, often 8). Non-finite uv returns vec4(0).
+// Use:     vec4 tf_bilinear(sampler2D tex, vec2 uv, tf_Sampler s);                             // level 0 only
+//          vec4 tf_bilinear_mip(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s); // level by LOD
+//          vec4 tf_bilinear_level(sampler2D tex, vec2 uv, int level, int wrapMode); // level in [0, levels−1]
+// Math:    i0 = floor(u·w_l − ½), α = frac(u·w_l − ½), in full float (hardware samplers round α to
+//          subTexelPrecisionBits, often 8). tf_bilinear_mip reads level tf_mip_level_nearest(tf_lod(...))
+//          (mipmapMode NEAREST: visible seams where the level changes).
+// Options: s.wrap; tf_bilinear_mip also s.lodBias, s.lodMin, s.lodMax as in lod.glsl. No defines.
+// Needs:   tex: any sampler2D (texelFetch; tf_bilinear_mip uses its MIP chain).
+// Cost:    4 texel fetches.
+// Degenerate input: non-finite uv gives vec4(0); NaN/±Inf gradients the coarsest level, zero the finest.
 // Example: vec4 c = tf_bilinear(tex, uv, tf_sampler(TF_WRAP_REPEAT));
 #ifndef TF_BILINEAR_GLSL
 #define TF_BILINEAR_GLSL
@@ -18,7 +22,8 @@ vec4 tf_bilinear_level(sampler2D tex, vec2 uv, int level, int wrapMode)
     if (!tf_finite(uv))
         return vec4(0.0);
     ivec2 size = tf_level_size(tex, level);
-    vec2 x = uv * vec2(size) - 0.5;
+    // Clamped: a finite uv whose texel coordinate overflows float would make x - floor(x) = Inf - Inf = NaN.
+    vec2 x = clamp(uv * vec2(size) - 0.5, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
     vec2 i0 = floor(x);
     vec2 a = x - i0;
     ivec2 xs = tf_wrap_pair(i0.x, size.x, wrapMode), ys = tf_wrap_pair(i0.y, size.y, wrapMode);

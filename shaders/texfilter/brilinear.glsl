@@ -1,10 +1,12 @@
 // texfilter/brilinear.glsl — "brilinear": trilinear only in a band around each MIP level transition,
 // a single bilinear lookup (4 fetches) everywhere else.
 //
-// Use:     vec4 c = tf_brilinear(tex, uv, dUVdx, dUVdy, s, band);
-// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as in lod.glsl. band B in [0, 1] (clamped): the width,
-//          in LOD units, of the trilinear band centred on each transition (LOD fraction f = 1/2 between
-//          levels lo = floor(λ) and lo + 1). The blend weight of level lo + 1 is
+// Use:     vec4  tf_brilinear(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+//          float tf_brilinear_weight(float f, float band); // the coarser level's weight for LOD fraction f
+// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as in lod.glsl. No defines.
+//          band B in [0, 1] (above 1: 1; NaN or below 0: 0): the width, in LOD units, of the trilinear
+//          band centred on each transition (LOD fraction f = 1/2 between levels lo = floor(λ) and lo + 1).
+//          The blend weight of level lo + 1 is
 //              w = clamp((f − (1 − B)/2) / B, 0, 1),
 //          continuous in λ for B > 0: 0 for f <= (1 − B)/2, a ramp of slope 1/B across the band, 1 for
 //          f >= (1 + B)/2.
@@ -18,10 +20,12 @@
 //          and the level blend stays continuous (no seam, unlike B = 0); outside the band the finer
 //          level is used up to f = 3/8 (at most 2^0.375 = 1.3 texels a pixel: mild under-filtering) and
 //          the coarser from f = 5/8 (slightly blurrier than trilinear).
+// Needs:   tex: any sampler2D with a full MIP chain (texelFetch only).
 // Cost:    4 texel fetches where w is 0 or 1 (outside the band, on a level, or clamped to the last
-//          level), 8 inside the band. The level that weighs 0 is never fetched.
-// NaN/±Inf gradients give the coarsest level (4 fetches), zero gradients the finest (lod.glsl);
-// non-finite uv gives vec4(0).
+//          level), 8 inside the band. The level that weighs 0 is never fetched (plane scene, band 0.25:
+//          4.6 on average, docs/FILTERS.md).
+// Degenerate input: NaN/±Inf gradients give the coarsest level (4 fetches), zero gradients the finest
+//          (lod.glsl); non-finite uv gives vec4(0).
 // Example: vec4 c = tf_brilinear(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT), 0.25);
 #ifndef TF_BRILINEAR_GLSL
 #define TF_BRILINEAR_GLSL

@@ -1,13 +1,29 @@
-// texfilter/common.glsl — shared pieces of every texfilter include: sampler options, wrap modes,
-// wrapped texel fetch.
+// texfilter/common.glsl — shared pieces of every texfilter include: the sampler options (tf_Sampler),
+// wrap modes, a wrapped texel fetch, the cost hooks. Pulls in version.glsl.
 //
-// Use:     #include "texfilter/common.glsl" (the filter includes pull it in themselves).
-// Options: none. Conventions (DESIGN.md §3): texel space u = s·w_l with w_l = max(1, w >> l);
-//          wrap modes act on integer texel coordinates before texelFetch, so any sampler2D works.
+// Use:     #include "texfilter/common.glsl"   (every other include pulls it in itself)
+//          tf_Sampler tf_sampler(int wrap);    // wrap, lodBias 0, lodMin 0, lodMax 1000 (all levels)
+//          tf_Sampler(int wrap, float lodBias, float lodMin, float lodMax) // the struct; needs lodMin <= lodMax
+//          vec4  tf_fetch(sampler2D tex, ivec2 texel, int level, int wrapMode); // wrapped texelFetch
+//          int   tf_wrap(float i, int size, int wrapMode); // integer-valued texel coordinate → [0, size)
+//          ivec2 tf_level_size(sampler2D tex, int level);  // max(1, textureSize(tex, 0) >> level)
+//          bool  tf_finite(vec2 v);                         // neither NaN nor ±Inf
+// Constants: TF_WRAP_REPEAT, TF_WRAP_CLAMP (clamp to edge), TF_WRAP_MIRROR (mirrored repeat; any other
+//          value acts as repeat). TF_MAX_TEXEL_COORD = 2^24: texel coordinates are clamped to ± that.
+//          TF_TAPS_MANUAL, TF_TAPS_HARDWARE: names for a caller's run-time choice of tf_X or tf_X_hw.
+// Options: define before the first include, e.g. to count work per lookup (`texfilter sample --stats`):
+//          TF_COUNT_FETCHES(n)     invoked with each number of texelFetch reads (default: nothing);
+//          TF_COUNT_HW_LOOKUPS(n)  invoked with each number of hardware filtered lookups (default: nothing).
+// Needs:   nothing bound: every function takes the sampler2D. Texel space (DESIGN.md §3): u = s·w_l with
+//          w_l = max(1, w >> l); wraps act on integer texel coordinates before texelFetch, so the sampler's
+//          own filter and address modes are not used and any sampler2D works (e.g. RGBA32F).
+// Cost:    tf_fetch: 1 texel fetch; the others none.
 // Example: tf_Sampler s = tf_sampler(TF_WRAP_REPEAT);
 //          vec4 c = tf_fetch(tex, ivec2(-1, 3), 0, s.wrap); // texel (w-1, 3) of level 0
 #ifndef TF_COMMON_GLSL
 #define TF_COMMON_GLSL
+
+#include "version.glsl"
 
 // Cost hooks: define these before the first include to count work (the harness's `sample --stats`
 // does); by default they vanish. n texels read with texelFetch / n hardware filtered lookups.

@@ -2,28 +2,37 @@
 // the fragment stage (fine or coarse), the same quads built in compute from subgroup quad operations,
 // and ray differentials for ray-tracing stages, where no quads exist.
 //
-// Use (fragment):  tf_Gradients g = tf_quad_gradients_fine(uv);   // dFdxFine / dFdyFine
-//                  tf_Gradients g = tf_quad_gradients_coarse(uv); // dFdxCoarse / dFdyCoarse
-// Use (compute):   #extension GL_KHR_shader_subgroup_quad : require   (before this include, with
-//                  #define TF_COMPUTE_QUADS: glslang predefines extension macros, so this is opt-in)
-//                  ivec2 pixel = tf_quad_pixel(tileOrigin, tileWidth); // which pixel this invocation shades
-//                  tf_Gradients g = tf_compute_quad_gradients(uv, TF_DERIVATIVES_FINE);
-// Use (any stage): tf_Gradients g = tf_ray_differential_gradients(dir, dDirdx, dDirdy, t, normal, dPdu, dPdv);
-// Options: none. The fragment helpers are macros, so this file also compiles in stages without dFdx.
-//          TF_COMPUTE_QUADS (define before including, compute stage, GL_KHR_shader_subgroup_quad enabled):
-//          adds tf_quad_pixel and tf_compute_quad_gradients.
-// Conventions (DESIGN.md §3): fine dx = p(x|1, y) − p(x&~1, y), dy = p(x, y|1) − p(x, y&~1) within each
+// Use (fragment):  tf_Gradients tf_quad_gradients_fine(vec2 uv);   // macro: dFdxFine / dFdyFine
+//                  tf_Gradients tf_quad_gradients_coarse(vec2 uv); // macro: dFdxCoarse / dFdyCoarse
+// Use (compute, with TF_COMPUTE_QUADS):
+//                  ivec2 tf_quad_pixel(ivec2 tileOrigin, int tileWidth); // the pixel this invocation shades
+//                  tf_Gradients tf_compute_quad_gradients(vec2 uv, int mode); // TF_DERIVATIVES_FINE / _COARSE
+// Use (any stage): tf_Gradients tf_ray_differential_gradients(vec3 dir, vec3 dDirdx, vec3 dDirdy, float t,
+//                                                             vec3 normal, vec3 dPdu, vec3 dPdv);
+//                  struct tf_Gradients { vec2 dUVdx, dUVdy; }; // change of uv one pixel right / down
+// Options: TF_COMPUTE_QUADS: define before including, in a compute shader that also enables
+//          #extension GL_KHR_shader_subgroup_quad : require (before the include: glslang predefines
+//          extension macros, so this is opt-in); adds tf_quad_pixel and tf_compute_quad_gradients.
+//          The fragment helpers are macros, so this file also compiles in stages without dFdx.
+// Needs:   nothing bound. Conventions (DESIGN.md §3, docs/DERIVATIVES.md):
+//          fine dx = p(x|1, y) − p(x&~1, y), dy = p(x, y|1) − p(x, y&~1) within each
 //          2x2 quad; coarse: one pair for the whole quad, taken from its top-left pixel (dx along the top
 //          row, dy down the left column). Vulkan lets coarse derivatives come from any pixel of the quad;
 //          the compute version and the CPU reference use the top-left one.
 // Compute layout: invocations form quads by subgroup invocation id (lanes 4q..4q+3 = one quad; lane bit 0
 //          = x, bit 1 = y), which is what subgroupQuadSwapHorizontal/Vertical exchange across. tf_quad_pixel
-//          maps a 1-D workgroup onto a tile of quads, using gl_SubgroupID and gl_SubgroupInvocationID so
-//          the quads match the hardware's quads whatever the subgroup size (lavapipe: 8; NVIDIA: 32; AMD:
-//          32/64); it needs a subgroup size that is a multiple of 4 (all of these) and a workgroup size that
-//          is a multiple of the subgroup size, and every invocation of a quad must run the quad operation
-//          (keep out-of-image invocations alive until after it, then discard their result).
-// Cost:    fine: 2 quad swaps; coarse: 3 quad broadcasts; ray differentials: ~40 flops.
+//          maps a 1-D workgroup onto a tile of quads (tileWidth even), using gl_SubgroupID and
+//          gl_SubgroupInvocationID so the quads match the hardware's quads whatever the subgroup size
+//          (lavapipe: 8; NVIDIA: 32; AMD: 32/64); it needs a subgroup size that is a multiple of 4 (all of
+//          these) and a workgroup size that is a multiple of the subgroup size (ask for full subgroups), and
+//          every invocation of a quad must run the quad operation (keep out-of-image invocations alive
+//          until after it, then discard their result).
+// Ray differentials (Igehy 1999): dir the ray direction (any length), dDirdx/dDirdy its change one pixel
+//          right/down, t the hit's ray parameter (hit = origin + t·dir), normal and the tangents dPdu, dPdv
+//          (position change per unit u, v) of the hit surface; pinhole camera (offset rays share the origin).
+// Cost:    no texel fetch. fine: 2 quad swaps; coarse: 3 quad broadcasts; ray differentials: ~40 flops.
+// Degenerate input: non-finite ray input, a ray parallel to the surface or dPdu parallel to dPdv give
+//          non-finite gradients, which every filter reads as "blur fully" (coarsest level).
 // Example: tf_Gradients g = tf_quad_gradients_fine(uv);
 //          vec4 c = tf_trilinear(tex, uv, g.dUVdx, g.dUVdy, tf_sampler(TF_WRAP_REPEAT));
 #ifndef TF_DERIVATIVES_GLSL

@@ -1,10 +1,16 @@
 // texfilter/lod.glsl — level of detail from explicit UV gradients (Vulkan "Scale Factor and LOD").
 //
-// Use:     float lambda = tf_lod(tex, dUVdx, dUVdy, s);  // biased and clamped, in [0, levels-1]
-// Options: none. rho = max(|J e_x|, |J e_y|) with J in level-0 texels, lambda = log2(rho) + lodBias,
-//          clamped to [lodMin, lodMax] and then to the existing levels.
-//          Zero gradients give the finest level; NaN or ±Inf gradients give the coarsest (a defined,
-//          blurry answer rather than undefined behaviour).
+// Use:     float tf_lod(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s); // biased, clamped: [0, levels−1]
+//          float tf_lod_unclamped(sampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias); // log2(ρ) + lodBias
+//          int   tf_mip_level_nearest(float lod); // mipmapMode NEAREST: ceil(lod + ½) − 1, ties to the finer
+// Math:    ρ = max(|J e_x|, |J e_y|) with J = [dUVdx dUVdy] in level-0 texels, λ = log2(ρ) + s.lodBias,
+//          clamped to [s.lodMin, s.lodMax] (lodMin <= lodMax, as Vulkan's minLod <= maxLod) and then to
+//          [0, levels − 1], levels = textureQueryLevels(tex).
+// Options: s.lodBias, s.lodMin, s.lodMax. No defines.
+// Needs:   tex: only its size and level count are queried.
+// Cost:    no texel fetch (one log2).
+// Degenerate input: zero gradients give the finest level allowed (λ = −∞ before clamping); NaN or ±Inf
+//          gradients, or ρ past float range, the coarsest (+∞): a defined, blurry answer, never undefined.
 // Example: int level = tf_mip_level_nearest(tf_lod(tex, dFdxFine(uv), dFdyFine(uv), s));
 #ifndef TF_LOD_GLSL
 #define TF_LOD_GLSL

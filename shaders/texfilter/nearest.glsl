@@ -1,9 +1,14 @@
-// texfilter/nearest.glsl — manual nearest-texel lookups from texelFetch (1 fetch).
+// texfilter/nearest.glsl — manual nearest-texel lookups from texelFetch (Vulkan NEAREST filtering).
 //
-// Use:     vec4 c = tf_nearest(tex, uv, s);                      // level 0 only (no MIP chain)
-//          vec4 c = tf_nearest_mip(tex, uv, dUVdx, dUVdy, s);    // one level chosen by LOD
-// Options: s.wrap selects repeat/clamp/mirror; LOD bias and clamp as in lod.glsl.
-//          Texel i = floor(u · w_l). Non-finite uv returns vec4(0).
+// Use:     vec4 tf_nearest(sampler2D tex, vec2 uv, tf_Sampler s);                             // level 0 only
+//          vec4 tf_nearest_mip(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s); // level by LOD
+//          vec4 tf_nearest_level(sampler2D tex, vec2 uv, int level, int wrapMode); // level in [0, levels−1]
+// Math:    texel i = floor(u·w_l). tf_nearest_mip reads level tf_mip_level_nearest(tf_lod(...)) (lod.glsl:
+//          mipmapMode NEAREST, no blend between levels).
+// Options: s.wrap; tf_nearest_mip also s.lodBias, s.lodMin, s.lodMax as in lod.glsl. No defines.
+// Needs:   tex: any sampler2D (texelFetch; tf_nearest_mip uses its MIP chain).
+// Cost:    1 texel fetch.
+// Degenerate input: non-finite uv gives vec4(0); NaN/±Inf gradients the coarsest level, zero the finest.
 // Example: vec4 c = tf_nearest_mip(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_CLAMP));
 #ifndef TF_NEAREST_GLSL
 #define TF_NEAREST_GLSL

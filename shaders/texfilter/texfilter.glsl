@@ -1,8 +1,20 @@
-// texfilter/texfilter.glsl — umbrella include: every texfilter filter family at once.
+// texfilter/texfilter.glsl — umbrella include: every texfilter include at once (version, common,
+// derivatives, lod, nearest, bilinear, trilinear, brilinear, aniso, ewa, sat).
 //
 // Use:     #extension GL_GOOGLE_include_directive : require
-//          #include "texfilter/texfilter.glsl"
-// Options: none beyond the individual includes'.
+//          #include "texfilter/texfilter.glsl"   // compile with -I<dir holding texfilter/>
+//          Every function of the individual includes; see each file's header and docs/API.md.
+//          Any stage (fragment, compute, ray tracing; #version 450 or 460, ray tracing 460): only
+//          tf_quad_gradients_* need the fragment stage, tf_compute_quad_gradients TF_COMPUTE_QUADS.
+// Options: the individual includes', defined before this include:
+//          TF_COUNT_FETCHES(n), TF_COUNT_HW_LOOKUPS(n) (common.glsl), TF_COMPUTE_QUADS (derivatives.glsl),
+//          TF_ANISO_RATIO_SLACK (aniso.glsl), TF_EWA_MAX_TEXELS (ewa.glsl); per call: tf_Sampler.
+// Needs:   what each called filter needs: a sampler2D with a full MIP chain for every mip filter (bound
+//          with a linear sampler of the same wrap mode for the _hw forms), the SAT's two usampler2D for
+//          tf_sat / tf_sat_assembly. Nothing is declared here: no bindings, no push constants.
+// Cost:    texel fetches a lookup: nearest 1, bilinear 4, trilinear 8 (4 on a level), brilinear 4 or 8,
+//          aniso 8 a probe (N <= 16), ewa the texels in the ellipse on 2 levels (capped), sat 32 (<= 128)
+//          (docs/FILTERS.md). Unused functions cost nothing: compilers drop them.
 // Example: vec4 c = tf_trilinear(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT));
 #ifndef TF_TEXFILTER_GLSL
 #define TF_TEXFILTER_GLSL

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Renders the pictures of docs/API.md with our own CLI: one per filter family on the same view (the
+# plane scene, a 512² checker, 256x256, the fragment stage with fine quad derivatives), the Gaussian-pixel
+# ground truth they are judged against, and three LOD pictures (mipcolors: each MIP level a flat colour).
+#
+# usage: tools/api_pictures.sh [TEXFILTER]   (default: build/texfilter; build it first: tools/build.sh)
+# Writes docs/images/api/*.png (8-bit sRGB, ~0.2 MB in all); a few seconds a picture on lavapipe.
+# The pictures are deterministic on one device and driver; re-run after changing a filter and commit them.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+texfilter=${1:-./build/texfilter}
+if [[ ! -x $texfilter ]]; then
+    echo "no texfilter binary at $texfilter: build it first (tools/build.sh)" >&2
+    exit 2
+fi
+out=docs/images/api
+rm -rf "$out" && mkdir -p "$out" # no picture of an earlier run left beside these
+
+# picture NAME SCENE TEXTURE FILTER [extra flags]: one 256x256 render into $out/NAME.png.
+picture() {
+    local name=$1 scene=$2 texture=$3 filter=$4
+    shift 4
+    "$texfilter" render --scene "$scene" --texture "$texture" --texture-size 512 --filter "$filter" \
+        --size 256x256 "$@" -o "$out/$name.png" >/dev/null
+    echo "$out/$name.png"
+}
+
+# The reference: the level-0 texture integrated over a Gaussian pixel (sigma 0.5 px), 256 samples a pixel.
+picture ground-truth plane checker ground-truth --pixel-filter gaussian
+# One per filter family, default options (the CLI's defaults are the includes' suggested values).
+picture nearest plane checker nearest           # tf_nearest: level 0 only
+picture nearest-mip plane checker nearest-mip   # tf_nearest_mip
+picture bilinear-mip plane checker bilinear-mip # tf_bilinear_mip
+picture trilinear plane checker trilinear       # tf_trilinear
+picture brilinear plane checker brilinear --band 0.25
+picture aniso plane checker aniso --probes 16 --aniso-shape gpu
+picture ewa plane checker ewa --alpha 2 --max-aniso 16
+picture sat plane checker sat
+picture sat-assembly plane checker sat-assembly --boxes 4
+picture hw-trilinear plane checker hw-trilinear # the hardware sampler (textureGrad), for comparison
+# LOD: the level each pixel reads. Quad derivatives jump across the tunnel's texture seam (u wraps from 1
+# to 0), ray differentials do not; on the plane trilinear blends the levels continuously.
+picture lod-tunnel-quads tunnel mipcolors nearest-mip
+picture lod-tunnel-ray tunnel mipcolors nearest-mip --derivatives ray
+picture lod-plane-trilinear plane mipcolors trilinear
+
+du -ch "$out"/*.png | tail -n 1
