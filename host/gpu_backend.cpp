@@ -174,7 +174,7 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
     cleanup.add([=] { vkDestroyDescriptorSetLayout(device, set_layout, nullptr); });
     VkPipelineLayout pipeline_layout = create_pipeline_layout(context, set_layout, VK_SHADER_STAGE_COMPUTE_BIT);
     cleanup.add([=] { vkDestroyPipelineLayout(device, pipeline_layout, nullptr); });
-    VkPipeline pipeline = create_compute_pipeline(context, tf_spirv_sample_comp, sizeof(tf_spirv_sample_comp),
+    VkPipeline pipeline = create_compute_pipeline(context, sample_comp, sizeof(sample_comp),
                                                   pipeline_layout, options.filter, cleanup);
 
     DescriptorSet descriptors = allocate_descriptor_set(context, set_layout);

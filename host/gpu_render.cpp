@@ -138,11 +138,11 @@ void check_compute_quads(const VulkanContext& context)
 VkPipeline create_graphics_pipeline(const VulkanContext& context, const GpuRenderer& r, Filter filter, Cleanup& cleanup)
 {
     VkDevice device = context.device;
-    VkShaderModule vert = r.mesh ? create_shader_module(context, tf_spirv_mesh_vert, sizeof(tf_spirv_mesh_vert))
-                                 : create_shader_module(context, tf_spirv_render_vert, sizeof(tf_spirv_render_vert));
+    VkShaderModule vert = r.mesh ? create_shader_module(context, mesh_vert, sizeof(mesh_vert))
+                                 : create_shader_module(context, render_vert, sizeof(render_vert));
     cleanup.add([=] { vkDestroyShaderModule(device, vert, nullptr); });
-    VkShaderModule frag = r.mesh ? create_shader_module(context, tf_spirv_mesh_frag, sizeof(tf_spirv_mesh_frag))
-                                 : create_shader_module(context, tf_spirv_render_frag, sizeof(tf_spirv_render_frag));
+    VkShaderModule frag = r.mesh ? create_shader_module(context, mesh_frag, sizeof(mesh_frag))
+                                 : create_shader_module(context, render_frag, sizeof(render_frag));
     cleanup.add([=] { vkDestroyShaderModule(device, frag, nullptr); });
 
     VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
@@ -352,7 +352,7 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
         check_compute_quads(context);
         create_pass_resources(context, texture, scene, options, VK_SHADER_STAGE_COMPUTE_BIT,
                               VK_SHADER_STAGE_COMPUTE_BIT, true, out.pass, cleanup);
-        out.pipeline = create_compute_pipeline(context, tf_spirv_render_comp, sizeof(tf_spirv_render_comp),
+        out.pipeline = create_compute_pipeline(context, render_comp, sizeof(render_comp),
                                                out.pass.pipeline_layout, options.filter, cleanup);
         return r;
     }
