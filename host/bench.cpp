@@ -87,9 +87,10 @@ void count_fetches(const VulkanContext& context, const GpuTexture& texture, cons
     result.hw_lookups_per_pixel = hardware / double(stats.size());
 }
 
+// One line a result as it finishes (the JSON has everything): reads are texel fetches plus hardware lookups.
 void print_result(const BenchResult& r)
 {
-    std::printf("%-9s %-13s %8.3f ms  x%5.2f baseline  %6.1f fetches/px  PSNR box %5.2f gauss %5.2f  flicker %.4f\n",
+    std::printf("%-9s %-13s %8.3f ms  x%5.2f baseline  %6.1f reads/px  PSNR box %5.2f gauss %5.2f  flicker %.4f\n",
                 to_string(r.scene).c_str(), r.filter.label.c_str(), r.time.median, r.vs_baseline,
                 r.fetches_per_pixel + r.hw_lookups_per_pixel, psnr_from_rmse(r.rmse_box), psnr_from_rmse(r.rmse_gaussian),
                 r.flicker_gaussian);
