@@ -28,9 +28,6 @@ if [ ! -e "$venv" ]; then
   fi
 fi
 
-# Keep the venv out of git without touching .gitignore (python3.13's venv does the same).
-[ -f "$venv/.gitignore" ] || echo '*' >"$venv/.gitignore"
-
 if [ ! -f "$stamp" ] || [ "$req" -nt "$stamp" ]; then
   echo "python_env: installing $req" >&2
   "$py" -m pip install -q -r "$req" >&2
