@@ -27,7 +27,7 @@ int Args::get_int(const std::string& flag, int fallback, int min, int max) const
     const std::string& text = values.at(flag);
     char* end = nullptr;
     long value = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || value < min || value > max)
+    if (text.empty() || end != text.c_str() + text.size() || value < min || value > max)
         throw Error("bad value for " + flag + ": '" + text + "' (expected an integer in [" + std::to_string(min) +
                     ", " + std::to_string(max) + "])");
     return int(value);
@@ -49,7 +49,7 @@ double Args::get_double(const std::string& flag, double fallback, double min, do
     const std::string& text = values.at(flag);
     char* end = nullptr;
     double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !std::isfinite(value) || value < min || value > max)
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || value < min || value > max)
         throw Error("bad value for " + flag + ": '" + text + "' (expected a number in [" + format_number(min) +
                     ", " + format_number(max) + "])");
     return value;
@@ -124,10 +124,10 @@ std::pair<int, int> parse_size(const std::string& flag, const std::string& text,
     std::string w = text.substr(0, x), h = text.substr(x + 1);
     char* end = nullptr;
     long width = std::strtol(w.c_str(), &end, 10);
-    if (w.empty() || *end)
+    if (w.empty() || end != w.c_str() + w.size())
         throw bad();
     long height = std::strtol(h.c_str(), &end, 10);
-    if (h.empty() || *end || width < min || width > max || height < min || height > max)
+    if (h.empty() || end != h.c_str() + h.size() || width < min || width > max || height < min || height > max)
         throw bad();
     return {int(width), int(height)};
 }

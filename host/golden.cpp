@@ -12,6 +12,11 @@ std::vector<GoldenCase> read_manifest(const std::string& path)
     std::ifstream in(path);
     if (!in)
         throw Error(path + ": cannot open the golden manifest");
+    return parse_manifest(in, path);
+}
+
+std::vector<GoldenCase> parse_manifest(std::istream& in, const std::string& path)
+{
     // A case's options are the render command's flags written key=value, so both share one parser.
     const std::vector<FlagSpec> specs = join({{{"--scene", "S", ""}, {"--size", "WxH", ""}, {"--fail", "X", ""},
                                                {"--stage", "S", ""}, {"--derivatives", "D", ""},

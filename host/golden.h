@@ -5,6 +5,7 @@
 #include "filter.h"
 #include "scene.h"
 #include "texture_source.h"
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -26,5 +27,7 @@ struct GoldenCase {
 // without "--" (wrap, lod-bias, texture-size, band, probes, taps, ...) plus size (WxH), fail,
 // failpercent, hardfail. '#' starts a comment. Throws naming file:line.
 std::vector<GoldenCase> read_manifest(const std::string& path);
+// The same from a stream; `name` stands for the file in messages (the fuzz target reads from memory).
+std::vector<GoldenCase> parse_manifest(std::istream& in, const std::string& name);
 
 } // namespace tf

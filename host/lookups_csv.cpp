@@ -17,6 +17,30 @@ std::string trim(const std::string& s)
     return b == std::string::npos ? "" : s.substr(b, e - b + 1);
 }
 
+// Text from the file as a message quotes it: at most quote_limit characters, non-printable bytes as
+// \xNN, and the full length when cut, so that a 50 MB line of garbage costs one short line on stderr.
+constexpr size_t quote_limit = 40;
+std::string quote(const std::string& s)
+{
+    std::string out = "'";
+    for (size_t i = 0; i < s.size() && i < quote_limit; ++i) {
+        unsigned char c = static_cast<unsigned char>(s[i]);
+        if (c >= 0x20 && c < 0x7f && c != '\\') {
+            out += char(c);
+        } else {
+            char hex[8];
+            std::snprintf(hex, sizeof(hex), "\\x%02x", c);
+            out += hex;
+        }
+    }
+    out += "'";
+    if (s.size() > quote_limit)
+        out += "... (" + std::to_string(s.size()) + " characters)";
+    return out;
+}
+
+const std::string utf8_bom = "\xEF\xBB\xBF";
+
 } // namespace
 
 std::vector<Lookup> read_lookups_csv(const std::string& path)
@@ -29,15 +53,23 @@ std::vector<Lookup> read_lookups_csv(const std::string& path)
     std::ifstream in(path);
     if (!in)
         throw Error(path + ": cannot open the lookups file");
+    return parse_lookups_csv(in, path);
+}
+
+std::vector<Lookup> parse_lookups_csv(std::istream& in, const std::string& path)
+{
     std::string line;
     if (!std::getline(in, line))
         throw Error(path + ": the lookups file is empty (expected a header u,v,dudx,dvdx,dudy,dvdy)");
+    // Editors on Windows save "UTF-8" with a byte order mark: invisible, so accept it.
+    if (line.compare(0, utf8_bom.size(), utf8_bom) == 0)
+        line.erase(0, utf8_bom.size());
     std::string header;
     for (char c : line)
         if (c != ' ' && c != '\t' && c != '\r')
             header += c;
     if (header != "u,v,dudx,dvdx,dudy,dvdy")
-        throw Error(path + ":1: expected the header 'u,v,dudx,dvdx,dudy,dvdy', got '" + trim(line) + "'");
+        throw Error(path + ":1: expected the header 'u,v,dudx,dvdx,dudy,dvdy', got " + quote(trim(line)));
     std::vector<Lookup> lookups;
     for (size_t number = 2; std::getline(in, line); ++number) {
         if (trim(line).empty())
@@ -52,8 +84,8 @@ std::vector<Lookup> read_lookups_csv(const std::string& path)
             std::string t = trim(cell);
             char* end = nullptr;
             double value = std::strtod(t.c_str(), &end);
-            if (t.empty() || *end != '\0')
-                throw Error(path + ":" + std::to_string(number) + ": '" + t + "' is not a number");
+            if (t.empty() || end != t.c_str() + t.size()) // all of it: "1\0junk" is not 1
+                throw Error(path + ":" + std::to_string(number) + ": " + quote(t) + " is not a number");
             if (n < 6)
                 values[n] = value;
             ++n;

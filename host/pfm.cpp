@@ -56,11 +56,19 @@ Image read_pfm(const std::string& path)
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw Error(path + ": cannot open");
-    std::string magic;
+    return read_pfm(in, path);
+}
+
+Image read_pfm(std::istream& in, const std::string& path)
+{
+    // The magic by its two bytes, not as a word: a big file without whitespace must not become one string.
+    char magic[2] = {};
+    in.read(magic, 2);
+    const bool colour = in && magic[0] == 'P' && magic[1] == 'F' && std::isspace(in.peek());
     long long width = 0, height = 0;
     double scale = 0;
-    in >> magic >> width >> height >> scale;
-    if (!in || magic != "PF")
+    in >> width >> height >> scale;
+    if (!in || !colour)
         throw Error(path + ": not a colour PFM file (expected a \"PF\" header)");
     if (width < 1 || height < 1 || width > max_side || height > max_side || !std::isfinite(scale) || scale == 0)
         throw Error(path + ": bad PFM header (" + std::to_string(width) + "x" + std::to_string(height) + ")");

@@ -2,6 +2,7 @@
 // Portable Float Map (colour "PF"): linear RGB float32 with no library behind it, so that every
 // build, the lean one without OpenImageIO included, can write renders and benchmark images.
 #include "image.h"
+#include <istream>
 #include <string>
 
 namespace tf {
@@ -15,5 +16,8 @@ void write_pfm(const std::string& path, const Image& image);
 // Reads what write_pfm writes (any PF file: either byte order); alpha 1. Throws tf::Error naming the
 // path and the problem (missing, not a colour PFM, truncated, absurd size).
 Image read_pfm(const std::string& path);
+// The same from a seekable binary stream; `name` stands for the file in messages (the fuzz target reads
+// from memory).
+Image read_pfm(std::istream& in, const std::string& name);
 
 } // namespace tf

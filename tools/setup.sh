@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs every Debian package texfilter needs to build, render and test.
+# clang and libclang-rt-14-dev (libFuzzer, ASan, UBSan runtimes) build the fuzz targets (docs/FUZZING.md).
 # Idempotent; run as root (or with sudo available) on Debian bookworm.
 set -euo pipefail
 
@@ -9,6 +10,7 @@ packages=(
   glslang-tools glslc spirv-tools
   libglm-dev libopenimageio-dev openimageio-tools libglfw3-dev
   python3 python3-venv
+  clang libclang-rt-14-dev
 )
 
 missing=()
