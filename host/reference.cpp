@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace tf {
@@ -36,6 +37,27 @@ double clamped_lod(const MipChain& chain, const Lookup& lookup, const SamplerOpt
 
 } // namespace
 
+bool finite_uv(const Lookup& l) {
+    const double fmax = std::numeric_limits<float>::max();
+    return std::abs(l.u) <= fmax && std::abs(l.v) <= fmax; // false for NaN too
+}
+
+bool finite_footprint(const MipChain& chain, const Lookup& l) {
+    if (chain.levels.empty()) throw Error("finite_footprint: empty MIP chain");
+    const double fmax = std::numeric_limits<float>::max();
+    const double overflow = 0x1p128 - 0x1p103; // float rounds |x| >= this to Inf
+    const double w0 = chain.levels[0].width, h0 = chain.levels[0].height;
+    for (double g : {l.dudx, l.dvdx, l.dudy, l.dvdy})
+        if (!(std::abs(g) <= fmax)) return false;
+    return std::abs(l.dudx * w0) < overflow && std::abs(l.dudy * w0) < overflow && std::abs(l.dvdx * h0) < overflow &&
+           std::abs(l.dvdy * h0) < overflow;
+}
+
+double reduce_uv(double u, Wrap wrap) {
+    if (wrap == Wrap::clamp) return std::clamp(u, -1.0, 2.0);
+    return u - 2.0 * std::nearbyint(0.5 * u); // repeat and mirror: whole periods of 2 (ties to even), into [-1, 1]
+}
+
 int wrap_texel(long long i, int size, Wrap wrap) {
     if (size < 1) throw Error("wrap_texel: size " + std::to_string(size) + " < 1");
     const long long n = size;
@@ -55,9 +77,7 @@ int wrap_texel(long long i, int size, Wrap wrap) {
 
 double reference_lod(const MipChain& chain, const Lookup& lookup, const SamplerOptions& options) {
     if (chain.levels.empty()) throw Error("reference_lod: empty MIP chain");
-    if (!std::isfinite(lookup.dudx) || !std::isfinite(lookup.dvdx) || !std::isfinite(lookup.dudy) ||
-        !std::isfinite(lookup.dvdy))
-        return INFINITY;
+    if (!finite_footprint(chain, lookup)) return INFINITY;
     const double w0 = chain.levels[0].width, h0 = chain.levels[0].height;
     const double rho_x = std::hypot(lookup.dudx * w0, lookup.dvdx * h0);
     const double rho_y = std::hypot(lookup.dudy * w0, lookup.dvdy * h0);
@@ -67,14 +87,16 @@ double reference_lod(const MipChain& chain, const Lookup& lookup, const SamplerO
 }
 
 glm::dvec4 reference_nearest(const Image& level, double u, double v, Wrap wrap) {
-    if (!std::isfinite(u) || !std::isfinite(v)) return glm::dvec4(0.0);
+    if (!finite_uv({u, v})) return glm::dvec4(0.0);
+    u = reduce_uv(u, wrap), v = reduce_uv(v, wrap);
     const auto i = (long long)std::floor(clamp_texel(u * level.width));
     const auto j = (long long)std::floor(clamp_texel(v * level.height));
     return fetch(level, i, j, wrap);
 }
 
 glm::dvec4 reference_bilinear(const Image& level, double u, double v, Wrap wrap) {
-    if (!std::isfinite(u) || !std::isfinite(v)) return glm::dvec4(0.0);
+    if (!finite_uv({u, v})) return glm::dvec4(0.0);
+    u = reduce_uv(u, wrap), v = reduce_uv(v, wrap);
     const double x = clamp_texel(u * level.width - 0.5), y = clamp_texel(v * level.height - 0.5);
     const double fx = std::floor(x), fy = std::floor(y);
     const double a = x - fx, b = y - fy;
@@ -99,33 +121,35 @@ glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options
         throw Error("hw-aniso has no CPU reference: anisotropic filtering is implementation-defined in Vulkan");
     if (options.filter == Filter::ground_truth)
         throw Error("ground-truth integrates over a pixel of a scene, not around one lookup: render it");
-    if (!std::isfinite(lookup.u) || !std::isfinite(lookup.v)) return glm::dvec4(0.0);
+    if (!finite_uv(lookup)) return glm::dvec4(0.0);
+    Lookup reduced = lookup; // whole periods first (the probes of aniso are reduced again, per probe)
+    reduced.u = reduce_uv(lookup.u, options.wrap), reduced.v = reduce_uv(lookup.v, options.wrap);
 
     const Image& base = chain.levels[0];
     switch (options.filter) {
     case Filter::nearest:
     case Filter::hw_nearest:
-        return reference_nearest(base, lookup.u, lookup.v, options.wrap);
+        return reference_nearest(base, reduced.u, reduced.v, options.wrap);
     case Filter::bilinear:
     case Filter::hw_bilinear:
-        return reference_bilinear(base, lookup.u, lookup.v, options.wrap);
+        return reference_bilinear(base, reduced.u, reduced.v, options.wrap);
     case Filter::nearest_mip:
     case Filter::bilinear_mip: {
         // Vulkan mipmapMode NEAREST: level = ceil(d + 1/2) - 1, so d = 0.5 still picks level 0.
-        const double d = clamped_lod(chain, lookup, options);
+        const double d = clamped_lod(chain, reduced, options);
         const Image& level = level_at(chain, int(std::ceil(d + 0.5)) - 1);
-        return options.filter == Filter::nearest_mip ? reference_nearest(level, lookup.u, lookup.v, options.wrap)
-                                                     : reference_bilinear(level, lookup.u, lookup.v, options.wrap);
+        return options.filter == Filter::nearest_mip ? reference_nearest(level, reduced.u, reduced.v, options.wrap)
+                                                     : reference_bilinear(level, reduced.u, reduced.v, options.wrap);
     }
     case Filter::trilinear:
     case Filter::hw_trilinear:
-        return reference_trilinear_at(chain, clamped_lod(chain, lookup, options), lookup.u, lookup.v, options.wrap);
+        return reference_trilinear_at(chain, clamped_lod(chain, reduced, options), reduced.u, reduced.v, options.wrap);
     case Filter::brilinear:
-        return reference_brilinear(chain, options, lookup);
+        return reference_brilinear(chain, options, reduced);
     case Filter::aniso:
-        return reference_aniso(chain, options, lookup);
+        return reference_aniso(chain, options, reduced);
     case Filter::ewa:
-        return reference_ewa(chain, options, lookup);
+        return reference_ewa(chain, options, reduced);
     case Filter::sat:
     case Filter::sat_assembly:
         return reference_sat(chain, options, lookup);

@@ -13,6 +13,18 @@ struct Lookup {
     double dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
 };
 
+// The degenerate-input rules every family shares (docs/API.md, "Degenerate input"); the shaders see float
+// input, so the reference reads any value past float range (|x| > FLT_MAX) as the ±Inf a float holds:
+// - finite_footprint: every gradient component finite and within float range, and every footprint entry
+//   (gradient · level-0 size) within it too (below 2^128 - 2^103, where float rounds to Inf); otherwise
+//   the footprint is non-finite (the coarsest level allowed; aniso one probe; ewa M = I);
+// - finite_uv: u and v finite and within float range, else the result is (0,0,0,0);
+// - reduce_uv: uv moved by whole periods of 2 into [-1, 1] (repeat, mirror; [-1, 1] itself unchanged) or
+//   clamped to [-1, 2] (clamp), before any texel coordinate is formed: the same texels, no overflow.
+bool finite_footprint(const MipChain& chain, const Lookup& lookup);
+bool finite_uv(const Lookup& lookup);
+double reduce_uv(double u, Wrap wrap);
+
 // Integer texel coordinate wrapped into [0, size) (Vulkan repeat, clamp-to-edge, mirrored repeat).
 int wrap_texel(long long i, int size, Wrap wrap);
 

@@ -23,10 +23,6 @@ double clamp_lod(const MipChain& chain, double d, const SamplerOptions& options)
     return std::clamp(d, 0.0, double(chain.levels.size() - 1));
 }
 
-bool finite_gradients(const Lookup& l) {
-    return std::isfinite(l.dudx) && std::isfinite(l.dvdx) && std::isfinite(l.dudy) && std::isfinite(l.dvdy);
-}
-
 // N = min(ceil(ratio - 1/64), max_n), at least 1; ratio = +inf (zero minor axis) gives max_n. The 1/64 slack
 // keeps isotropic footprints at one probe whatever float noise their derivatives carry.
 constexpr double ratio_slack = 1.0 / 64.0;
@@ -104,8 +100,8 @@ glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options,
     if (chain.levels.empty()) throw Error("reference_aniso: empty MIP chain");
     const int max_n = std::clamp(options.probes, 1, kMaxProbes);
     Probes p;
-    if (!finite_gradients(lookup))
-        p.lod = clamp_lod(chain, INFINITY, options); // one probe on the coarsest level
+    if (!finite_footprint(chain, lookup)) // NaN/±Inf or past float range (reference.h): one probe, coarsest level
+        p.lod = clamp_lod(chain, INFINITY, options);
     else if (options.aniso_shape == AnisoShape::feline)
         p = feline_probes(chain, options, lookup, max_n);
     else

@@ -1,27 +1,38 @@
 // EWA (elliptical weighted average), written from the definition in double precision: see
 // shaders/texfilter/ewa.glsl for the filter's contract. Where the shader scans row spans in float with
-// overflow guards, this scans each level's whole bounding box in double and tests every texel.
+// overflow guards and accumulates centred moments, this scans each level's whole bounding box in double,
+// tests every texel and solves the weighted least-squares normal equations directly.
 //
 //   J = [dUV/dx dUV/dy] in level-0 texels; the footprint ellipse J·Jᵀ has its minor semi-axis grown
-//   to major / max_aniso; lambda = max(log2 minor, log2(major / ((K-3)/4))) + bias, clamped.
-//   Level l: M = S·(clamped J·Jᵀ)·S + I, S = diag(w_l/w_0, h_l/h_0), shrunk so that its bounding box
-//   half-extents stay <= (K-1)/2 - 1/64; texels with r² = xᵀM⁻¹x <= 1 weigh exp(-alpha r²).
-//   Manual taps: the normalised sum over texels. Hardware taps: texels in 2x2 blocks at even indices,
-//   one exact bilinear lookup per block at its weight centroid, weighted by the block's total weight.
+//   to major / max_aniso; lambda = max(log2 minor, log2(major / ((K-3)/(4R)))) + bias, clamped.
+//   Level l: M = S·(clamped J·Jᵀ)·S + I, S = diag(w_l/w_0, h_l/h_0), shrunk so that the support's
+//   bounding box half-extents R·sqrt(M.xx), R·sqrt(M.yy) stay <= (K-1)/2 - 1/64; texels with
+//   r² = xᵀM⁻¹x < R² (R² = 2) weigh exp(-alpha r²) - exp(-alpha R²) (continuous at the edge).
+//   Manual taps: the weighted least-squares fit b + g·d over the texels (d = texel centre - centre),
+//   evaluated at d = 0 and clamped to the range of the texels read (a line fitted across a step can
+//   overshoot it): it reproduces a linear texture exactly, whichever texels the support catches.
+//   Hardware taps: texels in 2x2 blocks at even indices, one exact bilinear lookup per block at its
+//   weight centroid less the taps' common centroid offset (so that their weighted mean position is the
+//   centre), weighted by the block's total weight: exact on a linear texture too.
 #include "error.h"
 #include "reference.h"
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
+
+#include <glm/common.hpp>
 
 namespace tf {
 
 namespace {
 
 // TF_EWA_MAX_TEXELS's default in ewa.glsl: the loop cap K (texels per row and per column of a level).
-constexpr int kMaxTexels = 67;
+constexpr int kMaxTexels = 95;
+constexpr double kSupport = 2.0;                                  // R²: the weight's support is r² < R²
 constexpr double kHalfBox = 0.5 * (kMaxTexels - 1) - 1.0 / 64.0; // largest bounding-box half-extent
-constexpr double kMajorTexels = (kMaxTexels - 3) / 4.0;           // largest major semi-axis on the LOD's level
+// Largest major semi-axis (M's, without R) on the LOD's level: the support then fits the cap there.
+const double kMajorTexels = (kMaxTexels - 3) / (4.0 * std::sqrt(kSupport));
 constexpr double kMaxAlpha = 64.0;
 constexpr double kMaxTexel = 4503599627370496.0; // 2^52: beyond it doubles have no fraction
 
@@ -37,7 +48,7 @@ struct Footprint {
 
 Footprint footprint(const MipChain& chain, const SamplerOptions& options, const Lookup& l) {
     Footprint fp;
-    if (!std::isfinite(l.dudx) || !std::isfinite(l.dvdx) || !std::isfinite(l.dudy) || !std::isfinite(l.dvdy)) {
+    if (!finite_footprint(chain, l)) { // NaN/±Inf, or past float range (docs/API.md, degenerate input)
         fp.lambda = INFINITY;
         return fp;
     }
@@ -98,8 +109,8 @@ LevelEllipse level_ellipse(const MipChain& chain, int level, const Footprint& fp
     const double sx = double(img.width) / base.width, sy = double(img.height) / base.height;
     Sym d{sx * sx * fp.cov.xx, sx * sy * fp.cov.xy, sy * sy * fp.cov.yy};
     const double widest = std::max(d.xx, d.yy);
-    if (widest + 1.0 > kHalfBox * kHalfBox) { // the loop cap: shrink, same shape
-        const double k = (kHalfBox * kHalfBox - 1.0) / widest;
+    if (kSupport * (widest + 1.0) > kHalfBox * kHalfBox) { // the loop cap: shrink, same shape
+        const double k = (kHalfBox * kHalfBox / kSupport - 1.0) / widest;
         d = {k * d.xx, k * d.xy, k * d.yy};
     }
     LevelEllipse e;
@@ -112,13 +123,46 @@ LevelEllipse level_ellipse(const MipChain& chain, int level, const Footprint& fp
     return e;
 }
 
-// Gaussian weight of the texel with integer index (i, j), 0 outside the ellipse.
+// Offset of texel (i, j)'s centre from the lookup's centre, level texels.
+void offset(const LevelEllipse& e, double i, double j, double& dx, double& dy) {
+    dx = i - double(e.bx) + 0.5 - e.fx, dy = j - double(e.by) + 0.5 - e.fy;
+}
+
+// Weight of the texel with integer index (i, j): exp(-alpha r²) - exp(-alpha R²) inside the support,
+// 0 outside; scaled by exp(alpha R²)/alpha, i.e. expm1(alpha (R² - r²))/alpha (alpha 0: its limit R² - r²),
+// which the normalisation cancels.
 double weight(const LevelEllipse& e, long long i, long long j, double alpha) {
-    const double dx = double(i - e.bx) + 0.5 - e.fx, dy = double(j - e.by) + 0.5 - e.fy;
+    double dx, dy;
+    offset(e, double(i), double(j), dx, dy);
     const double det = e.m.xx * e.m.yy - e.m.xy * e.m.xy;
     const double r2 = (e.m.yy * dx * dx - 2.0 * e.m.xy * dx * dy + e.m.xx * dy * dy) / det;
-    return r2 <= 1.0 ? std::exp(-alpha * r2) : 0.0;
+    if (!(r2 < kSupport)) return 0.0;
+    return alpha > 0.0 ? std::expm1(alpha * (kSupport - r2)) / alpha : kSupport - r2;
 }
+
+// Weighted least squares: minimise sum w (t - b - g·d)² per channel, return b.
+struct Fit {
+    double w = 0, x = 0, y = 0, xx = 0, xy = 0, yy = 0; // sums of w, w·d, w·d·dᵀ
+    glm::dvec4 t{0.0}, tx{0.0}, ty{0.0};                // sums of w·t, w·dx·t, w·dy·t
+    glm::dvec4 lo{INFINITY}, hi{-INFINITY};             // the values' range, per channel
+    void add(double wt, double dx, double dy, const glm::dvec4& value) {
+        w += wt, x += wt * dx, y += wt * dy, xx += wt * dx * dx, xy += wt * dx * dy, yy += wt * dy * dy;
+        t += wt * value, tx += wt * dx * value, ty += wt * dy * value;
+        lo = glm::min(lo, value), hi = glm::max(hi, value);
+    }
+    // The fit clamped to the values' range: a line fitted across a step can overshoot it; a linear
+    // texture's value at the centre is inside the range (the 4 texel centres around it are in the support).
+    glm::dvec4 value() const { return glm::clamp(unclamped(), lo, hi); }
+    glm::dvec4 unclamped() const {
+        // Normal equations A·(b, gx, gy) = (t, tx, ty), A = [w x y; x xx xy; y xy yy]: Cramer's rule.
+        const double a11 = xx, a22 = yy;
+        const double det = w * (a11 * a22 - xy * xy) - x * (x * a22 - xy * y) + y * (x * xy - a11 * y);
+        if (!(det > 0.0)) return t / w; // a single sample (cannot happen with R² = 2; kept for safety)
+        // b = det([t x y; tx a11 xy; ty xy a22]) / det, per channel.
+        const glm::dvec4 num = t * (a11 * a22 - xy * xy) - x * (tx * a22 - xy * ty) + y * (tx * xy - a11 * ty);
+        return num / det;
+    }
+};
 
 // First and last texel index whose centre can lie within half-extent h of base + f.
 void box_range(long long base, double f, double h, long long& first, long long& last) {
@@ -133,18 +177,24 @@ glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, cons
     const Image& img = chain.levels[size_t(level)];
     const LevelEllipse e = level_ellipse(chain, level, fp, l, wrap);
     long long i0, i1, j0, j1;
-    box_range(e.bx, e.fx, std::sqrt(e.m.xx), i0, i1);
-    box_range(e.by, e.fy, std::sqrt(e.m.yy), j0, j1);
-    glm::dvec4 sum(0.0);
-    double total = 0.0;
+    box_range(e.bx, e.fx, std::sqrt(kSupport * e.m.xx), i0, i1); // the support's bounding box
+    box_range(e.by, e.fy, std::sqrt(kSupport * e.m.yy), j0, j1);
+    Fit fit;
     if (!hardware) {
         for (long long j = j0; j <= j1; ++j)
             for (long long i = i0; i <= i1; ++i)
                 if (const double w = weight(e, i, j, alpha); w > 0.0) {
-                    sum += w * glm::dvec4(img.at(wrap_texel(i, img.width, wrap), wrap_texel(j, img.height, wrap)));
-                    total += w;
+                    double dx, dy;
+                    offset(e, double(i), double(j), dx, dy);
+                    fit.add(w, dx, dy,
+                            glm::dvec4(img.at(wrap_texel(i, img.width, wrap), wrap_texel(j, img.height, wrap))));
                 }
     } else {
+        struct Tap {
+            double w, x, y; // weight; position in level texels (texel index + 1/2 + fraction)
+        };
+        std::vector<Tap> taps;
+        double w_sum = 0, x_sum = 0, y_sum = 0;
         for (long long bj = floor_div2(j0); bj <= floor_div2(j1); ++bj)
             for (long long bi = floor_div2(i0); bi <= floor_div2(i1); ++bi) {
                 const long long i = 2 * bi, j = 2 * bj;
@@ -152,15 +202,21 @@ glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, cons
                 const double w01 = weight(e, i, j + 1, alpha), w11 = weight(e, i + 1, j + 1, alpha);
                 const double w = w00 + w10 + w01 + w11;
                 if (w <= 0.0) continue;
-                // Texel coordinate 2b + 1/2 + a puts bilinear's i0 at 2b with fraction a.
-                const double a = (w10 + w11) / w, b = (w01 + w11) / w;
-                sum += w * reference_bilinear(img, (double(i) + 0.5 + a) / img.width, (double(j) + 0.5 + b) / img.height,
-                                              wrap);
-                total += w;
+                // Texel coordinate 2b + 1/2 + a puts bilinear's i0 at 2b with fraction a: the block's weight centroid.
+                const Tap t{w, double(i) + 0.5 + (w10 + w11) / w, double(j) + 0.5 + (w01 + w11) / w};
+                taps.push_back(t);
+                w_sum += t.w, x_sum += t.w * t.x, y_sum += t.w * t.y;
             }
+        if (!(w_sum > 0.0)) throw Error("ewa: no texel weighs anything (cannot happen: the nearest has r² <= 1/2)");
+        // Every tap moved by the same offset, so that their weighted mean position is the lookup's centre.
+        const double sx = x_sum / w_sum - (double(e.bx) + e.fx), sy = y_sum / w_sum - (double(e.by) + e.fy);
+        glm::dvec4 sum(0.0);
+        for (const Tap& t : taps)
+            sum += t.w * reference_bilinear(img, (t.x - sx) / img.width, (t.y - sy) / img.height, wrap);
+        return sum / w_sum;
     }
-    if (!(total > 0.0)) throw Error("ewa: no texel weighs anything (cannot happen: the nearest has r² <= 1/2)");
-    return sum / total;
+    if (!(fit.w > 0.0)) throw Error("ewa: no texel weighs anything (cannot happen: the nearest has r² <= 1/2)");
+    return fit.value();
 }
 
 } // namespace

@@ -142,6 +142,89 @@ void test_huge_and_nonfinite_uv() {
     }
 }
 
+// docs/API.md's degenerate-input table (issue 10 item 6) on the reference, every family, repeat and clamp,
+// a 512² checker (u = 3e38 overflows u·512 in float; the reference reads values past float range as the
+// ±Inf a float holds). tests/test_ewa.cpp runs the same table through `sample` on both backends.
+// - gradients 1e-30 = zero gradients (the finest level);
+// - gradients 1e30, 1e100, 1e154, 1e300, ±Inf, NaN: every mip family the 1x1 level's mean; sat the
+//   mean too (a box of the whole texture; with clamp only where the footprint is non-finite, 1e100 up);
+//   nearest, bilinear ignore gradients;
+// - uv 1e37, 1e38, 3e38, -3e38: what uv reduced by the wrap gives (repeat 0, clamp 2 or -1);
+// - uv or v 1e100, ±Inf, NaN: (0, 0, 0, 0).
+void test_degenerate_table() {
+    const tf::MipChain chain = tf::make_procedural("checker", 512);
+    const dvec4 mean(chain.levels.back().at(0, 0));
+    const double nan = NAN, inf = INFINITY, t = 1.0 / 512;
+    struct Family {
+        Filter filter;
+        tf::AnisoShape shape;
+        tf::Taps taps;
+        bool mip, sat;
+    };
+    using tf::AnisoShape;
+    using tf::Taps;
+    const std::vector<Family> families = {
+        {Filter::nearest, AnisoShape::gpu, Taps::manual, false, false},
+        {Filter::bilinear, AnisoShape::gpu, Taps::manual, false, false},
+        {Filter::nearest_mip, AnisoShape::gpu, Taps::manual, true, false},
+        {Filter::bilinear_mip, AnisoShape::gpu, Taps::manual, true, false},
+        {Filter::trilinear, AnisoShape::gpu, Taps::manual, true, false},
+        {Filter::brilinear, AnisoShape::gpu, Taps::manual, true, false},
+        {Filter::aniso, AnisoShape::gpu, Taps::manual, true, false},
+        {Filter::aniso, AnisoShape::gpu, Taps::hardware, true, false},
+        {Filter::aniso, AnisoShape::feline, Taps::manual, true, false},
+        {Filter::aniso, AnisoShape::feline, Taps::hardware, true, false},
+        {Filter::ewa, AnisoShape::gpu, Taps::manual, true, false},
+        {Filter::ewa, AnisoShape::gpu, Taps::hardware, true, false},
+        {Filter::sat, AnisoShape::gpu, Taps::manual, false, true},
+        {Filter::sat_assembly, AnisoShape::gpu, Taps::manual, false, true},
+    };
+    for (Wrap wrap : {Wrap::repeat, Wrap::clamp})
+        for (const Family& f : families) {
+            tf::SamplerOptions o;
+            o.filter = f.filter, o.aniso_shape = f.shape, o.taps = f.taps, o.wrap = wrap;
+            const std::string name = tf::to_string(f.filter) + " " + tf::to_string(f.shape) + " " +
+                                     tf::to_string(f.taps) + " " + tf::to_string(wrap);
+            auto at = [&](tf::Lookup l) {
+                try {
+                    return tf::reference_sample(chain, o, l);
+                } catch (const std::exception& e) {
+                    CHECK(!"degenerate input threw");
+                    std::fprintf(stderr, "  %s: %s\n", name.c_str(), e.what());
+                    return dvec4(NAN);
+                }
+            };
+            // eps: double rounding; sat's mean is of its 16-bit quantised texels (0.5/65535 from the float mean).
+            auto same = [&](const dvec4& got, const dvec4& want, const char* what, double eps = 1e-9) {
+                const bool ok = std::isfinite(got.x + got.y + got.z + got.w) && near(got, want, eps);
+                if (!ok)
+                    std::fprintf(stderr, "  degenerate table, %s, %s: got %s want %s\n", name.c_str(), what,
+                                 tf::test::show(got).c_str(), tf::test::show(want).c_str());
+                CHECK(ok);
+            };
+            const dvec4 zero = at({0.3, 0.6, 0, 0, 0, 0});
+            // The comparisons are within the family (the reference against itself at simpler input), so
+            // sat's quantisation cancels in all but the mean rows.
+            same(at({0.3, 0.6, 1e-30, 0, 0, 1e-30}), zero, "gradients 1e-30");
+            for (double g : {1e30, 1e100, 1e154, 1e300, inf, -inf, nan}) {
+                const dvec4 got = at({0.3, 0.6, g, 0, 0, g});
+                const std::string what = "gradients " + tf::test::show(g);
+                if (f.mip) same(got, mean, what.c_str());
+                else if (f.sat && !(g == 1e30 && wrap == Wrap::clamp)) same(got, mean, what.c_str(), 0.5 / 65535);
+                else if (!f.sat) same(got, zero, "gradients ignored");
+            }
+            for (double u : {1e37, 1e38, 3e38, -3e38}) {
+                const double uf = double(float(u)); // what the GPU reads
+                const double r = wrap == Wrap::repeat ? 0.0 : uf > 0 ? 2.0 : -1.0;
+                same(at({uf, 0.6, t, 0, 0, t}), at({r, 0.6, t, 0, 0, t}), "huge uv = reduced uv");
+            }
+            for (double u : {1e100, inf, -inf, nan}) {
+                same(at({u, 0.6, t, 0, 0, t}), dvec4(0.0), "non-finite u");
+                same(at({0.3, u, t, 0, 0, t}), dvec4(0.0), "non-finite v");
+            }
+        }
+}
+
 tf::MipChain square_chain(int size) { return single_level(tf::make_image(size, size)); }
 
 void test_lod() {
@@ -518,6 +601,7 @@ int main() {
     test_bilinear_2x2();
     test_bilinear_borders();
     test_huge_and_nonfinite_uv();
+    test_degenerate_table();
     test_lod();
     test_level_selection();
     test_mip_level_count();

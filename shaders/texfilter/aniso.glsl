@@ -36,7 +36,8 @@
 // Degenerate input: zero gradients give one probe on the finest level (λ clamped from −∞); NaN or ±Inf
 //          gradients (or a J entry past float range, |dUVdx|·size >= 2^128) give one probe on the
 //          coarsest level, as tf_lod does; a zero minor axis (one column zero, parallel columns) gives
-//          N = N_max; non-finite uv gives vec4(0).
+//          N = N_max; non-finite uv gives vec4(0); huge uv (and probes far outside [0, 1]) is moved by whole
+//          periods before each lookup (tf_reduce_uv), in both forms.
 // Example: vec4 c = tf_aniso(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT), 16, TF_ANISO_GPU);
 #ifndef TF_ANISO_GLSL
 #define TF_ANISO_GLSL
@@ -128,11 +129,12 @@ vec4 tf_aniso_probe(sampler2D tex, vec2 uv, float lod, int wrapMode)
     return mix(fine, tf_bilinear_level(tex, uv, lo + 1, wrapMode), f);
 }
 
-// One trilinear probe through the hardware sampler.
-vec4 tf_aniso_probe_hw(sampler2D tex, vec2 uv, float lod)
+// One trilinear probe through the hardware sampler, at uv moved by whole periods as the manual form's
+// bilinear lookups do (a sampler given |uv| >= ~1e37 returns NaN on lavapipe: uv·size overflows).
+vec4 tf_aniso_probe_hw(sampler2D tex, vec2 uv, float lod, int wrapMode)
 {
     TF_COUNT_HW_LOOKUPS(1);
-    return textureLod(tex, uv, lod);
+    return textureLod(tex, tf_reduce_uv(uv, wrapMode), lod);
 }
 
 vec4 tf_aniso_filter(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape,
@@ -142,7 +144,7 @@ vec4 tf_aniso_filter(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler 
         return vec4(0.0);
     tf_AnisoFootprint fp = tf_aniso_footprint(tex, dUVdx, dUVdy, s, maxProbes, shape);
     if (fp.probes == 1)
-        return hardware ? tf_aniso_probe_hw(tex, uv, fp.lod) : tf_aniso_probe(tex, uv, fp.lod, s.wrap);
+        return hardware ? tf_aniso_probe_hw(tex, uv, fp.lod, s.wrap) : tf_aniso_probe(tex, uv, fp.lod, s.wrap);
     vec4 sum = vec4(0.0);
     float weights = 0.0;
     for (int k = 0; k < TF_ANISO_MAX_PROBES; ++k) {
@@ -151,7 +153,7 @@ vec4 tf_aniso_filter(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler 
         float t = (float(k) + 0.5) / float(fp.probes) - 0.5;
         float w = shape == TF_ANISO_FELINE ? exp(-8.0 * t * t) : 1.0;
         vec2 p = uv + t * fp.axis;
-        sum += w * (hardware ? tf_aniso_probe_hw(tex, p, fp.lod) : tf_aniso_probe(tex, p, fp.lod, s.wrap));
+        sum += w * (hardware ? tf_aniso_probe_hw(tex, p, fp.lod, s.wrap) : tf_aniso_probe(tex, p, fp.lod, s.wrap));
         weights += w;
     }
     return sum / weights;

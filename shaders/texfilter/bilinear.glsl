@@ -9,7 +9,8 @@
 // Options: s.wrap; tf_bilinear_mip also s.lodBias, s.lodMin, s.lodMax as in lod.glsl. No defines.
 // Needs:   tex: any sampler2D (texelFetch; tf_bilinear_mip uses its MIP chain).
 // Cost:    4 texel fetches.
-// Degenerate input: non-finite uv gives vec4(0); NaN/±Inf gradients the coarsest level, zero the finest.
+// Degenerate input: non-finite uv gives vec4(0), huge uv is moved by whole periods first (tf_reduce_uv);
+//          NaN/±Inf gradients the coarsest level, zero the finest (docs/API.md, degenerate input).
 // Example: vec4 c = tf_bilinear(tex, uv, tf_sampler(TF_WRAP_REPEAT));
 #ifndef TF_BILINEAR_GLSL
 #define TF_BILINEAR_GLSL
@@ -22,8 +23,8 @@ vec4 tf_bilinear_level(sampler2D tex, vec2 uv, int level, int wrapMode)
     if (!tf_finite(uv))
         return vec4(0.0);
     ivec2 size = tf_level_size(tex, level);
-    // Clamped: a finite uv whose texel coordinate overflows float would make x - floor(x) = Inf - Inf = NaN.
-    vec2 x = clamp(uv * vec2(size) - 0.5, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
+    // uv moved by whole periods first (tf_reduce_uv): no finite uv makes the texel coordinate overflow float.
+    vec2 x = clamp(tf_reduce_uv(uv, wrapMode) * vec2(size) - 0.5, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
     vec2 i0 = floor(x);
     vec2 a = x - i0;
     ivec2 xs = tf_wrap_pair(i0.x, size.x, wrapMode), ys = tf_wrap_pair(i0.y, size.y, wrapMode);

@@ -8,6 +8,7 @@
 //          int   tf_wrap(float i, int size, int wrapMode); // integer-valued texel coordinate → [0, size)
 //          ivec2 tf_level_size(sampler2D tex, int level);  // max(1, textureSize(tex, 0) >> level)
 //          bool  tf_finite(vec2 v);                         // neither NaN nor ±Inf
+//          vec2  tf_reduce_uv(vec2 uv, int wrapMode);       // uv by whole periods into [-1, 1] (clamp: [-1, 2])
 // Constants: TF_WRAP_REPEAT, TF_WRAP_CLAMP (clamp to edge), TF_WRAP_MIRROR (mirrored repeat; any other
 //          value acts as repeat). TF_MAX_TEXEL_COORD = 2^24: texel coordinates are clamped to ± that.
 //          TF_TAPS_MANUAL, TF_TAPS_HARDWARE: names for a caller's run-time choice of tf_X or tf_X_hw.
@@ -96,5 +97,18 @@ vec4 tf_fetch(sampler2D tex, ivec2 texel, int level, int wrapMode)
 }
 
 bool tf_finite(vec2 v) { return !any(isnan(v)) && !any(isinf(v)); }
+
+// The same texels from a uv near [0, 1]: repeat and mirrored repeat move uv by whole periods of 2 (both
+// repeat every 2 in uv; 2 keeps the parity of texel indices for odd sizes) into [-1, 1], clamp clamps it
+// to [-1, 2] (past an edge by a whole texture every texel reads the edge). Exact in float (the result is
+// no larger than uv and a multiple of its spacing), and uv in [-1, 1] is unchanged. Every filter does this
+// first, so that no finite uv makes a texel coordinate (uv·size) overflow float and the manual and
+// hardware-tap forms see the same coordinates (docs/API.md, degenerate input).
+vec2 tf_reduce_uv(vec2 uv, int wrapMode)
+{
+    if (wrapMode == TF_WRAP_CLAMP)
+        return clamp(uv, -1.0, 2.0);
+    return uv - 2.0 * roundEven(0.5 * uv);
+}
 
 #endif

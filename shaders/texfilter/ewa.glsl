@@ -5,11 +5,11 @@
 //          vec4 tf_ewa_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha,
 //                         float maxAniso); // the same weights from hardware bilinear taps on 2x2 blocks
 // Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as everywhere (common.glsl, lod.glsl).
-//          alpha (2, as pbrt, is the usual choice): weight exp(-alpha r²), clamped to [0, 64]; NaN or
-//            negative -> 0 (a flat disc). Smaller alpha = a wider Gaussian = blurrier.
+//          alpha (2, as pbrt, is the usual choice): weight exp(-alpha r²) - exp(-alpha R²), clamped to
+//            [0, 64]; NaN or negative -> 0 (then 1 - r²/R²). Smaller alpha = a wider Gaussian = blurrier.
 //          maxAniso (e.g. 16): largest major/minor axis ratio; a thinner ellipse has its minor axis
 //            grown to major/maxAniso (below 1 or NaN: 1). Larger = sharper at grazing angles, more reads.
-//          TF_EWA_MAX_TEXELS: define before including (odd, >= 7; default 67): the loop cap K below.
+//          TF_EWA_MAX_TEXELS: define before including (odd, >= 7; default 95): the loop cap K below.
 // Needs:   tex with a full MIP chain. tf_ewa: any sampler2D (texelFetch only). tf_ewa_hw: the sampler
 //          bound with the texture must filter linearly (min/mag; any mipmapMode: the level is an integer)
 //          with the wrap mode in s.wrap, no LOD bias and no LOD clamp narrower than the levels (the
@@ -20,46 +20,53 @@
 //   semi-axes major >= minor (J's singular values); minor is raised to major/maxAniso. On level l
 //   (texel coordinates u·w_l) the filter uses M = S·(J·Jᵀ, clamped)·S + I with S = diag(w_l/w_0,
 //   h_l/h_0): the +I is the one-texel reconstruction term that makes zoom-in work. Every texel whose
-//   centre x (relative to uv·w_l) has r² = xᵀM⁻¹x <= 1 weighs exp(-alpha r²) (computed with exp(),
-//   no LUT); the sum is divided by the sum of the weights, which is >= exp(-alpha/2) > 0 since the
-//   nearest texel has r² <= ½. The weight steps from exp(-alpha) to 0 at the ellipse's edge (the
-//   truncated Gaussian of the spec; pbrt subtracts exp(-alpha) to make it continuous, we do not).
-// Width: r = 1 is one pixel from the pixel's centre, so alpha = 2 is a Gaussian of sigma 0.5 px cut
-//   at 1 px (0.41 px per axis after the cut): about one pixel wide. Against a box-pixel ideal it looks
-//   blurrier than box-shaped filters; against a Gaussian-pixel ideal it is the best (DESIGN.md §4).
-// Level rule: lambda = max(log2(minor), log2(major / ((K-3)/4))) + lodBias (semi-axes after the
+//   centre x (relative to uv·w_l) has r² = xᵀM⁻¹x < R² (R² = TF_EWA_SUPPORT = 2) weighs
+//   exp(-alpha r²) - exp(-alpha R²) (computed with exp(), no LUT): continuous, zero at the support's
+//   edge (as pbrt's), so no texel jumps in or out and float and double agree there.
+// Support R² = 2, not pbrt's 1, by measurement (docs/BENCHMARKS.md, texfilter bench --quick, manual
+//   taps, Gaussian-pixel truth): RMSE plane 0.0231 vs 0.0313, tunnel 0.0172 vs 0.0264, slanted
+//   0.0346 vs 0.0412, mesh 0.0381 vs 0.0438, flicker 0.0037 vs 0.0077 (plane); at twice the reads.
+//   At alpha 2 it is a Gaussian about one pixel wide (per-axis variance 0.21 in units of M).
+// Unbiased (issue 10): per level, a weighted least-squares line fit value + g·d over the texels read,
+//   evaluated at uv. A weighted mean of a discrete texel set is centred on its weight centroid, up to
+//   ~0.1 level texels off uv (2^l level-0 texels); the fit reproduces any linear texture exactly,
+//   whichever texels the support catches. Each level's result is clamped to the range of the texels it
+//   read (a line fitted across a step can overshoot it: up to 2 % of the step at alpha 8); linear
+//   textures stay exact, since the 4 texel centres around uv lie inside the support.
+// Level rule: lambda = max(log2(minor), log2(major / ((K-3)/(4R)))) + lodBias (semi-axes after the
 //   eccentricity clamp, level-0 texels), clamped to [lodMin, lodMax] and the existing levels. On the
 //   continuous level lambda the minor axis spans 2 texels (semi-axis 1, as pbrt); the two levels read,
 //   floor(lambda) and floor(lambda)+1, see it span 2..4 and 1..2 texels and are blended by
 //   frac(lambda), so there are no seams. The second term moves to a coarser level only when the major
-//   semi-axis would pass (K-3)/4 = 16 texels, i.e. never for maxAniso <= 16 at the default K.
+//   semi-axis would pass (K-3)/(4R) = 16.3 texels, i.e. never for maxAniso <= 16 at the default K.
 //   An isotropic footprint gets trilinear's lambda. lodBias -1: twice the texels across (4x the reads).
 // Hard cap (every input; a shader never hangs): per level at most K rows of at most K texels
-//   (tf_ewa_hw: K/2+1 rows of K/2+1 2x2 blocks). Where the LOD clamps (lodMax, lodBias) leave an
-//   ellipse whose bounding box is wider than K texels, it is shrunk, same shape, to fit (so it then
+//   (tf_ewa_hw: K/2+1 rows of K/2+1 2x2 blocks). Where the LOD clamps (lodMax, lodBias) leave a
+//   support whose bounding box is wider than K texels, it is shrunk, same shape, to fit (so it then
 //   aliases, like any LOD clamp). A 1x1 level is read once, whatever the ellipse.
-//   Gradients: zero -> lodMin's level (0 by default) with M = I, a one-texel Gaussian around uv;
-//   huge (1e30, 3e38) -> the coarsest level the clamps allow (normally the last, 1x1: the texture's
-//   mean); NaN or ±Inf in any component -> that same level with M = I (normally: the mean).
-//   Non-finite uv returns vec4(0).
+// Degenerate input (docs/API.md): zero gradients -> lodMin's level (0 by default) with M = I, a
+//   one-texel Gaussian around uv; huge (1e30, 3e38) -> the coarsest level the clamps allow (normally
+//   the last, 1x1: the texture's mean); NaN or ±Inf in any component, or a footprint entry
+//   (gradient·size) past float range -> that same level with M = I. Non-finite uv returns vec4(0);
+//   huge finite uv is first moved by whole periods (tf_reduce_uv), in both forms.
 // Hardware taps (tf_ewa_hw): the same weights, read through textureLod(tex, uv, level) on the sampler
 //   bound with the texture, which must filter linearly with the same wrap mode. Texels are paired in
 //   2x2 blocks anchored to even texel indices of the level (a fixed grid; one that followed the
 //   ellipse's bounding box made blotches near the horizon); one bilinear lookup per block, at the
-//   block's weight centroid, returns the block's weighted mean. Exact only where the four weights are
-//   separable (w00·w11 = w10·w01): for the Gaussian that is inside an axis-aligned ellipse. Otherwise,
-//   and where the edge cuts a block, a block is off by (w10·w01 - w00·w11)/W · (t00 - t10 - t01 + t11),
-//   at most ¼ of the texture's mixed difference (none on t = f(x) + g(y)); the sampler also rounds the
-//   tap position to its sub-texel precision (Vulkan allows 8 bits). Measured (alpha 2, 256² noise):
-//   RMS 0.007, max 0.09 vs manual.
-// Cost (measured, 256² noise, alpha 2, maxAniso 16): tf_ewa reads each texel inside the ellipse once
-//   on each level: isotropic footprints ~15 texels (at most ~24), 16:1 footprints ~175 (at most ~300);
-//   at most K² = 4489 per level whatever the input. tf_ewa_hw: one lookup per 2x2 block touching the
-//   ellipse, ~0.4-0.5 of those reads (isotropic ~7, 16:1 ~66): the thin ellipses' edge blocks are half
-//   empty. No early out for isotropic footprints: it is the same formula. Plane scene (docs/FILTERS.md):
-//   tf_ewa 36.8 fetches on average (max 300), tf_ewa_hw 14.6 lookups (max 110).
+//   block's weight centroid, weighted by the block's total weight. The taps' weighted mean position is
+//   their weight centroid, not uv, so a first pass sums the weights' moments and the second moves every
+//   tap by the centroid's offset: the taps then average to uv, exact on a linear texture (a bilinear
+//   lookup reproduces it wherever it lands). A positive-weighted mean of bilinear taps, so it cannot
+//   overshoot. It differs from tf_ewa by how each treats the texture's non-linear part (measured, alpha
+//   2, 256² noise: RMS 0.005, max 0.05) and by the sampler's sub-texel rounding (8 bits allowed).
+// Cost (texfilter sample --stats, alpha 2, maxAniso 16, 256² noise): tf_ewa reads each texel inside the
+//   support once on each level: isotropic footprints of 1..64 texels 29 on average (at most 46), 16:1
+//   footprints ~350 (at most ~600); at most K² = 9025 per level whatever the input. tf_ewa_hw: one
+//   lookup per 2x2 block touching the support (its weights are evaluated twice), ~0.35-0.4 of those reads as
+//   lookups (isotropic 12, 16:1 ~120). No early out for isotropic footprints: it is the same formula.
+//   Plane scene (docs/FILTERS.md): tf_ewa 73.5 fetches on average, tf_ewa_hw 26.0 lookups (R² = 1: 36.8, 14.6).
 #ifndef TF_EWA_MAX_TEXELS
-#define TF_EWA_MAX_TEXELS 67
+#define TF_EWA_MAX_TEXELS 95
 #endif
 
 #ifndef TF_EWA_GLSL
@@ -71,8 +78,12 @@
 
 #include "common.glsl"
 
-// Widens the row/column spans a little so that the r² <= 1 test, not rounding in the span, decides.
+// Widens the row/column spans a little so that the r² test, not rounding in the span, decides.
 const float TF_EWA_SPAN_MARGIN = 1.0 / 256.0;
+
+// The weight's support: r² = xᵀM⁻¹x < TF_EWA_SUPPORT (R², in the footprint's own units: r = 1 is one
+// pixel from its centre). Below, M is scaled by R² so that the loops test the support ellipse against 1.
+const float TF_EWA_SUPPORT = 2.0;
 
 // The ellipse of one lookup before any level: level-0 texel space, scaled by 1/m² (m = the largest
 // |gradient component|, so that 1e30 gradients do not overflow).
@@ -88,7 +99,9 @@ tf_EwaShape tf_ewa_shape(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
 {
     tf_EwaShape shape = tf_EwaShape(vec3(0.0), 0.0, 0.0, 0.0);
     float top = float(textureQueryLevels(tex) - 1);
-    if (!tf_finite(dUVdx) || !tf_finite(dUVdy)) {
+    vec2 size0 = vec2(textureSize(tex, 0));
+    // NaN/±Inf, or a footprint entry (gradient · size) past float range: non-finite, as in every family.
+    if (!tf_finite(dUVdx * size0) || !tf_finite(dUVdy * size0)) {
         lambda = 1e30; // the coarsest level the clamps allow
     } else {
         vec2 g = max(abs(dUVdx), abs(dUVdy));
@@ -96,7 +109,6 @@ tf_EwaShape tf_ewa_shape(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
         if (!(m > 1e-30)) {
             lambda = -1e30; // zero footprint: the finest level allowed
         } else {
-            vec2 size0 = vec2(textureSize(tex, 0));
             vec2 ax = dUVdx / m * size0, ay = dUVdy / m * size0; // columns of J/m, |entries| <= size
             float xx = ax.x * ax.x + ay.x * ay.x, xy = ax.x * ax.y + ay.x * ay.y, yy = ax.y * ax.y + ay.y * ay.y;
             float h = 0.5 * (xx - yy);
@@ -109,7 +121,8 @@ tf_EwaShape tf_ewa_shape(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
             // Clamped covariance = minor2·I + (major2 - minor2)·e1e1ᵀ, e1e1ᵀ the projector on the major axis.
             vec3 p1 = d > 0.0 ? 0.5 * vec3(1.0 + h / d, xy / d, 1.0 - h / d) : vec3(0.5, 0.0, 0.5);
             shape = tf_EwaShape(vec3(minor2, 0.0, minor2) + max(major2 - minor2, 0.0) * p1, major2, minor2, m);
-            const float majorTexels = 0.25 * float(TF_EWA_MAX_TEXELS - 3);
+            // On the LOD's level the support's major semi-axis stays inside the loop cap (see the header).
+            const float majorTexels = 0.25 * float(TF_EWA_MAX_TEXELS - 3) / sqrt(TF_EWA_SUPPORT);
             lambda = log2(m) + max(0.5 * log2(max(minor2, 1e-30)), 0.5 * log2(major2) - log2(majorTexels)) +
                      s.lodBias;
         }
@@ -121,10 +134,11 @@ tf_EwaShape tf_ewa_shape(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
     return shape;
 }
 
-// The ellipse on one level: M = (xx, xy, yy) in level texels², its determinant (>= 1), and the centre
-// uv·size split into an integer texel index `base` and `frac` in [0, 1), so that texel offsets from it
-// are exact in float. For repeat/mirror, base is moved by a multiple of 2·size into [0, 2·size): both
-// modes repeat every 2·size texels, and the parity that anchors tf_ewa_hw's 2x2 grid is kept.
+// The support ellipse on one level: R²·M = R²·(xx, xy, yy) in level texels², its determinant, and the
+// centre uv·size split into an integer texel index `base` and `frac` in [0, 1), so that texel offsets
+// from it are exact in float. For repeat/mirror, base is moved by a multiple of 2·size into
+// [0, 2·size): both modes repeat every 2·size texels, and the parity that anchors tf_ewa_hw's 2x2 grid
+// is kept. uv has been through tf_reduce_uv.
 void tf_ewa_level_ellipse(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShape shape, out vec3 M,
                           out float det, out vec2 base, out vec2 frac)
 {
@@ -133,15 +147,16 @@ void tf_ewa_level_ellipse(sampler2D tex, vec2 uv, int level, int wrapMode, tf_Ew
     vec3 D = vec3(sc.x * sc.x, sc.x * sc.y, sc.y * sc.y) * shape.cov;
     float k = 0.0;
     if (shape.m > 0.0) {
-        // Hard cap: bounding box half-extents sqrt(M.xx), sqrt(M.yy) <= halfBox, so that a row or
-        // column holds at most K texels. Shrinking is min(), so it is continuous in the footprint.
+        // Hard cap: the support's bounding box half-extents sqrt(R²·M.xx), sqrt(R²·M.yy) <= halfBox, so
+        // that a row or column holds at most K texels. Shrinking is min(), so it is continuous in the footprint.
         const float halfBox = 0.5 * float(TF_EWA_MAX_TEXELS - 1) - 1.0 / 64.0;
-        k = min(shape.m, sqrt((halfBox * halfBox - 1.0) / max(D.x, D.z)));
+        k = min(shape.m, sqrt((halfBox * halfBox / TF_EWA_SUPPORT - 1.0) / max(D.x, D.z)));
     }
     float k2 = k * k;
-    M = k2 * D + vec3(1.0, 0.0, 1.0);
-    // det = k⁴·det(D) + k²·trace(D) + 1, det(D) = sc.x²·sc.y²·major2·minor2: exact form, >= 1.
-    det = k2 * k2 * (sc.x * sc.x * sc.y * sc.y) * shape.major2 * shape.minor2 + k2 * (D.x + D.z) + 1.0;
+    M = TF_EWA_SUPPORT * (k2 * D + vec3(1.0, 0.0, 1.0));
+    // det(M_unscaled) = k⁴·det(D) + k²·trace(D) + 1, det(D) = sc.x²·sc.y²·major2·minor2: exact form, >= 1.
+    det = TF_EWA_SUPPORT * TF_EWA_SUPPORT *
+          (k2 * k2 * (sc.x * sc.x * sc.y * sc.y) * shape.major2 * shape.minor2 + k2 * (D.x + D.z) + 1.0);
     vec2 c = clamp(uv * size, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
     base = floor(c);
     frac = c - base;
@@ -149,10 +164,24 @@ void tf_ewa_level_ellipse(sampler2D tex, vec2 uv, int level, int wrapMode, tf_Ew
         base -= 2.0 * size * floor(base / (2.0 * size));
 }
 
-// r² = xᵀM⁻¹x for x = (dx, dy).
+// r²/R² = xᵀ(R²M)⁻¹x for x = (dx, dy): below 1 inside the support.
 float tf_ewa_r2(vec3 M, float det, float dx, float dy)
 {
     return (M.z * dx * dx - 2.0 * M.y * dx * dy + M.x * dy * dy) / det;
+}
+
+// The weight exp(-alpha r²) - exp(-alpha R²) (r2 = r²/R² here), continuous at the support's edge, divided
+// by alpha R² (the sums are normalised, so that alpha 0 has a limit: 1 - r²/R²). Near the edge, where
+// the difference would cancel (q < ½), exp(-alpha R²)·expm1(q)/(alpha R²) as a series, q = alpha R² (1 - r²/R²).
+float tf_ewa_weight(float r2, float alpha)
+{
+    float t = 1.0 - r2, aR2 = alpha * TF_EWA_SUPPORT, q = aR2 * t, edge = exp(-aR2);
+    if (q >= 0.5)
+        return (exp(-aR2 * r2) - edge) / aR2; // cancels by at most 1/(1 - exp(-1/2)) = 2.5
+    // expm1(q)/q to q^7/8!: the next term is below 1e-8 relative for q < 1/2.
+    float p = 1.0 + q * (1.0 / 2.0 + q * (1.0 / 6.0 + q * (1.0 / 24.0 + q * (1.0 / 120.0 + q * (1.0 / 720.0 +
+              q * (1.0 / 5040.0 + q * (1.0 / 40320.0)))))));
+    return edge * t * p;
 }
 
 // Texel offsets [lo, hi] (from base) of the row at dy from the centre whose centres lie in the
@@ -173,7 +202,48 @@ vec2 tf_ewa_rows(vec3 M, float fy)
     return vec2(ceil(fy - hy - 0.5 - TF_EWA_SPAN_MARGIN), floor(fy + hy - 0.5 + TF_EWA_SPAN_MARGIN));
 }
 
-// The filter on one level: weighted average of every texel inside the ellipse (texelFetch).
+// Weighted moments of one level's texels about the lookup's centre, d = texel centre - centre (in
+// tf_ewa_level's whitened coordinates): w = sum w, wd = sum w·d, wdd = sum w·(dx², dx·dy, dy²), t = sum w·(value - pivot), tx, ty =
+// sum w·dx·(value - pivot), sum w·dy·(value - pivot); pivot = the first texel's value (so that the sums
+// are small and a constant texture gives exactly its value); lo, hi = the texels' per-channel range.
+struct tf_EwaMoments {
+    float w;
+    vec2 wd;
+    vec3 wdd;
+    vec4 t, tx, ty, pivot, lo, hi;
+};
+
+// The weighted least-squares fit value + g·d over the samples, evaluated at the centre (d = 0): the
+// weighted mean, less the fitted gradient times the samples' centroid offset m. Exact for a linear
+// function whatever the discrete sample set (the weighted mean alone is off by m, up to ~0.1 texel of
+// the level); where the centroid is at the centre it is the weighted mean. The support holds the disc
+// of radius sqrt(R²) = 1.41 texels, so at least 3 of the 4 nearest texel centres, never on one line:
+// the 2x2 system is never singular (a single sample, impossible, would return the mean).
+vec4 tf_ewa_fit_unclamped(tf_EwaMoments s)
+{
+    if (!(s.w > 0.0))
+        return vec4(0.0);
+    float inv = 1.0 / s.w;
+    vec2 m = s.wd * inv;
+    vec4 mean = s.t * inv;
+    vec3 C = s.wdd * inv - vec3(m.x * m.x, m.x * m.y, m.y * m.y); // the positions' weighted covariance
+    float det = C.x * C.z - C.y * C.y;
+    if (!(det > 0.0))
+        return s.pivot + mean;
+    vec2 q = vec2(C.z * m.x - C.y * m.y, C.x * m.y - C.y * m.x) / det; // C⁻¹·m
+    return s.pivot + mean - q.x * (s.tx * inv - m.x * mean) - q.y * (s.ty * inv - m.y * mean);
+}
+
+// The fit clamped to the range of the texels read: a line fitted across a step edge can overshoot it
+// (by up to 2 % of the step at alpha 8 on a checker, none measured at alpha <= 2). The clamp keeps linear
+// textures exact: the 4 texel centres around uv lie in the support (the disc of radius 1.41 texels), so
+// uv is inside their hull and a linear texture's value there within their range.
+vec4 tf_ewa_fit(tf_EwaMoments s)
+{
+    return clamp(tf_ewa_fit_unclamped(s), s.lo, s.hi);
+}
+
+// The filter on one level: every texel inside the support (texelFetch), fitted (tf_ewa_fit).
 vec4 tf_ewa_level(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShape shape, float alpha)
 {
     vec3 M;
@@ -183,32 +253,63 @@ vec4 tf_ewa_level(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShape s
     ivec2 size = tf_level_size(tex, level);
     vec2 rowSpan = tf_ewa_rows(M, frac.y);
     int rows = int(clamp(rowSpan.y - rowSpan.x + 1.0, 0.0, float(TF_EWA_MAX_TEXELS)));
-    vec4 sum = vec4(0.0);
-    float weights = 0.0;
+    // Moments in whitened coordinates y = R·d, RᵀR = (R²M)⁻¹ (Cholesky, R upper triangular): the support
+    // is the unit disc there, so the fit's 2x2 system is well conditioned however thin the ellipse (the
+    // fit's value does not depend on the coordinates).
+    float r11 = sqrt(M.z / det), r12 = -M.y / (det * r11), r22 = inversesqrt(M.z);
+    tf_EwaMoments s = tf_EwaMoments(0.0, vec2(0.0), vec3(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0),
+                                    vec4(0.0));
     for (int k = 0; k < TF_EWA_MAX_TEXELS; ++k) {
         if (k >= rows)
             break;
-        float j = rowSpan.x + float(k), dy = j + 0.5 - frac.y;
+        float j = rowSpan.x + float(k), dy = j + 0.5 - frac.y, yy = r22 * dy, cx = r12 * dy;
         vec2 span = tf_ewa_row_span(M, det, frac.x, dy);
         int cols = int(clamp(span.y - span.x + 1.0, 0.0, float(TF_EWA_MAX_TEXELS)));
         int ty = tf_wrap(base.y + j, size.y, wrapMode);
+        // One row: y.y is constant, so its sums need only the y.x moments.
+        float rw = 0.0, rwx = 0.0, rwxx = 0.0;
+        vec4 rt = vec4(0.0), rtx = vec4(0.0);
         for (int n = 0; n < TF_EWA_MAX_TEXELS; ++n) {
             if (n >= cols)
                 break;
-            float i = span.x + float(n);
-            float r2 = tf_ewa_r2(M, det, i + 0.5 - frac.x, dy);
-            if (r2 <= 1.0) {
-                float w = exp(-alpha * r2);
+            float i = span.x + float(n), dx = i + 0.5 - frac.x;
+            float r2 = tf_ewa_r2(M, det, dx, dy);
+            if (r2 < 1.0) {
+                float w = tf_ewa_weight(r2, alpha), yx = r11 * dx + cx, wx = w * yx;
                 TF_COUNT_FETCHES(1);
-                sum += w * texelFetch(tex, ivec2(tf_wrap(base.x + i, size.x, wrapMode), ty), level);
-                weights += w;
+                vec4 t = texelFetch(tex, ivec2(tf_wrap(base.x + i, size.x, wrapMode), ty), level);
+                if (s.w + rw == 0.0) {
+                    s.pivot = t; // the first texel (an earlier one of weight 0 added nothing)
+                    s.lo = t;
+                    s.hi = t;
+                }
+                s.lo = min(s.lo, t);
+                s.hi = max(s.hi, t);
+                t -= s.pivot;
+                rw += w;
+                rwx += wx;
+                rwxx += wx * yx;
+                rt += w * t;
+                rtx += wx * t;
             }
         }
+        s.w += rw;
+        s.wd += vec2(rwx, yy * rw);
+        s.wdd += vec3(rwxx, yy * rwx, yy * yy * rw);
+        s.t += rt;
+        s.tx += rtx;
+        s.ty += yy * rt;
     }
-    return weights > 0.0 ? sum / weights : vec4(0.0);
+    return tf_ewa_fit(s);
 }
 
-// The same filter from hardware bilinear lookups: one per 2x2 block of texels 2b, 2b+1 on each axis.
+// The same filter from hardware bilinear lookups: one per 2x2 block of texels 2b, 2b+1 on each axis,
+// at the block's weight centroid, weighted by the block's total weight. Their weighted mean is centred
+// on the texels' weight centroid, not on the lookup's centre (the fit of tf_ewa_level needs 3 samples
+// not on a line, which a few merged blocks need not give): a first pass over the weights finds that
+// offset m, the second moves every tap by -m, which centres the taps' mean on uv. Exact on a linear
+// texture (a bilinear lookup reproduces it wherever it lands), the same as the fit where the weights
+// are symmetric.
 vec4 tf_ewa_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShape shape, float alpha)
 {
     const int maxBlocks = TF_EWA_MAX_TEXELS / 2 + 1; // K texels touch at most K/2+1 blocks
@@ -223,38 +324,50 @@ vec4 tf_ewa_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShap
     int blockRows = int(clamp(floor(0.5 * (rowSpan.y - firstRow)) + 1.0, 0.0, float(maxBlocks)));
     vec4 sum = vec4(0.0);
     float weights = 0.0;
-    for (int k = 0; k < maxBlocks; ++k) {
-        if (k >= blockRows)
-            break;
-        float j0 = firstRow + 2.0 * float(k);
-        float dy0 = j0 + 0.5 - frac.y, dy1 = dy0 + 1.0;
-        vec2 span0 = tf_ewa_row_span(M, det, frac.x, dy0), span1 = tf_ewa_row_span(M, det, frac.x, dy1);
-        float lo = min(span0.x <= span0.y ? span0.x : 1e30, span1.x <= span1.y ? span1.x : 1e30);
-        float hi = max(span0.x <= span0.y ? span0.y : -1e30, span1.x <= span1.y ? span1.y : -1e30);
-        if (lo > hi)
-            continue;
-        float firstCol = 2.0 * floor(0.5 * (lo + parity.x)) - parity.x;
-        int cols = int(clamp(floor(0.5 * (hi - firstCol)) + 1.0, 0.0, float(maxBlocks)));
-        for (int n = 0; n < maxBlocks; ++n) {
-            if (n >= cols)
+    vec2 moment = vec2(0.0), shift = vec2(0.0);
+    for (int pass = 0; pass < 2; ++pass) {
+        for (int k = 0; k < maxBlocks; ++k) {
+            if (k >= blockRows)
                 break;
-            float i0 = firstCol + 2.0 * float(n);
-            float dx0 = i0 + 0.5 - frac.x, dx1 = dx0 + 1.0;
-            vec4 r2 = vec4(tf_ewa_r2(M, det, dx0, dy0), tf_ewa_r2(M, det, dx1, dy0), tf_ewa_r2(M, det, dx0, dy1),
-                           tf_ewa_r2(M, det, dx1, dy1));
-            vec4 w = mix(vec4(0.0), exp(-alpha * r2), lessThanEqual(r2, vec4(1.0))); // w00, w10, w01, w11
-            float total = w.x + w.y + w.z + w.w;
-            if (total > 0.0) {
-                // Bilinear weights (1-a)(1-b), a(1-b), (1-a)b, ab reproduce w/total when separable:
-                // texel coordinate 2b + ½ + a puts the lookup's first texel at 2b with fraction a.
-                vec2 ab = vec2(w.y + w.w, w.z + w.w) / total;
-                TF_COUNT_HW_LOOKUPS(1);
-                sum += total * textureLod(tex, (base + vec2(i0, j0) + 0.5 + ab) / size, float(level));
-                weights += total;
+            float j0 = firstRow + 2.0 * float(k);
+            float dy0 = j0 + 0.5 - frac.y, dy1 = dy0 + 1.0;
+            vec2 span0 = tf_ewa_row_span(M, det, frac.x, dy0), span1 = tf_ewa_row_span(M, det, frac.x, dy1);
+            float lo = min(span0.x <= span0.y ? span0.x : 1e30, span1.x <= span1.y ? span1.x : 1e30);
+            float hi = max(span0.x <= span0.y ? span0.y : -1e30, span1.x <= span1.y ? span1.y : -1e30);
+            if (lo > hi)
+                continue;
+            float firstCol = 2.0 * floor(0.5 * (lo + parity.x)) - parity.x;
+            int cols = int(clamp(floor(0.5 * (hi - firstCol)) + 1.0, 0.0, float(maxBlocks)));
+            for (int n = 0; n < maxBlocks; ++n) {
+                if (n >= cols)
+                    break;
+                float i0 = firstCol + 2.0 * float(n);
+                float dx0 = i0 + 0.5 - frac.x, dx1 = dx0 + 1.0;
+                vec4 r2 = vec4(tf_ewa_r2(M, det, dx0, dy0), tf_ewa_r2(M, det, dx1, dy0), tf_ewa_r2(M, det, dx0, dy1),
+                               tf_ewa_r2(M, det, dx1, dy1));
+                vec4 w = vec4(tf_ewa_weight(r2.x, alpha), tf_ewa_weight(r2.y, alpha), tf_ewa_weight(r2.z, alpha),
+                              tf_ewa_weight(r2.w, alpha));
+                w = mix(vec4(0.0), w, lessThan(r2, vec4(1.0))); // w00, w10, w01, w11
+                float total = w.x + w.y + w.z + w.w;
+                if (total > 0.0) {
+                    // Bilinear weights (1-a)(1-b), a(1-b), (1-a)b, ab reproduce w/total when separable:
+                    // texel coordinate 2b + ½ + a puts the lookup's first texel at 2b with fraction a.
+                    vec2 ab = vec2(w.y + w.w, w.z + w.w) / total;
+                    if (pass == 0) {
+                        moment += total * (vec2(dx0, dy0) + ab);
+                        weights += total;
+                    } else {
+                        TF_COUNT_HW_LOOKUPS(1);
+                        sum += total * textureLod(tex, (base + vec2(i0, j0) + 0.5 + ab - shift) / size, float(level));
+                    }
+                }
             }
         }
+        if (!(weights > 0.0))
+            return vec4(0.0);
+        shift = moment / weights; // the taps' weighted centroid - the centre, level texels
     }
-    return weights > 0.0 ? sum / weights : vec4(0.0);
+    return sum / weights;
 }
 
 // One level: a 1x1 level is its texel whatever the ellipse (saves up to K² reads of it at the horizon).
@@ -273,6 +386,7 @@ vec4 tf_ewa_impl(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, f
 {
     if (!tf_finite(uv))
         return vec4(0.0);
+    uv = tf_reduce_uv(uv, s.wrap);
     float a = alpha >= 0.0 ? min(alpha, 64.0) : 0.0;
     float lambda;
     tf_EwaShape shape = tf_ewa_shape(tex, dUVdx, dUVdy, s, maxAniso, lambda);
