@@ -3,6 +3,8 @@
 #include "error.h"
 #include "sat.h"
 #include "vk_pass.h"
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include "sample_comp.h"
@@ -124,6 +126,7 @@ GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, b
         VkExtent2D sat_extent{uint32_t(sat.width + 1), uint32_t(sat.height + 1)};
         if (!with_sat)
             sat_extent = {1, 1};
+        t.sat_offset = sat.offset;
         t.sat_scale = sat.scale;
         t.sat_low = upload_image(context, VK_FORMAT_R32G32B32A32_UINT, {sat_extent}, {sat.low.data()},
                                  {sat.low.size() * sizeof(uint32_t)});
@@ -148,6 +151,24 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
                                   const std::vector<Lookup>& lookups, const SamplerOptions& options,
                                   std::vector<LookupStats>* stats)
 {
+    if (lookups.empty()) { // as the reference backend: no lookups, no results (and no zero-sized buffers)
+        if (stats)
+            stats->clear();
+        return {};
+    }
+    // hw-* lookups take a whole subgroup each, laid out as 2x2 quads (see sample.comp.glsl).
+    const bool quads = TF_SAMPLE_IN_QUADS(int(options.filter));
+    const uint32_t subgroup = context.info.subgroup_size;
+    if (quads && (subgroup == 0 || subgroup % 4 != 0 || TF_SAMPLE_LOCAL_SIZE % subgroup != 0))
+        throw Error("sample --filter " + to_string(options.filter) + " gives each lookup a subgroup of 2x2 quads, "
+                    "which subgroups of " + std::to_string(subgroup) + " invocations on " + context.info.name +
+                    " cannot hold");
+    const uint64_t invocations = uint64_t(lookups.size()) * (quads ? subgroup : 1);
+    const uint64_t groups = (invocations + TF_SAMPLE_LOCAL_SIZE - 1) / TF_SAMPLE_LOCAL_SIZE;
+    const uint32_t groups_x = uint32_t(std::min<uint64_t>(groups, 65535)); // maxComputeWorkGroupCount >= 65535
+    const uint64_t groups_y = (groups + groups_x - 1) / groups_x;
+    if (groups_y > 65535 || groups * TF_SAMPLE_LOCAL_SIZE > UINT32_MAX) // invocation indices are 32-bit
+        throw Error(std::to_string(lookups.size()) + " lookups are more than one sample pass can run");
     VkDevice device = context.device;
     Cleanup cleanup;
     const uint32_t count = uint32_t(lookups.size());
@@ -189,12 +210,12 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
     writes.push_back(write_buffer(descriptors.set, TF_BINDING_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &stats_info));
     vkUpdateDescriptorSets(device, uint32_t(writes.size()), writes.data(), 0, nullptr);
 
-    PushConstants push = make_push_constants(options, count, texture.sat_scale, TF_GRADIENTS_FINE);
+    PushConstants push = make_push_constants(options, count, texture.sat_offset, texture.sat_scale, TF_GRADIENTS_FINE);
     submit_and_wait(context, [&](VkCommandBuffer cb) {
         vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
         vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout, 0, 1, &descriptors.set, 0, nullptr);
         vkCmdPushConstants(cb, pipeline_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
-        vkCmdDispatch(cb, (count + TF_SAMPLE_LOCAL_SIZE - 1) / TF_SAMPLE_LOCAL_SIZE, 1, 1);
+        vkCmdDispatch(cb, groups_x, uint32_t(groups_y), 1);
         VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
         host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;

@@ -21,7 +21,7 @@ struct GpuImage {
 struct GpuTexture {
     GpuImage chain;              // RGBA32F, every MIP level
     GpuImage sat_low, sat_high;  // the summed-area table (1x1 zeros unless asked for)
-    float sat_scale = 1.0f;
+    glm::vec4 sat_offset{0.0f}, sat_scale{0.0f}; // SatTable::offset, ::scale (zeros without a table)
     int width = 0, height = 0, levels = 0;
 };
 

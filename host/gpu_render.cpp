@@ -346,7 +346,7 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
     out.width = uint32_t(scene.kind_size.y);
     out.height = uint32_t(scene.kind_size.z);
     out.background = {{scene.background.r, scene.background.g, scene.background.b, scene.background.a}};
-    out.push = make_push_constants(options, 0, texture.sat_scale, gradients_id(render.gradients));
+    out.push = make_push_constants(options, 0, texture.sat_offset, texture.sat_scale, gradients_id(render.gradients));
 
     if (out.compute) {
         check_compute_quads(context);

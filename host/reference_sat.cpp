@@ -1,7 +1,12 @@
 // CPU reference of the sat and sat-assembly filters (shaders/texfilter/sat.glsl), from the definition:
 // the mean of the box-reconstructed level-0 texture (texel (i, j) constant on [i, i+1) x [j, j+1)) over
 // an axis-aligned box, by brute force over every texel the box touches, each weighted by its exact
-// overlap, on the float texels (no quantisation, no summed-area table). Wrap modes through wrap_texel.
+// overlap, in double (no summed-area table). Wrap modes through wrap_texel.
+//
+// The texels are those the filter documents it averages: each channel quantised to 16 bits over its own
+// range, v -> lo + round((v - lo) / s * 65535) * s / 65535 with lo the channel's smallest value and s its
+// largest minus lo, rounded up to float (a constant channel stays lo). Texels must be finite: NaN or
+// ±Inf anywhere in level 0 throws tf::Error, as building the table does.
 //
 // The box: centre (u·W, v·H), half-extents ½(|J e_x| + |J e_y|) per axis with J in level-0 texels times
 // 2^lodBias (components clamped to ±2^24), the extent clamped to W x H texels (hx ≤ W/2, hy ≤ H/2);
@@ -16,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace tf {
@@ -61,8 +67,53 @@ double reduce_centre(double x, int n, Wrap wrap) {
     throw Error("reference_sat: invalid wrap mode");
 }
 
+// The documented 16-bit levels of each channel: value = lo + q * step, q = round((v - lo) / span * 65535).
+struct Levels {
+    glm::dvec4 lo{0.0}, span{0.0};
+    glm::dvec4 operator()(const glm::vec4& texel) const {
+        glm::dvec4 out;
+        for (int c = 0; c < 4; ++c) {
+            if (span[c] == 0.0) {
+                out[c] = lo[c];
+                continue;
+            }
+            const double q = std::clamp(std::round((double(texel[c]) - lo[c]) / span[c] * 65535.0), 0.0, 65535.0);
+            out[c] = lo[c] + q * (span[c] / 65535.0);
+        }
+        return out;
+    }
+};
+
+Levels channel_levels(const Image& image) {
+    glm::dvec4 lo(INFINITY), hi(-INFINITY);
+    for (int j = 0; j < image.height; ++j)
+        for (int i = 0; i < image.width; ++i) {
+            const glm::vec4& t = image.at(i, j);
+            for (int c = 0; c < 4; ++c) {
+                const double v = t[c];
+                if (!std::isfinite(v))
+                    throw Error("reference_sat: texel (" + std::to_string(i) + ", " + std::to_string(j) + ") is " +
+                                (std::isnan(v) ? "NaN" : v > 0 ? "+Inf" : "-Inf") + ": sat needs finite texels");
+                lo[c] = std::min(lo[c], v);
+                hi[c] = std::max(hi[c], v);
+            }
+        }
+    Levels levels;
+    levels.lo = lo;
+    for (int c = 0; c < 4; ++c) { // the span as the smallest float at least hi - lo
+        const double d = hi[c] - lo[c];
+        float f = float(d);
+        if (double(f) < d)
+            f = std::nextafter(f, INFINITY);
+        if (std::isinf(f))
+            throw Error("reference_sat: channel " + std::to_string(c) + " spans more than a float holds");
+        levels.span[c] = f;
+    }
+    return levels;
+}
+
 // Mean of the texture over the box centred at (cx, cy) (texel units) with half-extents (hx, hy).
-glm::dvec4 box_mean(const Image& image, double cx, double cy, double hx, double hy, Wrap wrap) {
+glm::dvec4 box_mean(const Image& image, const Levels& levels, double cx, double cy, double hx, double hy, Wrap wrap) {
     hx = std::min(hx, 0.5 * image.width);
     hy = std::min(hy, 0.5 * image.height);
     cx = reduce_centre(cx, image.width, wrap);
@@ -76,7 +127,7 @@ glm::dvec4 box_mean(const Image& image, double cx, double cy, double hx, double 
         const int row = wrap_texel(y.first + (long long)b, image.height, wrap);
         glm::dvec4 line(0.0);
         for (size_t a = 0; a < columns.size(); ++a)
-            line += x.weights[a] * glm::dvec4(image.at(columns[a], row));
+            line += x.weights[a] * levels(image.at(columns[a], row));
         sum += y.weights[b] * line;
     }
     return sum;
@@ -88,9 +139,9 @@ glm::dvec4 reference_sat(const MipChain& chain, const SamplerOptions& options, c
     if (chain.levels.empty()) throw Error("reference_sat: empty MIP chain");
     const Image& image = chain.levels[0];
     const double w = image.width, h = image.height;
-    if (!std::isfinite(lookup.dudx) || !std::isfinite(lookup.dvdx) || !std::isfinite(lookup.dudy) ||
-        !std::isfinite(lookup.dvdy))
-        return box_mean(image, 0.5 * w, 0.5 * h, 0.5 * w, 0.5 * h, Wrap::repeat); // the whole texture
+    const Levels levels = channel_levels(image);
+    if (!finite_footprint(chain, lookup)) // NaN, Inf, or past float range as the shader's float input holds it
+        return box_mean(image, levels, 0.5 * w, 0.5 * h, 0.5 * w, 0.5 * h, Wrap::repeat); // the whole texture
     const double m = std::exp2(double(options.lod_bias));
     auto column = [&](double du, double dv) {
         return glm::dvec2(std::clamp(du * w * m, -kMaxColumn, kMaxColumn), std::clamp(dv * h * m, -kMaxColumn, kMaxColumn));
@@ -100,7 +151,7 @@ glm::dvec4 reference_sat(const MipChain& chain, const SamplerOptions& options, c
 
     if (options.filter != Filter::sat_assembly) {
         const glm::dvec2 half = 0.5 * (glm::abs(jx) + glm::abs(jy));
-        return box_mean(image, centre.x, centre.y, half.x, half.y, options.wrap);
+        return box_mean(image, levels, centre.x, centre.y, half.x, half.y, options.wrap);
     }
     const int k = std::clamp(options.boxes, 1, 16);
     const bool x_major = jx.x * jx.x + jx.y * jx.y >= jy.x * jy.x + jy.y * jy.y;
@@ -111,7 +162,7 @@ glm::dvec4 reference_sat(const MipChain& chain, const SamplerOptions& options, c
     for (int s = 0; s < k; ++s) {
         const double a = (s + 0.5) / k - 0.5;
         const glm::dvec2 c = centre + a * major;
-        sum += box_mean(image, c.x, c.y, half.x, half.y, options.wrap);
+        sum += box_mean(image, levels, c.x, c.y, half.x, half.y, options.wrap);
     }
     return sum / double(k);
 }

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
+
+#include <glm/common.hpp>
 
 namespace tf {
 
@@ -12,19 +15,42 @@ namespace {
 
 constexpr uint64_t kMask40 = (uint64_t(1) << 40) - 1;
 
-// 16-bit level of one channel value. NaN counts as 0 and +Inf as the top level (clamped), so a texture
-// with a bad texel still gets a table whose sums are defined.
-uint64_t quantise(float value, double scale) {
-    if (std::isnan(value)) return 0;
-    const double v = std::clamp(double(value), 0.0, scale);
-    return uint64_t(std::lround(v / scale * double(sat_quantisation_levels)));
+// 16-bit level of one (finite) channel value on the channel's range.
+uint64_t quantise(float value, double offset, double scale) {
+    if (!(scale > 0)) return 0;
+    const double level = std::round((double(value) - offset) / scale * double(sat_quantisation_levels));
+    return uint64_t(std::clamp(level, 0.0, double(sat_quantisation_levels)));
 }
+
+const char* channel_name(int c) { return c == 0 ? "R" : c == 1 ? "G" : c == 2 ? "B" : "A"; }
 
 uint64_t entry(const SatTable& t, size_t index, int channel) {
     return uint64_t(t.low[index * 4 + size_t(channel)]) | (uint64_t((t.high[index] >> (8 * channel)) & 0xFFu) << 32);
 }
 
 } // namespace
+
+void check_sat_texels(const Image& level0, const std::string& texture_name) {
+    const std::string what = texture_name.empty() ? "summed-area table" : "texture " + texture_name;
+    glm::vec4 lo(INFINITY), hi(-INFINITY);
+    for (int j = 0; j < level0.height; ++j)
+        for (int i = 0; i < level0.width; ++i) {
+            const glm::vec4& texel = level0.at(i, j);
+            for (int c = 0; c < 4; ++c) {
+                const float v = texel[c];
+                if (!std::isfinite(v))
+                    throw Error(what + ": texel (" + std::to_string(i) + ", " + std::to_string(j) + ") is " +
+                                (std::isnan(v) ? "NaN" : v > 0 ? "+Inf" : "-Inf") +
+                                ": sat needs finite texels (channel " + channel_name(c) + ")");
+                lo[c] = std::min(lo[c], v);
+                hi[c] = std::max(hi[c], v);
+            }
+        }
+    for (int c = 0; c < 4; ++c)
+        if (!level0.texels.empty() && double(hi[c]) - double(lo[c]) > double(std::numeric_limits<float>::max()))
+            throw Error(what + ": channel " + channel_name(c) + " spans " + std::to_string(lo[c]) + " .. " +
+                        std::to_string(hi[c]) + ", more than a float holds: sat quantises each channel over its range");
+}
 
 SatTable build_sat(const Image& level0) {
     const int w = level0.width, h = level0.height;
@@ -35,16 +61,29 @@ SatTable build_sat(const Image& level0) {
     if (level0.texels.size() != size_t(w) * size_t(h))
         throw Error("summed-area table: texture " + std::to_string(w) + "x" + std::to_string(h) + " holds " +
                     std::to_string(level0.texels.size()) + " texels");
+    check_sat_texels(level0);
 
-    float largest = 1.0f;
-    for (const glm::vec4& texel : level0.texels)
-        for (int c = 0; c < 4; ++c)
-            if (std::isfinite(texel[c])) largest = std::max(largest, texel[c]);
+    // Per channel: level 0 at the smallest value, level 65535 at the largest (the span rounded up to float,
+    // so that no finite texel lands above 65535).
+    glm::vec4 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec4& texel : level0.texels) {
+        lo = glm::min(lo, texel);
+        hi = glm::max(hi, texel);
+    }
+    glm::vec4 span;
+    for (int c = 0; c < 4; ++c) {
+        const double d = double(hi[c]) - double(lo[c]);
+        float f = float(d);
+        if (double(f) < d)
+            f = std::nextafter(f, INFINITY);
+        span[c] = f;
+    }
 
     SatTable t;
     t.width = w;
     t.height = h;
-    t.scale = largest;
+    t.offset = lo;
+    t.scale = span;
     const size_t stride = size_t(w) + 1;
     t.low.assign(stride * (size_t(h) + 1) * 4, 0u);
     t.high.assign(stride * (size_t(h) + 1), 0u);
@@ -52,7 +91,6 @@ SatTable build_sat(const Image& level0) {
     // S(i, j+1) = S(i, j) + (sum of row j over [0, i)). Row 0 and column 0 stay zero. Held in 64 bits and
     // stored modulo 2^40 (the true values never exceed 4096^2 x 65535 < 2^40, but the format says mod 2^40).
     std::vector<uint64_t> above(stride * 4, 0);
-    const double scale = double(t.scale);
     for (int j = 0; j < h; ++j) {
         uint64_t row[4] = {0, 0, 0, 0};
         for (int i = 0; i < w; ++i) {
@@ -60,7 +98,7 @@ SatTable build_sat(const Image& level0) {
             const size_t index = size_t(j + 1) * stride + size_t(i + 1);
             uint32_t high = 0;
             for (int c = 0; c < 4; ++c) {
-                row[c] += quantise(texel[c], scale);
+                row[c] += quantise(texel[c], double(t.offset[c]), double(t.scale[c]));
                 uint64_t& s = above[size_t(i + 1) * 4 + size_t(c)];
                 s = (s + row[c]) & kMask40;
                 t.low[index * 4 + size_t(c)] = uint32_t(s);

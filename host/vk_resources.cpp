@@ -136,12 +136,15 @@ const VkSpecializationInfo* filter_specialization(Filter filter, FilterSpecializ
     return &s.info;
 }
 
-PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, float sat_scale, int gradients)
+PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, glm::vec4 sat_offset,
+                                  glm::vec4 sat_scale, int gradients)
 {
     return {int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max,
             count, options.band, options.probes, int32_t(options.aniso_shape), int32_t(options.taps),
-            options.alpha, options.max_aniso, options.boxes, sat_scale, gradients,
-            options.truth_side, int32_t(options.pixel_filter)};
+            options.alpha, options.max_aniso, options.boxes, gradients,
+            options.truth_side, int32_t(options.pixel_filter), 0,
+            {sat_offset.x, sat_offset.y, sat_offset.z, sat_offset.w},
+            {sat_scale.x, sat_scale.y, sat_scale.z, sat_scale.w}};
 }
 
 } // namespace tf

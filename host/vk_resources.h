@@ -3,6 +3,7 @@
 // image layout barriers. Everything the render and sample paths share.
 #include "filter.h"
 #include "vk_context.h"
+#include <glm/vec4.hpp>
 #include <cstddef>
 #include <cstdint>
 
@@ -52,11 +53,14 @@ struct PushConstants {
     float alpha;
     float max_aniso;
     int32_t boxes;
-    float sat_scale;
     int32_t gradients; // TF_GRADIENTS_*
     int32_t truth_side;   // ground-truth: samples a pixel = side^2
     int32_t pixel_filter; // ground-truth: TF_PIXEL_FILTER_*
+    int32_t padding;      // the vec4s start at byte 64, as in GLSL
+    float sat_offset[4];  // sat: SatTable::offset, ::scale (per channel)
+    float sat_scale[4];
 };
+static_assert(sizeof(PushConstants) == 96, "PushConstants must match tf_PushConstants (std430)");
 // The filter, as the harness shaders' specialization constant TF_SPEC_FILTER (pipelines are per filter).
 struct FilterSpecialization {
     int32_t filter_id;
@@ -66,6 +70,7 @@ struct FilterSpecialization {
 // Fills `s` and returns &s.info, which points into s: keep s alive until the pipeline is created.
 const VkSpecializationInfo* filter_specialization(Filter filter, FilterSpecialization& s);
 
-PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, float sat_scale, int gradients);
+PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, glm::vec4 sat_offset,
+                                  glm::vec4 sat_scale, int gradients);
 
 } // namespace tf

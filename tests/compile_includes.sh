@@ -60,8 +60,8 @@ call_for() {
     brilinear) echo "tf_brilinear(tex, uv, dx, dy, s, 0.25)" ;;
     aniso) echo "tf_aniso(tex, uv, dx, dy, s, 8, TF_ANISO_GPU) + tf_aniso_hw(tex, uv, dx, dy, s, 8, TF_ANISO_FELINE)" ;;
     ewa) echo "tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_ewa_hw(tex, uv, dx, dy, s, 2.0, 16.0)" ;;
-    sat) echo "tf_sat(satLow, satHigh, uv, dx, dy, s, 1.0) + tf_sat_assembly(satLow, satHigh, uv, dx, dy, s, 1.0, 4)" ;;
-    texfilter) echo "tf_trilinear(tex, uv, dx, dy, s) + tf_nearest_mip(tex, uv, dx, dy, s) + tf_brilinear(tex, uv, dx, dy, s, 0.25) + tf_aniso(tex, uv, dx, dy, s, 16, TF_ANISO_GPU) + tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_sat(satLow, satHigh, uv, dx, dy, s, 1.0) + vec4(tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).dUVdy, 0.0, 0.0)" ;;
+    sat) echo "tf_sat(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0)) + tf_sat_assembly(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0), 4)" ;;
+    texfilter) echo "tf_trilinear(tex, uv, dx, dy, s) + tf_nearest_mip(tex, uv, dx, dy, s) + tf_brilinear(tex, uv, dx, dy, s, 0.25) + tf_aniso(tex, uv, dx, dy, s, 16, TF_ANISO_GPU) + tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_sat(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0)) + vec4(tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).dUVdy, 0.0, 0.0)" ;;
     *) return 1 ;;
     esac
 }

@@ -4,14 +4,17 @@
 //
 // usage: test_sat PATH/TO/texfilter      (one line per check with the measured numbers)
 //
-// Tolerances, GPU vs exact. The table holds 16-bit quantised texels, q = round(v/scale·65535): each
-// texel is off by at most 0.5/65535·scale, so any weighted mean (weights ≥ 0, sum 1) is too. The shader
-// forms every block sum exactly and then does ~12 float32 roundings (conversion, weights, sum, scale):
-// relative 2^-24 each, < 2e-6·scale in all. Box edges are float32 texel coordinates x ± h: each rounding
+// Tolerances, GPU vs exact. The table holds 16-bit texels quantised over each channel's own range,
+// q = round((v − lo)/span·65535) (lo the channel's smallest value, span its largest − lo rounded up to
+// float): each texel is off by at most 0.5/65535·span, so any weighted mean (weights ≥ 0, sum 1) is too.
+// The reference averages the same quantised texels (in double), so GPU vs reference has no quantisation
+// term. The shader forms every block sum exactly and then does ~12 float32 roundings (conversion,
+// weights, sum, scale, + lo): relative 2^-24 each, < 2e-6·(|mean − lo| + |mean|) ≤ 2e-6·(|lo| + 2 span). Box edges are float32 texel coordinates x ± h: each rounding
 // of an edge moves it by ≤ 2^-24·|x|; moving an edge by δ moves a mean by ≤ δ/width·(max − min texel), so
 // per axis we allow 2^-21·(|x| + h + 1)/h·range (8x the few roundings there are). Footprints of at
 // least 1/8 texel keep that term small; texel-aligned boxes in power-of-two textures have none.
 #include "error.h"
+#include "image_io.h"
 #include "procedural.h"
 #include "reference.h"
 #include "sat.h"
@@ -25,10 +28,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <random>
 #include <string>
 #include <vector>
+
+#include <sys/wait.h>
 
 using namespace tf;
 using tf::test::as_float;
@@ -62,26 +69,37 @@ void check_exact_box_sums()
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> uniform(0.0f, 3.0f), wide(-0.5f, 3.0f), top(2.99f, 3.0f);
     Image image = make_image(n, n);
-    // R uniform, G with negatives (clamped to 0), B near the top, A exactly the largest value: the whole
-    // texture's A sum is 4096^2·65535 = 2^40 − 2^24, so bit 39 of the table and of the sums is used.
+    // R uniform, G with negatives, B in a narrow band near 3, A at its largest value but for one texel
+    // at its smallest: the whole texture's A sum is (4096^2 − 1)·65535 ≈ 2^40 − 2^24, so bit 39 of the
+    // table and of the sums is used.
     for (glm::vec4& t : image.texels)
         t = glm::vec4(uniform(rng), wide(rng), top(rng), 3.0f);
+    image.texels[12345].a = -1.5f;
 
     auto build_start = std::chrono::steady_clock::now();
     SatTable table = build_sat(image);
     double build_s = seconds_since(build_start);
-    CHECK(table.width == n && table.height == n && table.scale == 3.0f, fmt("scale %g", table.scale));
+    // Each channel's own range, from the texels (the span rounded up to float).
+    glm::dvec4 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec4& t : image.texels) {
+        lo = glm::min(lo, glm::dvec4(t));
+        hi = glm::max(hi, glm::dvec4(t));
+    }
+    glm::dvec4 span;
+    for (int c = 0; c < 4; ++c) {
+        float f = float(hi[c] - lo[c]);
+        span[c] = double(f) < hi[c] - lo[c] ? std::nextafter(f, INFINITY) : f;
+    }
+    CHECK(table.width == n && table.height == n && glm::dvec4(table.offset) == lo && glm::dvec4(table.scale) == span,
+          fmt("offset R %.9g, scale R %.9g, scale A %.9g", table.offset.r, table.scale.r, table.scale.a));
     CHECK(table.low.size() == size_t(n + 1) * size_t(n + 1) * 4 && table.high.size() == size_t(n + 1) * size_t(n + 1),
           fmt("%g words", double(table.low.size())));
 
     // The quantised texels, written out from the formula (not from sat.cpp), 4 planes.
-    const double scale = 3.0; // max(1, largest texel value) by construction
     std::vector<std::vector<uint16_t>> q(4, std::vector<uint16_t>(size_t(n) * size_t(n)));
     for (size_t i = 0; i < image.texels.size(); ++i)
-        for (int c = 0; c < 4; ++c) {
-            double v = std::clamp(double(image.texels[i][c]), 0.0, scale);
-            q[size_t(c)][i] = uint16_t(std::lround(v / scale * 65535.0));
-        }
+        for (int c = 0; c < 4; ++c)
+            q[size_t(c)][i] = uint16_t(std::lround((double(image.texels[i][c]) - lo[c]) / span[c] * 65535.0));
     auto brute = [&](int x0, int y0, int x1, int y1) {
         std::array<uint64_t, 4> sum{};
         for (int c = 0; c < 4; ++c)
@@ -125,7 +143,7 @@ void check_exact_box_sums()
                           std::to_string(table_sum[size_t(c)]) + " vs brute force " + std::to_string(exact[size_t(c)]));
         }
     }
-    const uint64_t full_alpha = uint64_t(n) * uint64_t(n) * 65535u;
+    const uint64_t full_alpha = (uint64_t(n) * uint64_t(n) - 1) * 65535u;
     CHECK(sat_box_sum(table, 0, 0, n, n)[3] == full_alpha, std::to_string(sat_box_sum(table, 0, 0, n, n)[3]));
     CHECK(largest >= (uint64_t(1) << 39), std::to_string(largest));
 
@@ -181,18 +199,43 @@ double channel_range(const Image& image)
     return range;
 }
 
-double texture_scale(const Image& image)
-{
-    double scale = 1.0;
-    for (const glm::vec4& t : image.texels)
+// The documented quantisation, written out here: per channel lo = the smallest value, span = largest − lo
+// rounded up to float; a texel stands for lo + round((v − lo)/span·65535)·span/65535.
+struct Levels {
+    glm::dvec4 lo{INFINITY}, span{0.0};
+    explicit Levels(const Image& image)
+    {
+        glm::dvec4 hi(-INFINITY);
+        for (const glm::vec4& t : image.texels) {
+            lo = glm::min(lo, glm::dvec4(t));
+            hi = glm::max(hi, glm::dvec4(t));
+        }
+        for (int c = 0; c < 4; ++c) {
+            float f = float(hi[c] - lo[c]);
+            span[c] = double(f) < hi[c] - lo[c] ? std::nextafter(f, INFINITY) : f;
+        }
+    }
+    glm::dvec4 operator()(const glm::vec4& t) const
+    {
+        glm::dvec4 v;
         for (int c = 0; c < 4; ++c)
-            scale = std::max(scale, double(t[c]));
-    return scale;
-}
+            v[c] = span[c] == 0 ? lo[c] : lo[c] + std::round((double(t[c]) - lo[c]) / span[c] * 65535.0) * (span[c] / 65535.0);
+        return v;
+    }
+    // What ~12 float32 roundings of a mean near these values can add up to: 2e-6·(|lo| + 2·span).
+    double float_error() const
+    {
+        double m = 0;
+        for (int c = 0; c < 4; ++c)
+            m = std::max(m, std::abs(lo[c]) + 2 * span[c]);
+        return 2e-6 * m;
+    }
+};
 
-// GPU-vs-exact tolerance of one box lookup (see the top of the file). centre_extra: how far (texels)
-// the shader's float centre may lie from uv·size beyond the wrap reduction (slice offsets).
-double box_tolerance(const Image& image, const Lookup& l, double scale, double range, double centre_extra = 0,
+// GPU-vs-reference tolerance of one box lookup (see the top of the file): float rounding, float_error,
+// and edge shifts. centre_extra: how far (texels) the shader's float centre may lie from uv·size beyond
+// the wrap reduction (slice offsets). No quantisation term: both average the same quantised texels.
+double box_tolerance(const Image& image, const Lookup& l, double float_error, double range, double centre_extra = 0,
                      double lod_bias = 0)
 {
     const double w = image.width, h = image.height, m = std::exp2(lod_bias);
@@ -200,7 +243,7 @@ double box_tolerance(const Image& image, const Lookup& l, double scale, double r
     const double hy = std::min(0.5 * (std::abs(l.dvdx) + std::abs(l.dvdy)) * h * m, 0.5 * h);
     // After the wrap reduction the centre lies in [-w, 2w] (clamp), [0, 2w] (mirror), [0, w] (repeat).
     auto edge = [&](double half, double size) { return std::exp2(-21.0) * (2 * size + centre_extra + half + 1) / half; };
-    return 0.5 / 65535.0 * scale + 2e-6 * scale + range * (edge(hx, w) + edge(hy, h));
+    return float_error + range * (edge(hx, w) + edge(hy, h));
 }
 
 struct Tally {
@@ -227,34 +270,44 @@ void check_aligned_boxes()
     struct Box { int x0, y0, x1, y1; };
     const std::vector<Box> boxes = {{16, 32, 80, 40}, {0, 0, 256, 256}, {100, 7, 101, 8},  {3, 0, 253, 1},
                                     {0, 0, 1, 256},   {200, 10, 256, 250}, {64, 64, 192, 192}, {1, 2, 3, 5}};
+    const Levels levels(image);
     std::vector<Lookup> lookups;
-    std::vector<glm::dvec4> exact;
+    std::vector<glm::dvec4> exact, exact_q;
     for (const Box& b : boxes) {
         // Centre and side / n are exact in float for n = 256: the box is exactly [x0, x1) x [y0, y1).
         lookups.push_back({(b.x0 + b.x1) / 2.0 / n, (b.y0 + b.y1) / 2.0 / n, double(b.x1 - b.x0) / n, 0.0, 0.0,
                            double(b.y1 - b.y0) / n});
-        glm::dvec4 sum(0.0);
+        glm::dvec4 sum(0.0), sum_q(0.0);
         for (int y = b.y0; y < b.y1; ++y)
-            for (int x = b.x0; x < b.x1; ++x)
+            for (int x = b.x0; x < b.x1; ++x) {
                 sum += glm::dvec4(image.at(x, y));
+                sum_q += levels(image.at(x, y));
+            }
         exact.push_back(sum / double((b.x1 - b.x0) * (b.y1 - b.y0)));
+        exact_q.push_back(sum_q / double((b.x1 - b.x0) * (b.y1 - b.y0)));
     }
     SampleResult gpu = sample("noise", n, "sat", Wrap::repeat, lookups);
-    // No edge term here: quantisation plus float rounding only.
-    const double scale = texture_scale(image), tolerance = 0.5 / 65535.0 * scale + 2e-6 * scale;
-    Tally tally, reference;
+    // No edge term here: vs the float texels quantisation (0.5 step) plus float rounding, vs the quantised
+    // texels float rounding only.
+    const double range = channel_range(image), tolerance = 0.5 / 65535.0 * range + levels.float_error();
+    Tally tally, tally_q, reference;
     for (size_t i = 0; i < boxes.size(); ++i) {
-        double e = max_channel_diff(gpu.colors[i], exact[i]);
+        double e = max_channel_diff(gpu.colors[i], exact[i]), eq = max_channel_diff(gpu.colors[i], exact_q[i]);
         tally.add(e, tolerance);
+        tally_q.add(eq, levels.float_error());
         CHECK(e <= tolerance, fmt("box %g: GPU off the exact mean by %.3g > %.3g", double(i), e, tolerance));
-        double r = max_channel_diff(reference_sample(chain, sat_options(Filter::sat, Wrap::repeat), lookups[i]), exact[i]);
+        CHECK(eq <= levels.float_error(), fmt("box %g: GPU off the quantised mean by %.3g > %.3g", double(i), eq,
+                                              levels.float_error()));
+        glm::dvec4 ref = reference_sample(chain, sat_options(Filter::sat, Wrap::repeat), lookups[i]);
+        double r = max_channel_diff(ref, exact_q[i]);
         reference.add(r, 1e-12);
-        CHECK(r <= 1e-12, fmt("box %g: reference off the exact mean by %.3g", double(i), r));
+        CHECK(r <= 1e-12, fmt("box %g: reference off the quantised mean by %.3g", double(i), r));
     }
-    std::printf("(2) texel-aligned boxes (noise 256): %d boxes, GPU max error %.3g (tolerance %.3g = 0.5/65535 + 2e-6), "
-                "reference max error %.3g -> %s\n",
-                tally.checked, tally.worst_error, tolerance, reference.worst_error,
-                tally.over || reference.over ? "FAIL" : "PASS");
+    std::printf("(2) texel-aligned boxes (noise 256): %d boxes, GPU max error vs the float texels %.3g (tolerance "
+                "%.3g = 0.5/65535 span + float), vs the quantised texels %.3g (%.3g); reference vs quantised %.3g "
+                "-> %s\n",
+                tally.checked, tally.worst_error, tolerance, tally_q.worst_error, levels.float_error(),
+                reference.worst_error, tally.over || tally_q.over || reference.over ? "FAIL" : "PASS");
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -306,7 +359,7 @@ void check_wrap_modes(std::vector<SampleResult>& sat_runs, std::vector<Lookup>& 
     for (const Case& c : cases) {
         MipChain chain = make_procedural(c.texture, c.size);
         const Image& image = chain.levels[0];
-        const double scale = texture_scale(image), range = channel_range(image);
+        const double float_error = Levels(image).float_error(), range = channel_range(image);
         SampleResult gpu = sample(c.texture, c.size, "sat", c.wrap, lookups, "--lod-bias " + std::to_string(c.bias));
         SamplerOptions options = sat_options(Filter::sat, c.wrap);
         options.lod_bias = c.bias;
@@ -316,7 +369,7 @@ void check_wrap_modes(std::vector<SampleResult>& sat_runs, std::vector<Lookup>& 
         unsigned most_fetches = 0;
         for (size_t i = 0; i < lookups.size(); ++i) {
             glm::dvec4 ref = reference_sample(chain, options, lookups[i]);
-            double e = max_channel_diff(gpu.colors[i], ref), tol = box_tolerance(image, lookups[i], scale, range, 0, c.bias);
+            double e = max_channel_diff(gpu.colors[i], ref), tol = box_tolerance(image, lookups[i], float_error, range, 0, c.bias);
             bool b = crosses_border(lookups[i], c.bias);
             (b ? border : inside).add(e, tol);
             border_count += b;
@@ -406,6 +459,7 @@ void check_assembly(const std::vector<SampleResult>& sat_runs, const std::vector
     // adds rounding of the centre's magnitude (the offset, and in clamp mode uv itself, not reduced).
     MipChain chain = make_procedural("noise", 256);
     const Image& image = chain.levels[0];
+    const double float_error = Levels(image).float_error(), range = channel_range(image);
     for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror}) {
         SampleResult gpu = sample("noise", 256, "sat-assembly", wrap, lookups, "--boxes 4");
         Tally tally;
@@ -420,7 +474,7 @@ void check_assembly(const std::vector<SampleResult>& sat_runs, const std::vector
             glm::dvec4 ref = reference_sample(chain, sat_options(Filter::sat_assembly, wrap, 4), l);
             double e = max_channel_diff(gpu.colors[i], ref);
             double centre = 0.5 * std::max(lx, ly) + (wrap == Wrap::clamp ? 256 * std::max(std::abs(l.u), std::abs(l.v)) : 0);
-            double tol = box_tolerance(image, l, 1.0, channel_range(image), centre);
+            double tol = box_tolerance(image, l, float_error, range, centre);
             tally.add(e, tol);
             if (!(e <= tol) && tally.over <= 3)
                 CHECK(e <= tol, fmt("lookup %g: sat-assembly GPU vs reference %.3g > %.3g", double(i), e, tol));
@@ -544,6 +598,139 @@ void check_degenerate()
         }
 }
 
+// ---------------------------------------------------------------------------------------------------
+// (7) HDR texels keep 16 bits of their own range: one 65504 texel among 0.3s (issue: the GPU gave 0
+// where the reference gave 0.3, silently). Each channel is quantised over [lo, lo + span], so the 0.3s
+// are exactly level 0 and any box mean is within 0.5/65535·span (~0.5 here) of the exact float mean,
+// plus float rounding; the GPU is within float rounding of the reference, which averages the same levels.
+
+void check_hdr()
+{
+    const int n = 64;
+    Image image = make_image(n, n, glm::vec4(0.3f, 0.3f, 0.3f, 1.0f));
+    image.at(37, 21) = glm::vec4(65504.0f, 65504.0f, 65504.0f, 1.0f);
+    const std::string path = (work / "hdr.pfm").string();
+    write_image(path, image);
+    MipChain chain;
+    chain.levels.push_back(image); // level 0 is all sat reads
+    const SatTable table = build_sat(image);
+    CHECK(table.offset.r == 0.3f && table.scale.r >= 65504.0f - 0.3f && table.scale.a == 0.0f,
+          fmt("offset %.9g, scale %.9g, alpha scale %.9g", table.offset.r, table.scale.r, table.scale.a));
+
+    // Texel-aligned boxes (centre and side exact in float for n = 64): away from the spike, on it, the
+    // whole texture (NaN gradient), and a box of 0.3s right beside it.
+    struct Box { int x0, y0, x1, y1; };
+    const std::vector<Box> boxes = {{0, 0, 16, 16}, {32, 16, 48, 32}, {37, 21, 38, 22}, {0, 0, 64, 64},
+                                    {38, 16, 54, 32}, {0, 40, 64, 41}, {30, 20, 40, 24}};
+    std::vector<Lookup> lookups;
+    std::vector<glm::dvec4> exact;
+    for (const Box& b : boxes) {
+        lookups.push_back({(b.x0 + b.x1) / 2.0 / n, (b.y0 + b.y1) / 2.0 / n, double(b.x1 - b.x0) / n, 0.0, 0.0,
+                           double(b.y1 - b.y0) / n});
+        glm::dvec4 sum(0.0);
+        for (int y = b.y0; y < b.y1; ++y)
+            for (int x = b.x0; x < b.x1; ++x)
+                sum += glm::dvec4(image.at(x, y));
+        exact.push_back(sum / double((b.x1 - b.x0) * (b.y1 - b.y0)));
+    }
+    lookups.push_back({0.3, 0.7, std::numeric_limits<double>::quiet_NaN(), 0, 0, 0.1}); // the whole texture
+    exact.push_back(exact[3]);
+    const std::string in = (work / "hdr-lookups.csv").string();
+    test::write_lookups_csv(in, lookups);
+    const SampleResult gpu = test::run_sample(texfilter, work, "--texture " + path + " --filter sat", in, false);
+    const SampleResult cli_reference =
+        test::run_sample(texfilter, work, "--texture " + path + " --filter sat --backend reference", in, false);
+
+    const double step = double(table.scale.r) / 65535.0;
+    Tally vs_exact, vs_reference;
+    for (size_t i = 0; i < lookups.size(); ++i) {
+        const glm::dvec4 ref = reference_sample(chain, sat_options(Filter::sat, Wrap::repeat), lookups[i]);
+        const double m = exact[i].r;
+        // Documented: 0.5 step from quantisation; float rounding ~2e-6 relative to (mean − lo) and the mean.
+        const double rounding = 2e-6 * (std::abs(m - 0.3) + std::abs(m));
+        const double bound = 0.5 * step + rounding;
+        for (const glm::dvec4& r : {gpu.colors[i], ref, cli_reference.colors[i]}) {
+            const double e = max_channel_diff(r, exact[i]);
+            vs_exact.add(e, bound);
+            if (!(e <= bound))
+                CHECK(e <= bound, fmt("HDR box %g: %.9g vs exact mean %.9g", double(i), r.r, m));
+        }
+        const double g = max_channel_diff(gpu.colors[i], ref);
+        vs_reference.add(g, rounding);
+        if (!(g <= rounding))
+            CHECK(g <= rounding, fmt("HDR box %g: GPU %.9g vs reference %.9g", double(i), gpu.colors[i].r, ref.r));
+    }
+    // The boxes of 0.3s alone are exact (level 0 is 0.3f itself).
+    for (size_t i : {size_t(0), size_t(4), size_t(5)})
+        CHECK(std::abs(gpu.colors[i].r - 0.3) <= 2e-6 * 0.3, fmt("box of 0.3s: GPU %.9g", gpu.colors[i].r));
+    std::printf("(7) HDR (64x64 of 0.3, one texel 65504): %zu boxes, step %.4g; GPU, reference, CLI reference vs exact "
+                "mean: max error %.3g (bound 0.5 step + float); GPU vs reference max %.3g (float rounding); "
+                "box of 0.3s: GPU %.9g -> %s\n",
+                lookups.size(), step, vs_exact.worst_error, vs_reference.worst_error, gpu.colors[0].r,
+                vs_exact.over || vs_reference.over ? "FAIL" : "PASS");
+}
+
+// ---------------------------------------------------------------------------------------------------
+// (8) NaN and ±Inf texels are refused with a message naming the texel, on both backends and in build_sat.
+
+// Runs a command, returns its exit status and what it printed on stderr.
+int run_capturing(const std::string& command, std::string& err)
+{
+    const std::string err_path = (work / "stderr.txt").string();
+    const int status = std::system((command + " 2> '" + err_path + "' > /dev/null").c_str());
+    err.clear();
+    if (FILE* f = std::fopen(err_path.c_str(), "r")) {
+        char buf[4096];
+        size_t got = 0;
+        while ((got = std::fread(buf, 1, sizeof buf, f)) > 0)
+            err.append(buf, got);
+        std::fclose(f);
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+void check_non_finite_texels()
+{
+    struct Bad { float value; const char* word; };
+    const Bad bad[] = {{std::numeric_limits<float>::quiet_NaN(), "NaN"}, {INFINITY, "+Inf"}, {-INFINITY, "-Inf"}};
+    const std::string in = (work / "one-lookup.csv").string();
+    test::write_lookups_csv(in, {{0.5, 0.5, 0.1, 0, 0, 0.1}});
+    int passed = 0, total = 0;
+    for (const Bad& b : bad) {
+        Image image = make_image(16, 8, glm::vec4(0.25f));
+        image.at(5, 3).g = b.value;
+        const std::string expect = std::string("texel (5, 3) is ") + b.word;
+        CHECK_THROWS_WITH(build_sat(image), expect);
+        CHECK_THROWS_WITH(check_sat_texels(image, "bad.pfm"), "texture bad.pfm: " + expect);
+        MipChain chain;
+        chain.levels.push_back(image);
+        CHECK_THROWS_WITH(reference_sample(chain, sat_options(Filter::sat, Wrap::repeat), {0.5, 0.5, 0.1, 0, 0, 0.1}),
+                          expect);
+        const std::string path = (work / (std::string("bad-") + b.word + ".pfm")).string();
+        write_image(path, image);
+        for (const char* backend : {"vulkan", "reference"})
+            for (const char* filter : {"sat", "sat-assembly"}) {
+                const std::string out = (work / "bad-out.csv").string();
+                std::filesystem::remove(out);
+                std::string err;
+                const int status = run_capturing("'" + texfilter + "' sample --texture '" + path + "' --filter " +
+                                                     filter + " --backend " + backend + " --lookups '" + in +
+                                                     "' -o '" + out + "'",
+                                                 err);
+                const bool ok = status == 2 && err.find(expect) != std::string::npos &&
+                                err.find("sat needs finite texels") != std::string::npos &&
+                                !std::filesystem::exists(out);
+                ++total;
+                passed += ok;
+                CHECK(ok, std::string(backend) + " " + filter + " on a texel " + b.word + ": exit " +
+                              std::to_string(status) + ", stderr: " + err);
+            }
+    }
+    std::printf("(8) NaN/+Inf/-Inf texel: build_sat, check_sat_texels, reference throw; %d of %d sample runs exit 2 "
+                "with \"texel (5, 3) is ...: sat needs finite texels\" and no output -> %s\n",
+                passed, total, passed == total ? "PASS" : "FAIL");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -560,6 +747,8 @@ int main(int argc, char** argv)
         check_constant_time();
         check_assembly(sat_runs, lookups);
         check_degenerate();
+        check_hdr();
+        check_non_finite_texels();
         std::printf("max GPU-vs-reference error over (3) and (5b): %.3g; total %.1f s\n", g_worst_gpu_error,
                     seconds_since(start));
     } catch (const std::exception& e) {

@@ -52,6 +52,10 @@
 #define TF_BINDING_SAT_HIGH 5 // usampler2D R32UI: bits 32..39 of the four channels, one byte each
 
 #define TF_SAMPLE_LOCAL_SIZE 64
+// sample: filters whose lookups each get a whole subgroup, every 2x2 quad of it differencing to the lookup's
+// gradients (the hw-* filters, through textureGrad; see sample.comp.glsl); every other filter runs one
+// invocation a lookup.
+#define TF_SAMPLE_IN_QUADS(filter) ((filter) >= TF_FILTER_HW_NEAREST && (filter) <= TF_FILTER_HW_ANISO)
 
 #define TF_SPEC_FILTER 0 // specialization constant id of the filter (TF_FILTER_*)
 

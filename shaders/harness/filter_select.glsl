@@ -36,10 +36,12 @@ layout(push_constant) uniform tf_PushConstants {
     float alpha;     // ewa
     float maxAniso;  // ewa
     int boxes;       // sat-assembly
-    float satScale;  // sat: value of one quantisation step x 65535 (see sat.glsl)
     int gradients;   // render: TF_GRADIENTS_FINE / COARSE / RAY
     int truthSide;   // ground-truth: side of the stratified sample grid (samples a pixel = side^2)
     int pixelFilter; // ground-truth: TF_PIXEL_FILTER_BOX / GAUSSIAN
+    int padding;
+    vec4 satOffset;  // sat: per channel, the value of quantisation level 0 and the span of levels 0..65535
+    vec4 satScale;   //      (SatTable::offset, ::scale; see sat.glsl)
 } pc;
 
 vec4 tf_harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
@@ -59,9 +61,9 @@ vec4 tf_harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
     case TF_FILTER_EWA:
         return hardwareTaps ? tf_ewa_hw(u_texture, uv, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso)
                             : tf_ewa(u_texture, uv, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso);
-    case TF_FILTER_SAT: return tf_sat(u_satLow, u_satHigh, uv, dUVdx, dUVdy, s, pc.satScale);
+    case TF_FILTER_SAT: return tf_sat(u_satLow, u_satHigh, uv, dUVdx, dUVdy, s, pc.satOffset, pc.satScale);
     case TF_FILTER_SAT_ASSEMBLY:
-        return tf_sat_assembly(u_satLow, u_satHigh, uv, dUVdx, dUVdy, s, pc.satScale, pc.boxes);
+        return tf_sat_assembly(u_satLow, u_satHigh, uv, dUVdx, dUVdy, s, pc.satOffset, pc.satScale, pc.boxes);
     case TF_FILTER_NONE: return vec4(fract(uv), 0.5, 1.0); // the scene without the texture: baseline cost
     case TF_FILTER_GROUND_TRUTH: return vec4(0.0);         // per pixel, not per lookup: see ground_truth.glsl
     default:

@@ -2,13 +2,14 @@
 // footprint's bounding box, with fractional edges, in constant time whatever the footprint's size.
 //
 // Use:     vec4 tf_sat(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s,
-//                      float scale);                                         // one box
+//                      vec4 offset, vec4 scale);                             // one box
 //          vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy,
-//                               tf_Sampler s, float scale, int boxes);      // K boxes along the major axis
+//                               tf_Sampler s, vec4 offset, vec4 scale, int boxes); // K boxes along the major axis
 // Needs:   satLow:  usampler2D, RGBA32UI, (W+1) x (H+1): bits 0..31 of each channel's table entry;
 //          satHigh: usampler2D, R32UI, same size: bits 32..39 of R, G, B, A as bytes 0..3;
-//          scale:   float, the value of quantisation level 65535. All three come from tf::build_sat
-//                   (host/sat.h: SatTable::low, ::high, ::scale); upload them as is, one level each, with a
+//          offset, scale: vec4, per channel the value of quantisation level 0 and the span of levels
+//                   0..65535. All four come from tf::build_sat
+//                   (host/sat.h: SatTable::low, ::high, ::offset, ::scale); upload them as is, one level each, with a
 //                   nearest sampler (integer formats are not filterable; only texelFetch reads them). The
 //                   level-0 texture itself is not needed: W x H is the table's size minus one (W, H ≤
 //                   4096; a table smaller than 2 x 2, i.e. none, gives vec4(0)). No MIP chain.
@@ -18,7 +19,7 @@
 // Example: layout(binding = 4) uniform usampler2D satLow;   // RGBA32UI, SatTable::low
 //          layout(binding = 5) uniform usampler2D satHigh;  // R32UI, SatTable::high
 //          vec4 c = tf_sat(satLow, satHigh, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT),
-//                          satScale);           // satScale: SatTable::scale, e.g. a push constant
+//                          satOffset, satScale); // SatTable::offset, ::scale, e.g. push constants
 //
 // Footprint (DESIGN.md §3). Texel space x = u·W, y = v·H; J = [dUVdx dUVdy] in level-0 texels,
 // times exp2(lodBias). tf_sat averages the box-reconstructed texture (texel (i, j) constant on
@@ -33,10 +34,16 @@
 //   Zero gradients (a zero-width axis) → the texel under uv on that axis (nearest), no division by zero.
 //   Gradient components are clamped to ±2^24 texels first, so huge finite gradients never overflow.
 //
-// Table and bit budget. Each channel is quantised to 16 bits: q = round(clamp(v, 0, scale)/scale·65535),
-// scale = max(1, largest texel value), so a lookup is within 0.5/65535·scale of the exact mean of the
-// float texels, plus float32 rounding (~1e-6 relative, and box edges are float32 texel coordinates:
-// a sub-texel box at coordinate x has its edges within ~2^-24·|x| of the exact ones).
+// Table and bit budget. Each channel c is quantised to 16 bits over the texture's own range:
+// q = round((v − offset_c)/scale_c·65535), offset_c = the channel's smallest texel value, scale_c = its
+// largest minus its smallest (rounded up to float; 0 for a constant channel: q = 0). So HDR data keeps
+// 16 bits of its own range, texels at the channel's minimum are exact, and a lookup is within
+// 0.5/65535·scale_c of the exact mean of the float texels, plus float32 rounding (~2^-22·(|offset_c| +
+// scale_c), and box edges are float32 texel coordinates: a sub-texel box at coordinate x has its edges
+// within ~2^-24·|x| of the exact ones). The bound is absolute: a texture with one 65504 spike among
+// values near 0.3 has steps of ~1.0, so boxes mixing values above the minimum can be off by up to ~0.5.
+// NaN and ±Inf texels are refused when the table is built (tf::build_sat throws), as are channels whose
+// span overflows float.
 // S(i, j) = Σ q over texels [0, i) x [0, j), 0 ≤ i ≤ W, 0 ≤ j ≤ H, stored modulo 2^40 in two words.
 // Sums and differences are computed modulo 2^40 (uaddCarry/usubBorrow/umulExtended on two 32-bit words,
 // no 64-bit integers: any Vulkan GPU), so a box sum S(x1,y1) − S(x0,y1) − S(x1,y0) + S(x0,y0) is exact
@@ -53,7 +60,7 @@
 // exactly (modulo 2^40, non-negative, so exact) and only then converted to float and weighted; the
 // weights are divided by the width per axis, so the result is a mean directly. A one-texel axis gets
 // weights (1, 0, 0) (the garbage of the negative-width blocks is multiplied by 0); a zero-width axis
-// is the limit, the texel under x (nearest). Mean = Σ/65535·scale.
+// is the limit, the texel under x (nearest). Mean = offset + Σ·scale/65535 (the weights sum to 1).
 //
 // Wrap modes. Box corners may lie outside [0, W]; the table is extended to any integer coordinate i
 // per axis (G = cumulative sum of the wrapped texture, G(0) = 0), each a sum of ≤ 2 table columns
@@ -185,7 +192,8 @@ void tf_sat_edges(float x0, float x1, out ivec4 corners, out vec3 weights)
 }
 
 // Mean over the box [lo, hi) in texel units (corners within ±2^24), in the units of the texture.
-vec4 tf_sat_box(usampler2D satLow, usampler2D satHigh, vec2 lo, vec2 hi, ivec2 size, int wrapMode, float scale)
+vec4 tf_sat_box(usampler2D satLow, usampler2D satHigh, vec2 lo, vec2 hi, ivec2 size, int wrapMode, vec4 offset,
+                vec4 scale)
 {
     ivec4 px, py;
     vec3 wx, wy;
@@ -208,7 +216,7 @@ vec4 tf_sat_box(usampler2D satLow, usampler2D satHigh, vec2 lo, vec2 hi, ivec2 s
             e0 = e1;
         }
     }
-    return sum * (scale / 65535.0);
+    return offset + sum * (scale / 65535.0);
 }
 
 // Moves uv by whole periods into [0, 1) (repeat) or [0, 2) (mirror): changes nothing (and is exact in
@@ -223,14 +231,15 @@ vec2 tf_sat_period(vec2 uv, int wrapMode)
 }
 
 // Mean over the box of half-extents h (texel units) centred on uv.
-vec4 tf_sat_centred(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 h, ivec2 size, int wrapMode, float scale)
+vec4 tf_sat_centred(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 h, ivec2 size, int wrapMode, vec4 offset,
+                    vec4 scale)
 {
     vec2 n = vec2(size);
     h = min(h, 0.5 * n); // at most W x H texels: the bit budget
     // Clamp: from −1 or 2 outward a box of at most the texture's size sees only edge texels.
     uv = wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0, 2.0) : tf_sat_period(uv, wrapMode);
     vec2 c = uv * n;
-    return tf_sat_box(satLow, satHigh, c - h, c + h, size, wrapMode, scale);
+    return tf_sat_box(satLow, satHigh, c - h, c + h, size, wrapMode, offset, scale);
 }
 
 // The footprint's columns J·e_x, J·e_y in level-0 texels times exp2(lodBias), components clamped to
@@ -247,26 +256,27 @@ bool tf_sat_columns(ivec2 size, vec2 dUVdx, vec2 dUVdy, float lodBias, out vec2 
     return true;
 }
 
-vec4 tf_sat(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float scale)
+vec4 tf_sat(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset,
+            vec4 scale)
 {
     ivec2 size = textureSize(satLow, 0) - 1;
     if (!tf_finite(uv) || any(lessThan(size, ivec2(1)))) // no table bound: nothing to average
         return vec4(0.0);
     vec2 jx, jy;
     if (!tf_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
-        return tf_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, scale);
-    return tf_sat_centred(satLow, satHigh, uv, 0.5 * (abs(jx) + abs(jy)), size, s.wrap, scale);
+        return tf_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, offset, scale);
+    return tf_sat_centred(satLow, satHigh, uv, 0.5 * (abs(jx) + abs(jy)), size, s.wrap, offset, scale);
 }
 
 vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s,
-                     float scale, int boxes)
+                     vec4 offset, vec4 scale, int boxes)
 {
     ivec2 size = textureSize(satLow, 0) - 1;
     if (!tf_finite(uv) || any(lessThan(size, ivec2(1)))) // no table bound: nothing to average
         return vec4(0.0);
     vec2 jx, jy;
     if (!tf_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
-        return tf_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, scale);
+        return tf_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, offset, scale);
     int k = clamp(boxes, 1, 16);
     float n = float(k);
     bool xMajor = dot(jx, jx) >= dot(jy, jy);
@@ -277,7 +287,7 @@ vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx,
     vec4 sum = vec4(0.0);
     for (int i = 0; i < k; ++i) {
         float a = (float(i) + 0.5) / n - 0.5; // slice centre along the major column, in (−½, ½)
-        sum += tf_sat_centred(satLow, satHigh, uv + major * a / vec2(size), h, size, s.wrap, scale);
+        sum += tf_sat_centred(satLow, satHigh, uv + major * a / vec2(size), h, size, s.wrap, offset, scale);
     }
     return sum / n;
 }
