@@ -125,13 +125,13 @@ std::vector<BenchFilter> bench_filters()
     return filters;
 }
 
-BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, const std::string& directory)
+BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, const MipChain& chain,
+                   const std::string& directory)
 {
     BenchRun run;
     run.device = context.info;
     run.date = today();
     run.config = config;
-    MipChain chain = load_texture(config.texture);
     const int texture_width = chain.levels[0].width;
     with_texture(context, chain, true, [&](const GpuTexture& texture) {
         for (SceneKind kind : config.scenes) {

@@ -74,7 +74,8 @@ struct BenchRun {
 };
 
 // Runs everything, writing images under `directory` (which exists), one progress line a result on stdout.
-BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, const std::string& directory);
+BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, const MipChain& chain,
+                   const std::string& directory);
 
 // The goals of issue 5 / docs/BENCHMARKS.md judged on a finished run (a real GPU's goals are
 // not-applicable on a CPU device, with the measured figure still given).

@@ -1,5 +1,7 @@
 #include "cli_common.h"
+#include "device_memory_check.h"
 #include "error.h"
+#include "memory_budget.h"
 #include <cstdlib>
 
 namespace tf {
@@ -8,7 +10,9 @@ std::vector<FlagSpec> texture_flags()
 {
     return {{"--texture", "T|PATH", "procedural texture (checker, zoneplate, grid, noise, mipcolors) or an image file"},
             {"--texture-size", "N", "side of a procedural texture in texels (default 256)"},
-            {"--linear", "", "the image file holds data/linear values: no sRGB decode"}};
+            {"--linear", "", "the image file holds data/linear values: no sRGB decode"},
+            {"--memory-budget", "SIZE", "most host memory a texture may take (512M, 8G; default: half of physical "
+                                        "memory); checked from the file's header before decoding"}};
 }
 
 std::vector<FlagSpec> sampler_flags()
@@ -54,6 +58,8 @@ TextureSource texture_source_from(const Args& args)
     source.name_or_path = args.require("--texture");
     source.procedural_size = args.get_int("--texture-size", 256, 1, max_texture_dimension);
     source.color = args.has("--linear") ? ColorSpace::linear : ColorSpace::automatic;
+    if (args.has("--memory-budget"))
+        source.memory_budget = parse_flag(args, "--memory-budget", "", parse_byte_size);
     return source;
 }
 
@@ -113,6 +119,16 @@ Backend backend_from(const Args& args)
     if (name == "reference")
         return Backend::reference;
     throw Error("bad value for --backend: '" + name + "' (expected vulkan or reference)");
+}
+
+CommandDevice open_command_device(Backend backend, const Args& args)
+{
+    CommandDevice device;
+    if (backend == Backend::vulkan) {
+        device.gpu = std::make_unique<GpuSession>(context_options_from(args));
+        device.limits = device_limits(device.gpu->context.info);
+    }
+    return device;
 }
 
 void check_validation_clean()

@@ -5,6 +5,7 @@
 #include "filter.h"
 #include "texture_source.h"
 #include "vk_context.h"
+#include <memory>
 #include <vector>
 
 namespace tf {
@@ -45,6 +46,15 @@ struct GpuSession {
     GpuSession(const GpuSession&) = delete;
     GpuSession& operator=(const GpuSession&) = delete;
 };
+
+// The device of a command that can run on either backend: opened (with --backend vulkan) before the texture
+// is loaded, so that load_texture checks the texture against the device's memory before decoding it.
+struct CommandDevice {
+    std::unique_ptr<GpuSession> gpu; // null with --backend reference
+    DeviceLimits limits;
+    TextureUse texture_use(bool sat) const { return {sat, gpu ? &limits : nullptr}; }
+};
+CommandDevice open_command_device(Backend backend, const Args& args);
 
 // Throws tf::Error if the validation layers reported anything so far.
 void check_validation_clean();

@@ -1,8 +1,10 @@
 #include "bench.h"
 #include "cli_common.h"
 #include "commands.h"
+#include "device_memory_check.h"
 #include "error.h"
 #include "gpu_render.h"
+#include "memory_budget.h"
 #include "output_path.h"
 #include <cstdio>
 #include <filesystem>
@@ -66,9 +68,11 @@ struct StagingDirectory {
 void check_output_directory(const fs::path& out)
 {
     fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
-    if (!fs::is_directory(parent))
+    std::error_code ec;
+    if (!fs::is_directory(parent, ec))
         throw Error(out.string() + ": its parent directory does not exist");
-    if (fs::exists(out) && (!fs::is_directory(out) || !fs::is_empty(out)))
+    check_writable_directory(parent.string(), "bench --out " + out.string());
+    if (fs::exists(fs::symlink_status(out, ec)) && (!fs::is_directory(fs::symlink_status(out, ec)) || !fs::is_empty(out, ec)))
         throw Error(out.string() + ": exists and is not an empty directory (the benchmark never overwrites results)");
 }
 
@@ -84,6 +88,7 @@ int run_bench(const std::vector<std::string>& argv)
           {"--size", "WxH", "image size, even sides (default 256x256)"},
           {"--texture", "T", "procedural texture (default checker)"},
           {"--texture-size", "N", "its side in texels (default 512)"},
+          {"--memory-budget", "SIZE", "most host memory the texture may take (512M, 8G; default: half of physical memory)"},
           {"--spp", "N", "ground truth samples a pixel, a square number (default 256)"},
           {"--truth-backend", "B", "vulkan (default: the device) or reference (the CPU, in double)"},
           {"--warmup", "N", "untimed frames before timing (default 5)"},
@@ -107,6 +112,8 @@ int run_bench(const std::vector<std::string>& argv)
     config.stage = parse_flag(args, "--stage", "fragment", parse_stage);
     config.texture.name_or_path = args.get("--texture", "checker");
     config.texture.procedural_size = args.get_int("--texture-size", config.quick ? 256 : 512, 1, 16384);
+    if (args.has("--memory-budget"))
+        config.texture.memory_budget = parse_flag(args, "--memory-budget", "", parse_byte_size);
     config.truth_side = parse_flag(args, "--spp", config.quick ? "64" : "256", parse_spp_side);
     std::string truth = args.get("--truth-backend", "vulkan");
     if (truth != "vulkan" && truth != "reference")
@@ -127,18 +134,24 @@ int run_bench(const std::vector<std::string>& argv)
     }
     config.filters = select_filters(args.get("--filters", ""));
 
-    fs::path out = args.require("--out");
+    std::string out_text = args.require("--out");
+    while (out_text.size() > 1 && out_text.back() == '/') // results/ names the directory results
+        out_text.pop_back();
+    fs::path out = out_text;
     check_output_directory(out);
-    StagingDirectory staging{out.string() + ".tmp-" + std::to_string(getpid())};
+    GpuSession gpu(context_options_from(args));
+    // Every filter runs, the SAT ones too: the texture must fit the table, the memory budget and the device.
+    const DeviceLimits limits = device_limits(gpu.context.info);
+    MipChain chain = load_texture(config.texture, {true, &limits});
+    StagingDirectory staging{temporary_path_for(out.string())};
     fs::create_directories(staging.path);
 
-    GpuSession gpu(context_options_from(args));
     bool cpu_device = gpu.context.info.type == "cpu";
     config.timer = parse_flag(args, "--timer", cpu_device ? "wall-clock" : "timestamps", parse_frame_timer);
     std::printf("bench on %s (%s %s), %dx%d, %zu scenes x %zu filters, %s timer\n", gpu.context.info.name.c_str(),
                 gpu.context.info.driver_name.c_str(), gpu.context.info.driver_info.c_str(), config.width, config.height,
                 config.scenes.size(), config.filters.size(), to_string(config.timer).c_str());
-    BenchRun run = run_bench(gpu.context, config, staging.path.string());
+    BenchRun run = run_bench(gpu.context, config, chain, staging.path.string());
     gpu.finish(); // validation messages fail the run before anything appears at --out
     write_file_atomic((staging.path / "bench.json").string(), bench_json(run));
     write_file_atomic((staging.path / "bench.csv").string(), bench_csv(run));

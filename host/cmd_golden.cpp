@@ -1,9 +1,12 @@
 #include "cli_common.h"
 #include "commands.h"
+#include "device_memory_check.h"
 #include "error.h"
 #include "golden.h"
 #include "gpu_backend.h"
 #include "image_io.h"
+#include "output_dir.h"
+#include "output_path.h"
 #include "reference_render.h"
 #include "report.h"
 #include <cstdio>
@@ -27,7 +30,7 @@ struct GoldenRun {
 void update_goldens(const GoldenRun& run)
 {
     for (const GoldenCase& c : run.cases) {
-        MipChain chain = load_texture(c.texture);
+        MipChain chain = load_texture(c.texture, {needs_sat(c.sampler.filter), nullptr});
         SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
         std::string path = run.golden_dir + "/" + c.name + ".png";
         write_image(path, reference_render(scene, chain, c.sampler, c.render));
@@ -38,13 +41,13 @@ void update_goldens(const GoldenRun& run)
 int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
 {
     GpuSession gpu(context_options);
+    // Claimed before any case runs (and after the device opened, so that a machine without one is left as it was).
+    OwnedDirectory out = claim_directory(run.out_dir, "golden");
+    const DeviceLimits limits = device_limits(gpu.context.info);
     std::vector<ReportCase> report;
     int failures = 0;
-    fs::create_directories(run.out_dir);
-    for (const char* sub : {"actual", "golden", "diff"}) // images of an earlier run would mislead
-        fs::remove_all(run.out_dir + "/" + sub);
     for (const GoldenCase& c : run.cases) {
-        MipChain chain = load_texture(c.texture);
+        MipChain chain = load_texture(c.texture, {needs_sat(c.sampler.filter), &limits});
         SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
         Image actual = with_texture(gpu.context, chain, needs_sat(c.sampler.filter),
                                     [&](auto& t) { return gpu_render(gpu.context, t, scene, c.sampler, c.render); });
@@ -60,11 +63,13 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
         ReportCase entry{c.name, result.pass, describe(result, c.thresholds), "", "", ""};
         if (!result.pass) {
             ++failures;
-            for (const char* sub : {"actual", "golden", "diff"})
-                fs::create_directories(run.out_dir + "/" + sub);
             entry.actual_png = "actual/" + c.name + ".png";
             entry.golden_png = "golden/" + c.name + ".png";
             entry.diff_png = "diff/" + c.name + ".png";
+            for (const std::string* file : {&entry.actual_png, &entry.golden_png, &entry.diff_png}) {
+                record_file(out, *file);
+                fs::create_directories(fs::path(run.out_dir) / fs::path(*file).parent_path());
+            }
             write_image(run.out_dir + "/" + entry.actual_png, actual);
             fs::copy_file(golden_path, run.out_dir + "/" + entry.golden_png, fs::copy_options::overwrite_existing);
             // Amplified so that one 8-bit step shows; the diff is of sRGB-encoded values.
@@ -77,6 +82,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
     }
     std::string device_name = gpu.context.info.name;
     gpu.finish();
+    record_file(out, "report.html");
     std::string report_path = run.out_dir + "/report.html";
     write_html_report(report_path, "texfilter golden regression on " + device_name, report);
     std::printf("%zu cases, %d failed; report: %s\n", run.cases.size(), failures, report_path.c_str());
@@ -122,6 +128,7 @@ int run_golden(const std::vector<std::string>& argv)
     if (!image_io_available())
         throw Error("golden needs image I/O, which was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON)");
     if (args.has("--update")) {
+        check_writable_directory(run.golden_dir, "golden --update");
         update_goldens(run);
         return 0;
     }

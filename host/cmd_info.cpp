@@ -1,6 +1,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "image_io.h"
+#include "memory_budget.h"
 #include <cstdio>
 
 namespace tf {
@@ -30,6 +31,8 @@ int run_info(const std::vector<std::string>& argv)
                     "maxSamplerLodBias %g, maxImageDimension2D %u\n",
                     d.sub_texel_precision_bits, d.mipmap_precision_bits, d.max_sampler_anisotropy,
                     d.sampler_anisotropy ? "" : " (feature off)", d.max_sampler_lod_bias, d.max_image_dimension_2d);
+        std::printf("    device-local heap %u: %s, maxMemoryAllocationSize %s\n", d.device_local_heap_index,
+                    format_bytes(d.device_local_heap_size).c_str(), format_bytes(d.max_memory_allocation_size).c_str());
         std::printf("    subgroup size %u, quad ops: fragment %s, compute %s\n", d.subgroup_size,
                     d.quad_ops_fragment ? "yes" : "no", d.quad_ops_compute ? "yes" : "no");
         if (!d.usable)

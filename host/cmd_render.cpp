@@ -39,23 +39,23 @@ int run_render(const std::vector<std::string>& argv)
     auto [width, height] = parse_size("--size", args.get("--size", "256x256"), 2, 8192);
     if (width % 2 || height % 2)
         throw Error("bad value for --size: '" + args.get("--size", "") + "' (sides must be even: derivatives come from 2x2 quads)");
-    std::string out = args.require("-o");
+    TextureSource source = texture_source_from(args);
+    std::string out = checked_output_path(args.require("-o"), {".png", ".exr", ".pfm"}, {source.name_or_path});
     if (!image_io_available() && !is_pfm_path(out))
         throw Error(out + ": image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON; "
                           ".pfm output is built in)");
-    check_output_path(out, {".png", ".exr", ".pfm"});
-    TextureSource source = texture_source_from(args);
-    MipChain chain = load_texture(source);
+    CommandDevice device = open_command_device(backend, args);
+    MipChain chain = load_texture(source, device.texture_use(needs_sat(options.filter)));
+    GpuSession* gpu = device.gpu.get();
     SceneParams scene = make_scene(kind, width, height, chain.levels[0].width);
 
     Image image;
-    if (backend == Backend::reference) {
+    if (!gpu) {
         image = reference_render(scene, chain, options, render);
     } else {
-        GpuSession gpu(context_options_from(args));
-        image = with_texture(gpu.context, chain, needs_sat(options.filter),
-                             [&](auto& t) { return gpu_render(gpu.context, t, scene, options, render); });
-        gpu.finish();
+        image = with_texture(gpu->context, chain, needs_sat(options.filter),
+                             [&](auto& t) { return gpu_render(gpu->context, t, scene, options, render); });
+        gpu->finish();
     }
     write_image(out, image);
     std::printf("%s\n", out.c_str());

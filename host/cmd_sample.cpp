@@ -57,24 +57,25 @@ int run_sample(const std::vector<std::string>& argv)
         throw Error("bad value for --filter: ground-truth integrates over a scene's pixels, not around a lookup "
                     "(use render)");
     Backend backend = backend_from(args);
-    std::string out = args.require("-o");
-    check_output_path(out, {".csv"});
-    std::vector<Lookup> lookups = read_lookups_csv(args.require("--lookups"));
-    MipChain chain = load_texture(texture_source_from(args));
-
+    TextureSource source = texture_source_from(args);
+    std::string out = checked_output_path(args.require("-o"), {".csv"}, {args.require("--lookups"), source.name_or_path});
     bool with_stats = args.has("--stats");
     if (with_stats && backend != Backend::vulkan)
         throw Error("--stats counts the shader's fetches: it needs --backend vulkan");
+    std::vector<Lookup> lookups = read_lookups_csv(args.require("--lookups"));
+    CommandDevice device = open_command_device(backend, args);
+    MipChain chain = load_texture(source, device.texture_use(needs_sat(options.filter)));
+    GpuSession* gpu = device.gpu.get();
+
     std::vector<glm::dvec4> colors;
     std::vector<LookupStats> stats;
-    if (backend == Backend::reference) {
+    if (!gpu) {
         colors = reference_sample_all(chain, lookups, options);
     } else {
-        GpuSession gpu(context_options_from(args));
-        std::vector<glm::vec4> results = with_texture(gpu.context, chain, needs_sat(options.filter), [&](auto& t) {
-            return gpu_sample(gpu.context, t, lookups, options, &stats);
+        std::vector<glm::vec4> results = with_texture(gpu->context, chain, needs_sat(options.filter), [&](auto& t) {
+            return gpu_sample(gpu->context, t, lookups, options, &stats);
         });
-        gpu.finish();
+        gpu->finish();
         colors.assign(results.begin(), results.end());
     }
     write_colors_csv(out, colors, with_stats ? &stats : nullptr);

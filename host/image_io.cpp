@@ -18,6 +18,9 @@
 #include <system_error>
 #include <vector>
 
+#include <cstdio>
+#include <unistd.h>
+
 namespace tf {
 namespace {
 
@@ -64,16 +67,89 @@ bool stored_as_srgb(const OIIO::ImageSpec& spec, const std::string& format_name)
     return false;
 }
 
+// libpng's default error handler (which OIIO 2.4 keeps) prints "libpng error: ..." to stderr before OIIO
+// reports the same failure. While a decoder runs, file descriptor 2 points at an unnamed temporary file;
+// what landed there is handed back, so a failure gives one message and a success can pass warnings on.
+class StderrCapture {
+public:
+    StderrCapture()
+    {
+        std::fflush(stderr);
+        capture_ = std::tmpfile();
+        saved_ = capture_ ? dup(2) : -1;
+        if (saved_ >= 0 && dup2(fileno(capture_), 2) < 0) {
+            close(saved_);
+            saved_ = -1;
+        }
+    }
+    StderrCapture(const StderrCapture&) = delete;
+    StderrCapture& operator=(const StderrCapture&) = delete;
+    ~StderrCapture() { finish(); }
+
+    // Restores stderr and returns what was written meanwhile (at most a few KB are kept).
+    std::string finish()
+    {
+        std::string text;
+        if (saved_ >= 0) {
+            std::fflush(stderr);
+            dup2(saved_, 2);
+            close(saved_);
+            saved_ = -1;
+            std::rewind(capture_);
+            char buffer[4096];
+            const size_t n = std::fread(buffer, 1, sizeof buffer, capture_);
+            text.assign(buffer, n);
+        }
+        if (capture_) {
+            std::fclose(capture_);
+            capture_ = nullptr;
+        }
+        return text;
+    }
+
+private:
+    std::FILE* capture_ = nullptr;
+    int saved_ = -1;
+};
+
+// Uninitialised on purpose: a corrupt file that claims a huge size fails on its first rows, before a
+// zero-fill would have touched gigabytes of pages.
+struct FloatBuffer {
+    std::unique_ptr<float[]> data;
+    size_t size = 0;
+    const float& operator[](size_t i) const { return data[i]; }
+};
+
 struct RawPixels {
     int width = 0, height = 0, channels = 0;  // channels: 1..4 as read
-    std::vector<float> values;                // interleaved, normalised as OIIO converts to float
+    FloatBuffer values;                       // interleaved, normalised as OIIO converts to float
     bool srgb = false;                        // what the automatic rule says about this file
     int integer_levels = 0;                   // 255 / 65535 for UINT8 / UINT16, else 0
 };
 
-// Opens, validates and reads the first subimage as float. Files with more than four channels
-// (EXR with extra layers, say) contribute their first four: OIIO orders R, G, B, A first.
-RawPixels read_pixels(const std::string& path, int max_dimension) {
+// The first line of a library message, cut to a readable length.
+std::string first_line(const std::string& text) {
+    std::string line = text.substr(0, text.find('\n'));
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    return line.size() > 200 ? line.substr(0, 200) + "..." : line;
+}
+
+// Deflate expands at most 1032:1 (258-byte matches coded in 2 bits), so a PNG's filtered rows,
+// height x (1 + width x bytes per pixel), can never exceed 1032 times the file's size. Returns what is
+// wrong, or nothing.
+std::string impossible_png_claim(const std::string& path, const OIIO::ImageSpec& spec) {
+    std::error_code ec;
+    const double file_bytes = double(fs::file_size(path, ec));
+    const double bytes_per_pixel = double(spec.nchannels) * double(spec.format.size());
+    const double row_bytes = 1.0 + std::ceil(double(spec.width) * bytes_per_pixel);
+    if (ec || double(spec.height) * row_bytes <= 1032.0 * file_bytes) return {};
+    return "the header claims " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+           " pixels, more than a " + std::to_string(uint64_t(file_bytes)) +
+           "-byte PNG can hold (deflate expands at most 1032:1): truncated or corrupt";
+}
+
+// Opens the file and checks what its header claims; the caller reads pixels from the returned input.
+std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, int max_dimension, StderrCapture& capture) {
     check_readable_file(path);
 
     // Keep PNG alpha unassociated (as stored): otherwise OIIO premultiplies on read, in the
@@ -81,17 +157,19 @@ RawPixels read_pixels(const std::string& path, int max_dimension) {
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
     auto in = OIIO::ImageInput::open(path, &config);
-    if (!in) throw Error(path + ": cannot open as an image: " + oiio_message(OIIO::geterror()));
-
-    const OIIO::ImageSpec spec = in->spec();
-    const std::string format_name = in->format_name();
+    if (!in) {
+        const std::string message = oiio_message(OIIO::geterror());
+        capture.finish();
+        throw Error(path + ": cannot open as an image: " + message);
+    }
+    const OIIO::ImageSpec& spec = in->spec();
     auto fail = [&](const std::string& what) {
         in->geterror();  // drain
         in->close();
         in->geterror();
+        capture.finish();
         throw Error(path + ": " + what);
     };
-
     if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1)
         fail("unsupported image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
              (spec.depth > 1 ? "x" + std::to_string(spec.depth) : std::string()));
@@ -99,6 +177,25 @@ RawPixels read_pixels(const std::string& path, int max_dimension) {
         fail(std::to_string(spec.width) + "x" + std::to_string(spec.height) +
              " exceeds the maximum texture size " + std::to_string(max_dimension));
     if (spec.nchannels <= 0) fail("image has no channels");
+    if (std::string(in->format_name()) == "png")
+        if (const std::string wrong = impossible_png_claim(path, spec); !wrong.empty()) fail(wrong);
+    return in;
+}
+
+// Opens, validates and reads the first subimage as float. Files with more than four channels
+// (EXR with extra layers, say) contribute their first four: OIIO orders R, G, B, A first.
+RawPixels read_pixels(const std::string& path, int max_dimension) {
+    StderrCapture capture;
+    auto in = open_checked(path, max_dimension, capture);
+    const OIIO::ImageSpec spec = in->spec();
+    const std::string format_name = in->format_name();
+    auto fail = [&](const std::string& what) {
+        in->geterror();  // drain
+        in->close();
+        in->geterror();
+        capture.finish();  // libpng's own line said the same as OIIO's message
+        throw Error(path + ": " + what);
+    };
 
     RawPixels raw;
     raw.width = spec.width;
@@ -107,12 +204,17 @@ RawPixels read_pixels(const std::string& path, int max_dimension) {
     raw.srgb = stored_as_srgb(spec, format_name);
     if (spec.format.basetype == OIIO::TypeDesc::UINT8) raw.integer_levels = 255;
     if (spec.format.basetype == OIIO::TypeDesc::UINT16) raw.integer_levels = 65535;
-    raw.values.resize(size_t(raw.width) * size_t(raw.height) * size_t(raw.channels));
+    raw.values.size = size_t(raw.width) * size_t(raw.height) * size_t(raw.channels);
+    try {
+        raw.values.data.reset(new float[raw.values.size]);
+    } catch (const std::bad_alloc&) {
+        fail("out of memory for " + std::to_string(raw.width) + "x" + std::to_string(raw.height) + " pixels");
+    }
 
     bool ok = false;
     std::string oiio_error;
     try {
-        ok = in->read_image(0, 0, 0, raw.channels, OIIO::TypeDesc::FLOAT, raw.values.data());
+        ok = in->read_image(0, 0, 0, raw.channels, OIIO::TypeDesc::FLOAT, raw.values.data.get());
     } catch (const std::exception& e) {
         // Some format plugins report corrupt data by throwing; the contract is a tf::Error.
         oiio_error = e.what();
@@ -121,7 +223,21 @@ RawPixels read_pixels(const std::string& path, int max_dimension) {
         if (oiio_error.empty()) oiio_error = in->geterror();
         fail("cannot read pixels (corrupt or truncated file?): " + oiio_message(oiio_error));
     }
+    // OIIO 2.4 returns success for a JPEG cut short ("Premature end of JPEG file") or a TIFF strip that
+    // ends early, with the missing pixels zero, and only leaves the decoder's complaint in the error
+    // queue: any message there means pixels were not read.
+    if (const std::string pending = in->geterror(); !pending.empty())
+        fail("incomplete pixel data (truncated or corrupt file): " + first_line(pending));
     if (!in->close()) fail("cannot read: " + oiio_message(in->geterror()));
+    // A successful read can still have warnings of the library's own (libpng: "iCCP: known incorrect sRGB
+    // profile"): pass them on, named, one line each.
+    const std::string printed = capture.finish();
+    for (size_t start = 0; start < printed.size();) {
+        const size_t end = std::min(printed.find('\n', start), printed.size());
+        if (end > start) std::fprintf(stderr, "texfilter: %s: warning: %s\n", path.c_str(),
+                                      printed.substr(start, std::min<size_t>(end - start, 200)).c_str());
+        start = end + 1;
+    }
     return raw;
 }
 
@@ -180,6 +296,16 @@ uint8_t encode_png_channel(float linear, bool is_alpha) {
 
 bool image_io_available() { return true; }
 
+ImageHeader read_image_header(const std::string& path, int max_dimension) {
+    StderrCapture capture;
+    auto in = open_checked(path, max_dimension, capture);
+    ImageHeader header{in->spec().width, in->spec().height, std::min(in->spec().nchannels, 4)};
+    in->close();
+    in->geterror();
+    capture.finish();
+    return header;
+}
+
 Image read_image(const std::string& path, ColorSpace space, int max_dimension) {
     const RawPixels raw = read_pixels(path, max_dimension);
     const bool decode = space == ColorSpace::srgb || (space == ColorSpace::automatic && raw.srgb);
@@ -187,9 +313,7 @@ Image read_image(const std::string& path, ColorSpace space, int max_dimension) {
 }
 
 Image read_image_raw(const std::string& path) {
-    // Diffs read whatever they are given, so the limit only guards against absurd headers.
-    constexpr int raw_max_dimension = 32768;
-    return to_rgba(read_pixels(path, raw_max_dimension), false);
+    return to_rgba(read_pixels(path, raw_image_max_dimension), false);
 }
 
 void write_image(const std::string& path, const Image& image) {
@@ -224,6 +348,7 @@ void write_image(const std::string& path, const Image& image) {
     } else {
         spec.attribute("oiio:ColorSpace", "Linear");
         spec.attribute("compression", "zip");
+        spec.attribute("DateTime", "");  // an empty value keeps OIIO from stamping the time: same image, same bytes
     }
 
     const std::string temp = temporary_path_for(path);

@@ -18,6 +18,8 @@ bool image_io_available() { return false; }
 
 Image read_image(const std::string& path, ColorSpace, int) { left_out(path); }
 
+ImageHeader read_image_header(const std::string& path, int) { left_out(path); }
+
 void write_image(const std::string& path, const Image& image)
 {
     if (!is_pfm_path(path))

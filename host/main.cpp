@@ -1,8 +1,10 @@
 // texfilter: render test scenes, run point lookups, compare images, check goldens.
 #include "commands.h"
 #include "error.h"
+#include "temporary_files.h"
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 
 namespace {
@@ -23,6 +25,7 @@ const char* usage = "usage: texfilter COMMAND [options]\n"
 
 int main(int argc, char** argv)
 {
+    tf::install_signal_cleanup(); // before any thread: Ctrl-C must not leave temporaries behind
     if (argc < 2) {
         std::fputs(usage, stderr);
         return 2;
@@ -50,6 +53,10 @@ int main(int argc, char** argv)
         return 2;
     } catch (const tf::Error& e) {
         std::fprintf(stderr, "texfilter: %s\n", e.what());
+        return 2;
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A file system call that a command did not check first: still a message about a path, not a bug report.
+        std::fprintf(stderr, "texfilter: %s: %s\n", e.path1().c_str(), e.code().message().c_str());
         return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "texfilter: internal error: %s\n", e.what());

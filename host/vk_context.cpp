@@ -154,7 +154,9 @@ std::vector<DeviceInfo> list_devices(VkInstance instance)
     TF_VK(vkEnumeratePhysicalDevices(instance, &count, physicals.data()));
     std::vector<DeviceInfo> devices;
     for (uint32_t i = 0; i < count; ++i) {
+        VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
         VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+        driver.pNext = &maintenance3;
         VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
         subgroup.pNext = &driver;
         VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
@@ -184,6 +186,15 @@ std::vector<DeviceInfo> list_devices(VkInstance instance)
         d.quad_ops_compute = quad && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
         d.sampler_anisotropy = features.samplerAnisotropy == VK_TRUE;
         d.timestamp_period_ns = limits.timestampPeriod;
+        d.max_memory_allocation_size = maintenance3.maxMemoryAllocationSize;
+        VkPhysicalDeviceMemoryProperties memory{};
+        vkGetPhysicalDeviceMemoryProperties(physicals[i], &memory);
+        for (uint32_t h = 0; h < memory.memoryHeapCount; ++h)
+            if ((memory.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) &&
+                memory.memoryHeaps[h].size > d.device_local_heap_size) {
+                d.device_local_heap_size = memory.memoryHeaps[h].size;
+                d.device_local_heap_index = h;
+            }
         if (int family = find_queue_family(physicals[i]); family >= 0)
             d.timestamp_valid_bits = queue_family_timestamp_bits(physicals[i], uint32_t(family));
         d.why_not_usable = usability_problem(physicals[i], d);

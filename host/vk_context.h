@@ -26,6 +26,9 @@ struct DeviceInfo {
     bool sampler_anisotropy = false; // feature
     float timestamp_period_ns = 0;     // nanoseconds a timestamp tick
     uint32_t timestamp_valid_bits = 0; // of the queue texfilter uses; 0: no timestamps (no bench timings)
+    uint64_t max_memory_allocation_size = 0; // VkPhysicalDeviceMaintenance3Properties: the largest one allocation
+    uint64_t device_local_heap_size = 0;     // the largest DEVICE_LOCAL heap, where textures go
+    uint32_t device_local_heap_index = 0;
     bool usable = false;
     std::string why_not_usable; // empty when usable
 };

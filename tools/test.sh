@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Quick start, part 2: set up, build, and run the whole test suite (validation layers on for GPU tests).
-# Failing golden cases leave actual/golden/diff images and report.html in build/golden-out/.
+# A failing golden case leaves actual/golden/diff images and report.html in build/golden-out/NAME/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./tools/build.sh

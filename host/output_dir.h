@@ -1,0 +1,25 @@
+#pragma once
+// A results directory a command may reuse (golden's --out): created by the command, or marked as its own by
+// an earlier run, with the list of files it wrote there. Nothing else in it is ever removed or replaced.
+#include <string>
+#include <vector>
+
+namespace tf {
+
+struct OwnedDirectory {
+    std::string path;
+    std::string marker;              // path/.texfilter-COMMAND: says whose it is and lists the files
+    std::string command;
+    std::vector<std::string> files;  // relative to path, written by this run
+};
+
+// Before any work: creates `path` (its parent must exist and be writable), or takes an existing empty
+// directory, or one that an earlier run of `command` marked, removing the files that run listed (an old
+// failure image would mislead). Refuses anything else, naming the path and why. The marker is written at once.
+OwnedDirectory claim_directory(const std::string& path, const std::string& command);
+
+// Lists a file before it is written (relative to the directory, no "..": sub/NAME), so that even an
+// interrupted run leaves a marker that covers everything it wrote. Rewrites the marker atomically.
+void record_file(OwnedDirectory& directory, const std::string& relative);
+
+} // namespace tf
