@@ -115,7 +115,8 @@ glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, d
     return (1 - f) * low + f * high;
 }
 
-glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
+glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                            const SatLevels* sat) {
     if (chain.levels.empty()) throw Error("reference_sample: empty MIP chain");
     if (options.filter == Filter::hw_aniso)
         throw Error("hw-aniso has no CPU reference: anisotropic filtering is implementation-defined in Vulkan");
@@ -152,7 +153,7 @@ glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options
         return reference_ewa(chain, options, reduced);
     case Filter::sat:
     case Filter::sat_assembly:
-        return reference_sat(chain, options, lookup);
+        return reference_sat(chain, options, lookup, sat ? *sat : reference_sat_levels(chain.levels[0]));
     case Filter::none: // the baseline: the scene's uv as colour, no texture
         return glm::dvec4(lookup.u - std::floor(lookup.u), lookup.v - std::floor(lookup.v), 0.5, 1.0);
     case Filter::hw_aniso:

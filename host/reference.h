@@ -44,10 +44,22 @@ glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, d
 glm::dvec4 reference_brilinear(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
 glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
 glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
-glm::dvec4 reference_sat(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+
+// sat averages each channel quantised to 16 bits over the whole texture's range (reference_sat.cpp): that
+// range is found once a batch (reference_render, reference_sample_all), not once a lookup. Throws tf::Error
+// for a NaN or ±Inf texel.
+struct SatLevels {
+    glm::dvec4 lo{0.0};   // per channel: the smallest texel value (quantisation level 0)
+    glm::dvec4 span{0.0}; // largest minus lo, rounded up to float; 0 for a constant channel
+};
+SatLevels reference_sat_levels(const Image& level0);
+glm::dvec4 reference_sat(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                         const SatLevels& levels);
 
 // The full filter. hw-* filters map to the spec formula of the same mode (hw-nearest = nearest, ...);
 // hw-aniso throws tf::Error (its footprint is implementation-defined). Non-finite uv returns (0,0,0,0).
-glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+// `sat`: the texture's SatLevels when the caller has them (null: found here, for this one lookup).
+glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                            const SatLevels* sat = nullptr);
 
 } // namespace tf

@@ -135,11 +135,19 @@ glm::dvec4 box_mean(const Image& image, const Levels& levels, double cx, double 
 
 } // namespace
 
-glm::dvec4 reference_sat(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
+SatLevels reference_sat_levels(const Image& level0) {
+    const Levels levels = channel_levels(level0);
+    return {levels.lo, levels.span};
+}
+
+glm::dvec4 reference_sat(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                         const SatLevels& sat) {
     if (chain.levels.empty()) throw Error("reference_sat: empty MIP chain");
     const Image& image = chain.levels[0];
     const double w = image.width, h = image.height;
-    const Levels levels = channel_levels(image);
+    Levels levels;
+    levels.lo = sat.lo;
+    levels.span = sat.span;
     if (!finite_footprint(chain, lookup)) // NaN, Inf, or past float range as the shader's float input holds it
         return box_mean(image, levels, 0.5 * w, 0.5 * h, 0.5 * w, 0.5 * h, Wrap::repeat); // the whole texture
     const double m = std::exp2(double(options.lod_bias));
