@@ -23,7 +23,7 @@
 //   centre x (relative to uv·w_l) has r² = xᵀM⁻¹x < R² (R² = TF_EWA_SUPPORT = 2) weighs
 //   exp(-alpha r²) - exp(-alpha R²) (computed with exp(), no LUT): continuous, zero at the support's
 //   edge (as pbrt's), so no texel jumps in or out and float and double agree there.
-// Support R² = 2, not pbrt's 1, by measurement (docs/BENCHMARKS.md, texfilter bench --quick, manual
+// Support R² = 2, not pbrt's 1, by measurement (docs/DESIGN.md section 4; texfilter bench --quick, manual
 //   taps, Gaussian-pixel truth): RMSE plane 0.0231 vs 0.0313, tunnel 0.0172 vs 0.0264, slanted
 //   0.0346 vs 0.0412, mesh 0.0381 vs 0.0438, flicker 0.0037 vs 0.0077 (plane); at twice the reads.
 //   At alpha 2 it is a Gaussian about one pixel wide (per-axis variance 0.21 in units of M).
