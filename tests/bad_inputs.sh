@@ -513,6 +513,21 @@ memory_budgets() {
     local render=("$TEXFILTER" render --scene zoom --filter nearest "${REF[@]}")
     write_png_header_only bomb.png 16384 16384
     expect_error "74-byte PNG claiming 16384x16384" "more than a" out.png -- "${render[@]}" --texture bomb.png -o out.png
+    # Its opposite: a real 1-bit PNG compresses close to deflate's limit and must not be taken for a bomb.
+    python3 - <<'EOF'
+import struct, zlib
+w = h = 4096
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
+compressor = zlib.compressobj(9)
+idat = b"".join([compressor.compress(b"\0" * (1 + w // 8)) for _ in range(h)] + [compressor.flush()])
+with open("one_bit.png", "wb") as f:
+    f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 1, 0, 0, 0, 0)) +
+            chunk(b"IDAT", idat) + chunk(b"IEND", b""))
+EOF
+    expect_success "a 4096x4096 1-bit PNG near deflate's limit (not a bomb)" out.png -- \
+        "${render[@]}" --texture one_bit.png -o out.png
+    rm -f out.png one_bit.png
     write_constant_png k1024.png 1024 1024
     expect_error "texture over --memory-budget" "memory budget of 1.0 MiB" out.png -- \
         "${render[@]}" --texture k1024.png --memory-budget 1M -o out.png
