@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <random>
 #include <system_error>
 
 #include <glm/common.hpp>
@@ -162,6 +163,21 @@ double round_to_float(double x)
 }
 
 } // namespace
+
+std::vector<Lookup> random_footprint_lookups(int count, unsigned seed, double max_octave, double max_stretch)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> uv(-1.0, 2.0), angle(0.0, 6.283185307179586), octaves(-4.0, max_octave),
+        stretch(0.0, max_stretch);
+    std::vector<Lookup> lookups;
+    for (int i = 0; i < count; ++i) {
+        const double size = std::exp2(octaves(rng)) / 256.0;
+        const double a = angle(rng), ratio = std::exp2(stretch(rng));
+        lookups.push_back({uv(rng), uv(rng), size * std::cos(a), size * std::sin(a), -size / ratio * std::sin(a),
+                           size / ratio * std::cos(a)});
+    }
+    return lookups;
+}
 
 Lookup as_float(const Lookup& l)
 {

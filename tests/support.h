@@ -56,6 +56,10 @@ std::string texfilter_path_from_args(int argc, char** argv, const char* usage);
 // A fresh directory texfilter-<name>-<pid> in the system's temp dir, removed when the process exits.
 std::filesystem::path make_work_dir(const std::string& name);
 
+// Random lookups: uv in [-1, 2], footprints 2^o / 256 with o in [-4, max_octave] (1/16 texel and up on a
+// 256 texture), a random angle, the minor column shorter by 2^s, s in [0, max_stretch].
+std::vector<Lookup> random_footprint_lookups(int count, unsigned seed, double max_octave, double max_stretch);
+
 // The GPU reads lookups as float: the reference must see the same numbers.
 Lookup as_float(const Lookup& l);
 std::vector<Lookup> as_float(std::vector<Lookup> lookups);

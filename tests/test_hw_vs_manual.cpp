@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <random>
 #include <string>
 #include <vector>
 #include <glm/glm.hpp>
@@ -39,21 +38,6 @@ double bilinear_tolerance(const Image& level, double u, double v, Wrap wrap)
     test::texel_contrast(level, u, v, wrap, across, down);
     // A step in alpha moves both rows, a step in beta moves between rows (themselves moved by alpha).
     return sub_texel_step * (across + down + across) + float_error;
-}
-
-std::vector<Lookup> random_lookups(int count, unsigned seed)
-{
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> uv(-1.0, 2.0), angle(0.0, 6.283185307179586), octaves(-4.0, 9.0),
-        stretch(0.0, 2.0);
-    std::vector<Lookup> lookups;
-    for (int i = 0; i < count; ++i) {
-        double size = std::exp2(octaves(rng)) / 256.0; // footprint from 1/16 texel to 512 texels
-        double a = angle(rng), ratio = std::exp2(stretch(rng));
-        lookups.push_back({uv(rng), uv(rng), size * std::cos(a), size * std::sin(a), -size / ratio * std::sin(a),
-                           size / ratio * std::cos(a)});
-    }
-    return lookups;
 }
 
 struct Tally {
@@ -142,7 +126,8 @@ int main(int argc, char** argv)
     texfilter = test::texfilter_path_from_args(argc, argv, "test_hw_vs_manual PATH/TO/texfilter");
     work = test::make_work_dir("hw-vs-manual");
     // The reference sees the float-rounded values the GPU sees.
-    const std::vector<Lookup> lookups = test::as_float(random_lookups(4096, 2026));
+    // Footprints from 1/16 texel to 512 texels, up to 4:1.
+    const std::vector<Lookup> lookups = test::as_float(test::random_footprint_lookups(4096, 2026, 9.0, 2.0));
     const std::string path = (work / "lookups.csv").string();
     test::write_lookups_csv(path, lookups);
     try {

@@ -36,16 +36,7 @@ std::filesystem::path work;
 // [0, 1]; then the degenerate ones.
 std::vector<Lookup> probe_lookups(int count, unsigned seed)
 {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> uv(-1.0, 2.0), angle(0.0, 6.283185307179586), octaves(-4.0, 8.0),
-        stretch(0.0, 4.0);
-    std::vector<Lookup> lookups;
-    for (int i = 0; i < count; ++i) {
-        double size = std::exp2(octaves(rng)) / 256.0, a = angle(rng), ratio = std::exp2(stretch(rng));
-        lookups.push_back({uv(rng), uv(rng), size * std::cos(a), size * std::sin(a), -size / ratio * std::sin(a),
-                           size / ratio * std::cos(a)});
-    }
-    return test::as_float(lookups);
+    return test::as_float(test::random_footprint_lookups(count, seed, 8.0, 4.0));
 }
 
 const double nan_ = std::numeric_limits<double>::quiet_NaN(), inf_ = INFINITY;
