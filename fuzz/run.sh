@@ -46,7 +46,12 @@ case $mode in
     seconds=$1 work=$2
     shift 2
     if [ "${1:-}" = "--fresh" ]; then
-      rm -rf "$work"
+      # Only what this script makes there (corpus/, artifacts/) is removed; anything else is refused.
+      if [ -d "$work" ] && [ -n "$(find "$work" -mindepth 1 -maxdepth 1 ! -name corpus ! -name artifacts -print -quit)" ]; then
+        echo "run.sh: $work holds files run.sh did not make; not removing it (choose another WORK)" >&2
+        exit 2
+      fi
+      rm -rf "$work/corpus" "$work/artifacts"
       shift
     fi
     mkdir -p "$work/corpus" "$work/artifacts"
