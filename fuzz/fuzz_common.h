@@ -1,7 +1,7 @@
 #pragma once
 // What the libFuzzer targets share: a check that aborts (libFuzzer then saves the input as a crash),
 // and the valid ranges of SamplerOptions that every parser must hand back.
-#include "filter.h"
+#include "core/filter.h"
 
 #include <cmath>
 #include <cstdio>

@@ -1,5 +1,5 @@
 // libFuzzer target: loading an image file through the project's entry point (tf::read_image in
-// host/image_io.cpp, OpenImageIO underneath) and building its MIP chain (host/mip.cpp). The input is
+// host/io/image_io.cpp, OpenImageIO underneath) and building its MIP chain (host/texture/mip.cpp). The input is
 // the file's bytes; it is written to a scratch file whose extension follows the content's magic number
 // (PNG, JPEG, EXR, TIFF, PFM, else .img), as a user's file would be named.
 // Asserts: only tf::Error escapes (naming the path); an accepted image has the size its header gave,
@@ -7,10 +7,10 @@
 // decode into [0, 1]; finite texels average to finite MIP texels.
 // The size limit is 512 (not the CLI's 16384) so that one input stays a few MB: what a tiny file that
 // claims a huge image costs is the loader's memory budget's business, tested there.
-#include "error.h"
+#include "texture/error.h"
 #include "fuzz_common.h"
-#include "image_io.h"
-#include "mip.h"
+#include "io/image_io.h"
+#include "texture/mip.h"
 
 #include <OpenImageIO/imageio.h>
 

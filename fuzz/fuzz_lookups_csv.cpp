@@ -1,10 +1,10 @@
-// libFuzzer target: the `sample` command's lookups CSV reader (host/lookups_csv.cpp), from memory.
+// libFuzzer target: the `sample` command's lookups CSV reader (host/io/lookups_csv.cpp), from memory.
 // Asserts: only tf::Error escapes; a message names the file and is one short printable line (it quotes
 // at most a few dozen characters of the input); what it accepts has at most one lookup a line and reads
 // back the same when written with every digit.
-#include "error.h"
+#include "texture/error.h"
 #include "fuzz_common.h"
-#include "lookups_csv.h"
+#include "io/lookups_csv.h"
 
 #include <cstdint>
 #include <cstring>

@@ -1,9 +1,9 @@
-// libFuzzer target: the golden manifest parser (host/golden.cpp), from memory. Asserts: only tf::Error
+// libFuzzer target: the golden manifest parser (host/cli/golden.cpp), from memory. Asserts: only tf::Error
 // escapes, and every message starts with the file's name and a line number; accepted cases have unique
 // names, a size in [2, 4096]², thresholds in their ranges and sampler options in theirs.
-#include "error.h"
+#include "texture/error.h"
 #include "fuzz_common.h"
-#include "golden.h"
+#include "cli/golden.h"
 
 #include <cctype>
 #include <cstdint>

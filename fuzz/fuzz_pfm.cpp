@@ -1,9 +1,9 @@
-// libFuzzer target: the PFM reader (host/pfm.cpp), from memory. Asserts: only tf::Error escapes, naming
+// libFuzzer target: the PFM reader (host/io/pfm.cpp), from memory. Asserts: only tf::Error escapes, naming
 // the file; an accepted file is exactly its header plus width x height x 12 bytes, gives that many texels
 // with alpha 1, and never needs more memory than the input's size says (the length is checked first).
-#include "error.h"
+#include "texture/error.h"
 #include "fuzz_common.h"
-#include "pfm.h"
+#include "io/pfm.h"
 
 #include <cstdint>
 #include <sstream>

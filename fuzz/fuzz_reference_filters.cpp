@@ -20,11 +20,11 @@
 //     s < 160: ((s - 96) * 256 + next byte) / 8192 - 1 (uv-like, [-1, 1));
 //     else: ±(s - 160) / 95 * 2^(next byte - 128) (any magnitude)
 //   then 4 bytes a texel (RGBA / 255) for texels from the input.
-#include "error.h"
+#include "texture/error.h"
 #include "fuzz_common.h"
-#include "mip.h"
-#include "procedural.h"
-#include "reference.h"
+#include "texture/mip.h"
+#include "core/procedural.h"
+#include "reference/reference.h"
 
 #include <algorithm>
 #include <cfloat>

@@ -20,7 +20,7 @@ fi
 TEXFILTER=$(realpath "$1")
 GOLDEN_DIR=$(realpath "$2")
 SELECTED=("${@:3}")
-# The first line of golden --out's marker (host/output_dir.cpp): a directory with it is golden's own.
+# The first line of golden --out's marker (host/io/output_dir.cpp): a directory with it is golden's own.
 GOLDEN_MARKER_HEADING="# texfilter golden output directory. texfilter golden removes the files listed here (and only these) when it runs again with this --out."
 # With validation on (as for the GPU tests), the loader's own complaints reach stderr as validation
 # messages; this script checks the messages a user sees by default.

@@ -1,5 +1,5 @@
 #include "support.h"
-#include "lookups_csv.h"
+#include "io/lookups_csv.h"
 
 #include <algorithm>
 #include <climits>

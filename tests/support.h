@@ -1,9 +1,9 @@
 #pragma once
 // What the tests in this folder share: CHECK macros with one failure count, a scratch directory, and
 // `texfilter sample` runs (a lookups CSV in, colours and per-lookup stats out).
-#include "error.h"
-#include "lookup_stats.h"
-#include "reference.h"
+#include "texture/error.h"
+#include "core/lookup_stats.h"
+#include "reference/reference.h"
 
 #include <exception>
 #include <filesystem>

@@ -1,4 +1,4 @@
-// brilinear and aniso (shaders/texfilter/brilinear.glsl, aniso.glsl; host/reference_aniso.cpp).
+// brilinear and aniso (shaders/texfilter/brilinear.glsl, aniso.glsl; host/reference/aniso.cpp).
 //
 // Part 1, the CPU reference against facts worked out by hand: brilinear blend weights on mipcolors,
 // band 1 == trilinear and band 0 == bilinear-mip exactly, the probe count, LOD and probe places of both
@@ -8,10 +8,10 @@
 // taps within the sampler's precision, and texel-fetch / hardware-lookup counts.
 //
 // usage: test_brilinear_aniso PATH/TO/texfilter
-#include "image.h"
-#include "mip.h"
-#include "procedural.h"
-#include "reference.h"
+#include "texture/image.h"
+#include "texture/mip.h"
+#include "core/procedural.h"
+#include "reference/reference.h"
 #include "support.h"
 
 #include <algorithm>

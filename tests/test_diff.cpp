@@ -1,11 +1,11 @@
 // Tests for diff.h, image_io.h (OpenImageIO build) and report.h. Plain main(); exits 1 on any failure.
 // Needs OpenImageIO itself too: some inputs are written through OIIO directly, in layouts
 // (grey, grey+alpha, RGB, 16-bit, 5-channel EXR) that write_image never produces.
-#include "diff.h"
-#include "error.h"
-#include "image.h"
-#include "image_io.h"
-#include "report.h"
+#include "core/diff.h"
+#include "texture/error.h"
+#include "texture/image.h"
+#include "io/image_io.h"
+#include "io/report.h"
 #include "support.h"
 
 #include <OpenImageIO/imageio.h>

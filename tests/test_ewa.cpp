@@ -1,4 +1,4 @@
-// EWA (shaders/texfilter/ewa.glsl, host/reference_ewa.cpp): the CPU reference and the GPU (lavapipe
+// EWA (shaders/texfilter/ewa.glsl, host/reference/ewa.cpp): the CPU reference and the GPU (lavapipe
 // by default), both tap forms. One line per check with the measured number and its bound.
 //
 // usage: test_ewa PATH/TO/texfilter
@@ -6,14 +6,14 @@
 // fetch counts) and, for the non-finite and huge footprints, through `texfilter sample --validate`
 // (the command must return: the shader's loops are capped). TEXFILTER_VALIDATE=1 turns the
 // validation layers on in-process too; any message fails the test.
-#include "filter.h"
-#include "gpu_backend.h"
-#include "image.h"
-#include "mip.h"
-#include "procedural.h"
-#include "reference.h"
+#include "core/filter.h"
+#include "vulkan/backend.h"
+#include "texture/image.h"
+#include "texture/mip.h"
+#include "core/procedural.h"
+#include "reference/reference.h"
 #include "support.h"
-#include "vk_context.h"
+#include "vulkan/context.h"
 
 #include <algorithm>
 #include <cmath>

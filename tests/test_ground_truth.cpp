@@ -1,15 +1,15 @@
 // Tests of the ground truth (stratified pixel-filter samples, reference_ground_truth), the PFM reader and
 // writer and the benchmark's measures, all on the CPU. Expected values come from the maths in the
 // comments, never from the code under test; each tolerance says where it comes from.
-#include "bench_metrics.h"
-#include "error.h"
-#include "filter.h"
-#include "ground_truth.h"
-#include "image.h"
-#include "mip.h"
-#include "pfm.h"
-#include "reference.h"
-#include "scene.h"
+#include "bench/metrics.h"
+#include "texture/error.h"
+#include "core/filter.h"
+#include "reference/ground_truth.h"
+#include "texture/image.h"
+#include "texture/mip.h"
+#include "io/pfm.h"
+#include "reference/reference.h"
+#include "scene/scene.h"
 #include "support.h"
 
 #include <algorithm>

@@ -2,8 +2,8 @@
 // The hardware is allowed exactly what Vulkan lets it round: texel weights to subTexelPrecisionBits
 // (8 on lavapipe) and the level blend to mipmapPrecisionBits (4), plus lavapipe's approximate log2
 // in the LOD (measured ~0.04, DESIGN.md section 4). Anything beyond that is a bug in one of the two.
-#include "procedural.h"
-#include "reference.h"
+#include "core/procedural.h"
+#include "reference/reference.h"
 #include "support.h"
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
 // Tier-1 tests of the CPU reference against hand-computed facts (DESIGN.md section 5).
 // Expected values are worked out by hand in the comments, never by calling the code under test.
-#include "error.h"
-#include "filter.h"
-#include "image.h"
-#include "mip.h"
-#include "procedural.h"
-#include "reference.h"
+#include "texture/error.h"
+#include "core/filter.h"
+#include "texture/image.h"
+#include "texture/mip.h"
+#include "core/procedural.h"
+#include "reference/reference.h"
 #include "support.h"
 
 #include <algorithm>

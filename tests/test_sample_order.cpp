@@ -13,7 +13,7 @@
 // has 9 significant digits: a float round trip). Plus the degenerate inputs' documented answers:
 // non-finite uv gives vec4(0); NaN/±Inf and huge (≥ 2^20) gradients give the coarsest level (hw-trilinear,
 // hw-aniso; hw-nearest and hw-bilinear read level 0 only), within float rounding of the 1x1 level.
-#include "procedural.h"
+#include "core/procedural.h"
 #include "support.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-// Summed-area tables: the host table (host/sat.h) against brute force, and the sat / sat-assembly
+// Summed-area tables: the host table (host/texture/sat.h) against brute force, and the sat / sat-assembly
 // includes (shaders/texfilter/sat.glsl) through `texfilter sample` against the CPU reference
-// (host/reference_sat.cpp) and against facts worked out here from the texels themselves.
+// (host/reference/sat.cpp) and against facts worked out here from the texels themselves.
 //
 // usage: test_sat PATH/TO/texfilter      (one line per check with the measured numbers)
 //
@@ -13,11 +13,11 @@
 // of an edge moves it by ≤ 2^-24·|x|; moving an edge by δ moves a mean by ≤ δ/width·(max − min texel), so
 // per axis we allow 2^-21·(|x| + h + 1)/h·range (8x the few roundings there are). Footprints of at
 // least 1/8 texel keep that term small; texel-aligned boxes in power-of-two textures have none.
-#include "error.h"
-#include "image_io.h"
-#include "procedural.h"
-#include "reference.h"
-#include "sat.h"
+#include "texture/error.h"
+#include "io/image_io.h"
+#include "core/procedural.h"
+#include "reference/reference.h"
+#include "texture/sat.h"
 #include "support.h"
 
 #include <glm/common.hpp>

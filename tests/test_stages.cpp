@@ -3,10 +3,10 @@
 // reference's quads, coarse quads and ray differentials. Runs in-process so that the float32 readbacks
 // are compared as they are (an image file would round them). Validation layers on.
 #include "support.h"
-#include "gpu_backend.h"
-#include "procedural.h"
-#include "reference_render.h"
-#include "scene.h"
+#include "vulkan/backend.h"
+#include "core/procedural.h"
+#include "reference/render.h"
+#include "scene/scene.h"
 #include <cmath>
 #include <cstdio>
 

@@ -8,7 +8,8 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers vulkan-tools
   glslang-tools glslc spirv-tools
-  libglm-dev libopenimageio-dev openimageio-tools libglfw3-dev
+  libglm-dev libopenimageio-dev openimageio-tools
+  libvulkan-volk-dev nlohmann-json3-dev doctest-dev
   python3 python3-venv
   clang libclang-rt-14-dev
 )

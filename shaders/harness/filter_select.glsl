@@ -22,7 +22,7 @@ layout(set = 0, binding = TF_BINDING_SAT_HIGH) uniform usampler2D u_satHigh;
 // sampling code for all of them (hw-aniso renders ran ~30x slower).
 layout(constant_id = TF_SPEC_FILTER) const int TF_FILTER_ID = 0;
 
-// Mirrors tf::PushConstants (host/vk_resources.h).
+// Mirrors tf::PushConstants (host/scene/shader_interface.h).
 layout(push_constant) uniform tf_PushConstants {
     int wrapMode;
     float lodBias;

@@ -1,13 +1,13 @@
 // Harness only: the ground truth a filtered pixel is judged against. The pixel integrates the level-0
 // texture (bilinear reconstruction) over the scene itself under a pixel filter, by stratified
 // supersampling: a side x side grid of strata jittered by an integer hash of (pixel, sample), the
-// pattern of host/ground_truth.cpp (the CPU twin, in double). Box: uniform over the pixel. Gaussian:
+// pattern of host/reference/ground_truth.cpp (the CPU twin, in double). Box: uniform over the pixel. Gaussian:
 // sigma TF_GROUND_TRUTH_SIGMA pixels about the centre, Box-Muller on the stratified unit square.
 // Needs scene.glsl and filter_select.glsl (u_texture, pc) included first.
 #ifndef TF_HARNESS_GROUND_TRUTH_GLSL
 #define TF_HARNESS_GROUND_TRUTH_GLSL
 
-// host/hash.h mix32 ("lowbias32"), bit for bit.
+// host/core/hash.h mix32 ("lowbias32"), bit for bit.
 uint tf_truth_hash(uint x)
 {
     x ^= x >> 16;

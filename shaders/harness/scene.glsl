@@ -1,10 +1,10 @@
-// Harness only: ray-casts the test scenes per pixel. The CPU twin is host/scene.cpp (in double).
+// Harness only: ray-casts the test scenes per pixel. The CPU twin is host/reference/scene_cast.cpp (in double).
 #ifndef TF_HARNESS_SCENE_GLSL
 #define TF_HARNESS_SCENE_GLSL
 
 #include "config.h"
 
-// std140 mirror of tf::SceneParams (host/scene.h).
+// std140 mirror of tf::SceneParams (host/scene/scene.h).
 struct tf_SceneParams {
     vec4 origin;     // camera position
     vec4 forward;    // camera forward (unit)

@@ -9,7 +9,7 @@
 //          satHigh: usampler2D, R32UI, same size: bits 32..39 of R, G, B, A as bytes 0..3;
 //          offset, scale: vec4, per channel the value of quantisation level 0 and the span of levels
 //                   0..65535. All four come from tf::build_sat
-//                   (host/sat.h: SatTable::low, ::high, ::offset, ::scale); upload them as is, one level each, with a
+//                   (host/texture/sat.h: SatTable::low, ::high, ::offset, ::scale); upload them as is, one level each, with a
 //                   nearest sampler (integer formats are not filterable; only texelFetch reads them). The
 //                   level-0 texture itself is not needed: W x H is the table's size minus one (W, H ≤
 //                   4096; a table smaller than 2 x 2, i.e. none, gives vec4(0)). No MIP chain.

@@ -1,0 +1,209 @@
+#include "bench/bench.h"
+#include "texture/error.h"
+#include "vulkan/render.h"
+#include "io/pfm.h"
+#include "reference/render.h"
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+
+namespace tf {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+BenchFilter make_filter(const std::string& label, Filter filter, const std::string& extra = "")
+{
+    BenchFilter f{label, SamplerOptions{}, "--filter " + to_string(filter) + (extra.empty() ? "" : " " + extra)};
+    f.options.filter = filter;
+    return f;
+}
+
+std::string today()
+{
+    std::time_t now = std::time(nullptr);
+    std::tm local{};
+    localtime_r(&now, &local);
+    char text[16];
+    std::strftime(text, sizeof text, "%Y-%m-%d", &local);
+    return text;
+}
+
+// The mesh scene is rasterized, so it always takes the graphics pipeline; the others take config.stage.
+RenderOptions render_options_for(SceneKind kind, Stage stage)
+{
+    return make_render_options(kind, kind == SceneKind::mesh ? Stage::fragment : stage, Gradients::fine);
+}
+
+std::string image_path(SceneKind scene, const std::string& name)
+{
+    return "images/" + to_string(scene) + "/" + name + ".pfm";
+}
+
+// Frames 0..count-1 of the camera path.
+std::vector<Image> render_path(GpuRenderer& renderer, const SceneParams& scene, int count, int texture_width)
+{
+    std::vector<Image> frames;
+    for (int t = 0; t < count; ++t)
+        frames.push_back(render_frame(renderer, scene_at_frame(scene, t, texture_width)));
+    return frames;
+}
+
+std::vector<Image> truth_path(const VulkanContext& context, const GpuTexture& texture, const MipChain& chain,
+                              const BenchConfig& config, const SceneParams& scene, PixelFilter pixel_filter)
+{
+    SamplerOptions options;
+    options.filter = Filter::ground_truth;
+    options.pixel_filter = pixel_filter;
+    options.truth_side = config.truth_side;
+    int texture_width = chain.levels[0].width;
+    if (config.truth_on_cpu) {
+        std::vector<Image> frames;
+        for (int t = 0; t < config.flicker_frames; ++t)
+            frames.push_back(reference_render(scene_at_frame(scene, t, texture_width), chain, options, RenderOptions{}));
+        return frames;
+    }
+    RenderOptions render; // ray-cast in a fragment shader; the mesh through its ray-cast twin
+    auto renderer = create_renderer(context, texture, scene, options, render);
+    return render_path(*renderer, scene, config.flicker_frames, texture_width);
+}
+
+// Texel fetches and hardware lookups a covered pixel, counted by the sample harness on the scene's own lookups.
+void count_fetches(const VulkanContext& context, const GpuTexture& texture, const std::vector<Lookup>& lookups,
+                   const SamplerOptions& options, BenchResult& result)
+{
+    if (lookups.empty())
+        return;
+    std::vector<LookupStats> stats;
+    gpu_sample(context, texture, lookups, options, &stats);
+    double fetches = 0, hardware = 0;
+    for (const LookupStats& s : stats) {
+        fetches += s.texel_fetches;
+        hardware += s.hardware_lookups;
+    }
+    result.fetches_per_pixel = fetches / double(stats.size());
+    result.hw_lookups_per_pixel = hardware / double(stats.size());
+}
+
+// One line a result as it finishes (the JSON has everything): reads are texel fetches plus hardware lookups.
+void print_result(const BenchResult& r)
+{
+    std::printf("%-9s %-13s %8.3f ms  x%5.2f baseline  %6.1f reads/px  PSNR box %5.2f gauss %5.2f  flicker %.4f\n",
+                to_string(r.scene).c_str(), r.filter.label.c_str(), r.time.median, r.vs_baseline,
+                r.fetches_per_pixel + r.hw_lookups_per_pixel, psnr_from_rmse(r.rmse_box), psnr_from_rmse(r.rmse_gaussian),
+                r.flicker_gaussian);
+    std::fflush(stdout);
+}
+
+} // namespace
+
+std::vector<BenchFilter> bench_filters()
+{
+    std::vector<BenchFilter> filters = {
+        make_filter("nearest", Filter::nearest),
+        make_filter("bilinear", Filter::bilinear),
+        make_filter("nearest-mip", Filter::nearest_mip),
+        make_filter("bilinear-mip", Filter::bilinear_mip),
+        make_filter("trilinear", Filter::trilinear),
+        make_filter("brilinear", Filter::brilinear, "--band 0.25"),
+        make_filter("aniso16", Filter::aniso, "--probes 16"),
+        make_filter("aniso16-hw", Filter::aniso, "--probes 16 --taps hardware"),
+        make_filter("ewa", Filter::ewa),
+        make_filter("ewa-hw", Filter::ewa, "--taps hardware"),
+        make_filter("sat", Filter::sat),
+        make_filter("sat-assembly", Filter::sat_assembly, "--boxes 4"),
+        make_filter("hw-nearest", Filter::hw_nearest),
+        make_filter("hw-bilinear", Filter::hw_bilinear),
+        make_filter("hw-trilinear", Filter::hw_trilinear),
+        make_filter("hw-aniso16", Filter::hw_aniso, "--aniso 16"),
+    };
+    for (BenchFilter& f : filters)
+        if (f.label.ends_with("-hw"))
+            f.options.taps = Taps::hardware;
+    return filters;
+}
+
+BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, const MipChain& chain,
+                   const std::string& directory)
+{
+    BenchRun run;
+    run.device = context.info;
+    run.date = today();
+    run.config = config;
+    const int texture_width = chain.levels[0].width;
+    with_texture(context, chain, true, [&](const GpuTexture& texture) {
+        for (SceneKind kind : config.scenes) {
+            SceneParams scene = make_scene(kind, config.width, config.height, texture_width);
+            RenderOptions render = render_options_for(kind, config.stage);
+            fs::create_directories(fs::path(directory) / "images" / to_string(kind));
+
+            std::vector<Image> truth_box = truth_path(context, texture, chain, config, scene, PixelFilter::box);
+            std::vector<Image> truth_gaussian = truth_path(context, texture, chain, config, scene, PixelFilter::gaussian);
+            run.truth_box[kind] = image_path(kind, "truth-box");
+            run.truth_gaussian[kind] = image_path(kind, "truth-gaussian");
+            write_pfm((fs::path(directory) / run.truth_box[kind]).string(), truth_box[0]);
+            write_pfm((fs::path(directory) / run.truth_gaussian[kind]).string(), truth_gaussian[0]);
+
+            SamplerOptions none;
+            none.filter = Filter::none;
+            run.baseline[kind] = summarize_times(
+                time_frames(*create_renderer(context, texture, scene, none, render), config.warmup, config.frames, config.timer));
+
+            std::vector<Lookup> lookups;
+            for (const PixelLookup& p : reference_lookups(scene, Gradients::fine, render.rasterize))
+                if (p.hit)
+                    lookups.push_back(p.lookup);
+
+            size_t first = run.results.size();
+            for (const BenchFilter& filter : config.filters) {
+                BenchResult r;
+                r.scene = kind;
+                r.filter = filter;
+                r.stage = render.stage;
+                auto renderer = create_renderer(context, texture, scene, filter.options, render);
+                r.time = summarize_times(time_frames(*renderer, config.warmup, config.frames, config.timer));
+                r.vs_baseline = r.time.median / run.baseline[kind].median;
+                std::vector<Image> frames = render_path(*renderer, scene, config.flicker_frames, texture_width);
+                r.rmse_box = display_rmse(frames[0], truth_box[0]);
+                r.rmse_gaussian = display_rmse(frames[0], truth_gaussian[0]);
+                r.flicker_box = display_flicker(frames, truth_box);
+                r.flicker_gaussian = display_flicker(frames, truth_gaussian);
+                r.image = image_path(kind, filter.label);
+                write_pfm((fs::path(directory) / r.image).string(), frames[0]);
+                count_fetches(context, texture, lookups, filter.options, r);
+                run.results.push_back(r);
+                print_result(r);
+            }
+            // Relative to hw-trilinear on the same scene, once it has been measured (NaN if it was left out).
+            double hw_trilinear = NAN;
+            for (size_t i = first; i < run.results.size(); ++i)
+                if (run.results[i].filter.label == "hw-trilinear")
+                    hw_trilinear = run.results[i].time.median;
+            for (size_t i = first; i < run.results.size(); ++i)
+                run.results[i].vs_hw_trilinear = run.results[i].time.median / hw_trilinear;
+        }
+        // sat's cost against footprint size: the same four corners per box whatever the footprint.
+        for (const BenchFilter& filter : config.filters) {
+            if (filter.options.filter != Filter::sat && filter.options.filter != Filter::sat_assembly)
+                continue;
+            RenderOptions render = render_options_for(SceneKind::minify, config.stage);
+            SatSweep sweep{filter.label, {}, {}};
+            for (double factor : {2.0, 64.0}) {
+                SceneParams scene = make_minified_scene(config.width, config.height, texture_width, factor);
+                auto renderer = create_renderer(context, texture, scene, filter.options, render);
+                (factor == 2.0 ? sweep.at_2x : sweep.at_64x) =
+                    summarize_times(time_frames(*renderer, config.warmup, config.frames, config.timer));
+            }
+            std::printf("minify    %-13s %8.3f ms at 2x, %8.3f ms at 64x\n", filter.label.c_str(), sweep.at_2x.median,
+                        sweep.at_64x.median);
+            run.sat_sweep.push_back(sweep);
+        }
+        return 0;
+    });
+    run.goals = judge_goals(run);
+    return run;
+}
+
+} // namespace tf

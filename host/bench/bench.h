@@ -1,0 +1,87 @@
+#pragma once
+// texfilter bench: every scene x filter configuration on one device. GPU time per frame (timestamps),
+// cost relative to hw-trilinear and to a no-texture baseline, texel fetches per pixel (counted by the
+// shader), error against two ground truths (box and Gaussian pixel filters) and temporal flicker along a
+// camera path. Writes bench.json, bench.csv and frame-0 images (PFM); tools/bench_report.py adds FLIP,
+// plots and an HTML page. The goals of docs/BENCHMARKS.md are checked and reported, never asserted.
+#include "bench/metrics.h"
+#include "core/filter.h"
+#include "vulkan/render.h"
+#include "scene/scene.h"
+#include "io/texture_source.h"
+#include "vulkan/context.h"
+#include <map>
+#include <string>
+#include <vector>
+
+namespace tf {
+
+// One filter configuration: a label unique in the run ([a-z0-9-], a file name), the options, and the
+// render flags that reproduce it.
+struct BenchFilter {
+    std::string label;
+    SamplerOptions options;
+    std::string args;
+};
+
+// The standard set: every manual filter and its hardware counterpart, aniso and EWA in both tap forms.
+std::vector<BenchFilter> bench_filters();
+
+struct BenchConfig {
+    bool quick = false;
+    int width = 256, height = 256;
+    Stage stage = Stage::fragment; // the mesh scene is always rasterized (graphics pipeline)
+    TextureSource texture;
+    int truth_side = 16; // 256 samples a pixel
+    bool truth_on_cpu = false; // the CPU reference's ground truth instead of the device's
+    int warmup = 5, frames = 20, flicker_frames = 8;
+    FrameTimer timer = FrameTimer::timestamps; // the wall clock on CPU devices (see vulkan/render.h)
+    std::vector<SceneKind> scenes;
+    std::vector<BenchFilter> filters;
+};
+
+struct BenchResult {
+    SceneKind scene = SceneKind::plane;
+    BenchFilter filter;
+    Stage stage = Stage::fragment;
+    TimeSummary time;
+    double vs_hw_trilinear = 0, vs_baseline = 0;
+    double fetches_per_pixel = 0, hw_lookups_per_pixel = 0;
+    double rmse_box = 0, rmse_gaussian = 0;
+    double flicker_box = 0, flicker_gaussian = 0;
+    std::string image; // frame 0, relative to the output directory
+};
+
+// sat's footprint-size sweep: the minify scene at 2 and 64 texels a pixel.
+struct SatSweep {
+    std::string label;
+    TimeSummary at_2x, at_64x;
+};
+
+struct BenchGoal {
+    std::string goal, measured, status, note; // status: met, missed, not-applicable
+};
+
+struct BenchRun {
+    DeviceInfo device;
+    std::string date; // YYYY-MM-DD, local
+    BenchConfig config;
+    std::map<SceneKind, TimeSummary> baseline;
+    std::map<SceneKind, std::string> truth_box, truth_gaussian; // frame-0 images, relative paths
+    std::vector<BenchResult> results;
+    std::vector<SatSweep> sat_sweep;
+    std::vector<BenchGoal> goals;
+};
+
+// Runs everything, writing images under `directory` (which exists), one progress line a result on stdout.
+BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, const MipChain& chain,
+                   const std::string& directory);
+
+// The goals of issue 5 / docs/BENCHMARKS.md judged on a finished run (a real GPU's goals are
+// not-applicable on a CPU device, with the measured figure still given).
+std::vector<BenchGoal> judge_goals(const BenchRun& run);
+
+std::string bench_json(const BenchRun& run);
+std::string bench_csv(const BenchRun& run);
+
+} // namespace tf

@@ -1,0 +1,150 @@
+#include "cli/cli_common.h"
+#include "vulkan/device_memory_check.h"
+#include "texture/error.h"
+#include "core/memory_budget.h"
+#include <cstdlib>
+
+namespace tf {
+
+std::vector<FlagSpec> texture_flags()
+{
+    return {{"--texture", "T|PATH", "procedural texture (checker, zoneplate, grid, noise, mipcolors) or an image file"},
+            {"--texture-size", "N", "side of a procedural texture in texels (default 256)"},
+            {"--linear", "", "the image file holds data/linear values: no sRGB decode"},
+            {"--memory-budget", "SIZE", "most host memory a texture may take (512M, 8G; default: half of physical "
+                                        "memory); checked from the file's header before decoding"}};
+}
+
+std::vector<FlagSpec> sampler_flags()
+{
+    return {{"--filter", "F", "nearest, bilinear, trilinear, nearest-mip, bilinear-mip, brilinear, aniso, ewa, "
+                              "sat, sat-assembly, hw-nearest, hw-bilinear, hw-trilinear, hw-aniso; render only: "
+                              "ground-truth (supersampled), none (no texture: the benchmark's baseline)"},
+            {"--wrap", "W", "repeat (default), clamp or mirror"},
+            {"--aniso", "N", "hw-aniso: maximum anisotropy, 1..16 (default 16)"},
+            {"--band", "B", "brilinear: trilinear band around each level transition, 0..1 (default 0.25)"},
+            {"--probes", "N", "aniso: most probes along the major axis, 1..16 (default 16)"},
+            {"--aniso-shape", "S", "aniso: gpu (Vulkan's model, default) or feline (ellipse axis, Gaussian weights)"},
+            {"--taps", "T", "aniso, ewa: manual (texelFetch, default) or hardware (bilinear/trilinear lookups)"},
+            {"--alpha", "A", "ewa: Gaussian exp(-A r^2), 0.05..16 (default 2)"},
+            {"--max-aniso", "E", "ewa: largest major/minor axis ratio, 1..64 (default 16)"},
+            {"--boxes", "K", "sat-assembly: boxes along the major axis, 1..16 (default 4)"},
+            {"--pixel-filter", "P", "ground-truth: box (over the pixel, default) or gaussian (sigma 0.5 px)"},
+            {"--spp", "N", "ground-truth: samples a pixel, a square number 1..4096 (default 256)"},
+            {"--lod-bias", "B", "added to the LOD (default 0)"},
+            {"--lod-min", "L", "lowest LOD used (default 0)"},
+            {"--lod-max", "L", "highest LOD used (default: the last level)"},
+            {"--backend", "B", "vulkan (default) or reference (the CPU reference)"}};
+}
+
+std::vector<FlagSpec> device_flags()
+{
+    return {{"--device", "NAME|INDEX", "Vulkan device by index or part of its name (default: lavapipe)"},
+            {"--validate", "", "enable the Vulkan validation layers; any message is an error"},
+            {"--help", "", "show this help"}};
+}
+
+std::vector<FlagSpec> join(std::vector<std::vector<FlagSpec>> groups)
+{
+    std::vector<FlagSpec> out;
+    for (auto& g : groups)
+        out.insert(out.end(), g.begin(), g.end());
+    return out;
+}
+
+TextureSource texture_source_from(const Args& args)
+{
+    TextureSource source;
+    source.name_or_path = args.require("--texture");
+    source.procedural_size = args.get_int("--texture-size", 256, 1, max_texture_dimension);
+    source.color = args.has("--linear") ? ColorSpace::linear : ColorSpace::automatic;
+    if (args.has("--memory-budget"))
+        source.memory_budget = parse_flag(args, "--memory-budget", "", parse_byte_size);
+    return source;
+}
+
+SamplerOptions sampler_options_from(const Args& args)
+{
+    SamplerOptions options;
+    options.filter = parse_flag(args, "--filter", "", parse_filter);
+    options.wrap = parse_flag(args, "--wrap", "repeat", parse_wrap);
+    options.aniso = args.get_int("--aniso", 16, 1, 16);
+    options.band = float(args.get_double("--band", options.band, 0.0, 1.0));
+    options.probes = args.get_int("--probes", options.probes, 1, 16);
+    options.aniso_shape = parse_flag(args, "--aniso-shape", "gpu", parse_aniso_shape);
+    options.taps = parse_flag(args, "--taps", "manual", parse_taps);
+    options.alpha = float(args.get_double("--alpha", options.alpha, 0.05, 16.0));
+    options.max_aniso = float(args.get_double("--max-aniso", options.max_aniso, 1.0, 64.0));
+    options.boxes = args.get_int("--boxes", options.boxes, 1, 16);
+    options.pixel_filter = parse_flag(args, "--pixel-filter", "box", parse_pixel_filter);
+    options.truth_side = parse_flag(args, "--spp", "256", parse_spp_side);
+    options.lod_bias = float(args.get_double("--lod-bias", 0.0, -16.0, 16.0));
+    options.lod_min = float(args.get_double("--lod-min", 0.0, 0.0, 1000.0));
+    options.lod_max = float(args.get_double("--lod-max", 1000.0, 0.0, 1000.0));
+    if (options.lod_min > options.lod_max)
+        throw Error("bad values: --lod-min " + args.get("--lod-min", "0") + " is above --lod-max " +
+                    args.get("--lod-max", "1000"));
+    return options;
+}
+
+int parse_spp_side(const std::string& text)
+{
+    const int largest = max_ground_truth_side * max_ground_truth_side;
+    char* end = nullptr;
+    long spp = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || spp < 1 || spp > largest)
+        throw Error("'" + text + "' is not a whole number in 1.." + std::to_string(largest));
+    int side = 1;
+    while ((side + 1) * (side + 1) <= spp)
+        ++side;
+    if (side * side != spp)
+        throw Error("'" + text + "' is not a square number (the samples form a side x side grid: 64, 256, 1024, ...)");
+    return side;
+}
+
+ContextOptions context_options_from(const Args& args)
+{
+    ContextOptions options;
+    options.device = args.get("--device", "");
+    const char* env = std::getenv("TEXFILTER_VALIDATE");
+    options.validate = args.has("--validate") || (env && std::string(env) == "1");
+    return options;
+}
+
+Backend backend_from(const Args& args)
+{
+    std::string name = args.get("--backend", "vulkan");
+    if (name == "vulkan")
+        return Backend::vulkan;
+    if (name == "reference")
+        return Backend::reference;
+    throw Error("bad value for --backend: '" + name + "' (expected vulkan or reference)");
+}
+
+CommandDevice open_command_device(Backend backend, const Args& args)
+{
+    CommandDevice device;
+    if (backend == Backend::vulkan) {
+        device.gpu = std::make_unique<GpuSession>(context_options_from(args));
+        device.limits = device_limits(device.gpu->context.info);
+    }
+    return device;
+}
+
+void check_validation_clean()
+{
+    if (int n = validation_message_count(); n > 0)
+        throw Error(std::to_string(n) + " Vulkan validation message(s) reported (printed above); no output written");
+}
+
+GpuSession::GpuSession(const ContextOptions& options) : context(create_context(options)) {}
+
+GpuSession::~GpuSession() { destroy_context(context); }
+
+void GpuSession::finish()
+{
+    destroy_context(context);
+    check_validation_clean();
+}
+
+} // namespace tf

@@ -1,0 +1,62 @@
+#pragma once
+// Flags and helpers shared by the CLI commands (render, sample, golden, info).
+#include "cli/args.h"
+#include "texture/error.h"
+#include "core/filter.h"
+#include "io/texture_source.h"
+#include "vulkan/context.h"
+#include <memory>
+#include <vector>
+
+namespace tf {
+
+enum class Backend { vulkan, reference };
+
+std::vector<FlagSpec> texture_flags();
+std::vector<FlagSpec> sampler_flags();
+std::vector<FlagSpec> device_flags();
+std::vector<FlagSpec> join(std::vector<std::vector<FlagSpec>> groups);
+
+TextureSource texture_source_from(const Args& args);
+SamplerOptions sampler_options_from(const Args& args);
+// --spp: a square number of samples a pixel, 1..4096; returns the grid side. Throws naming what is wrong.
+int parse_spp_side(const std::string& text);
+ContextOptions context_options_from(const Args& args);
+Backend backend_from(const Args& args);
+
+// parse(value of flag), with the flag's name put in front of any error ("bad value for --filter: ...").
+template <typename Parse>
+auto parse_flag(const Args& args, const std::string& flag, const std::string& fallback, Parse parse)
+{
+    std::string value = fallback.empty() ? args.require(flag) : args.get(flag, fallback);
+    try {
+        return parse(value);
+    } catch (const Error& e) {
+        throw Error("bad value for " + flag + ": " + e.what());
+    }
+}
+
+// A Vulkan context for one command. finish() destroys it and turns any validation message into an
+// error, so a command can check before it writes its output file.
+struct GpuSession {
+    VulkanContext context;
+    explicit GpuSession(const ContextOptions& options);
+    ~GpuSession();
+    void finish();
+    GpuSession(const GpuSession&) = delete;
+    GpuSession& operator=(const GpuSession&) = delete;
+};
+
+// The device of a command that can run on either backend: opened (with --backend vulkan) before the texture
+// is loaded, so that load_texture checks the texture against the device's memory before decoding it.
+struct CommandDevice {
+    std::unique_ptr<GpuSession> gpu; // null with --backend reference
+    DeviceLimits limits;
+    TextureUse texture_use(bool sat) const { return {sat, gpu ? &limits : nullptr}; }
+};
+CommandDevice open_command_device(Backend backend, const Args& args);
+
+// Throws tf::Error if the validation layers reported anything so far.
+void check_validation_clean();
+
+} // namespace tf

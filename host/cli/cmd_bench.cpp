@@ -1,0 +1,169 @@
+#include "bench/bench.h"
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "vulkan/device_memory_check.h"
+#include "texture/error.h"
+#include "vulkan/render.h"
+#include "core/memory_budget.h"
+#include "io/output_path.h"
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <unistd.h>
+
+namespace tf {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> split_list(const std::string& text)
+{
+    std::vector<std::string> items;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty())
+            items.push_back(item);
+    return items;
+}
+
+std::vector<BenchFilter> select_filters(const std::string& flag_value)
+{
+    std::vector<BenchFilter> all = bench_filters();
+    if (flag_value.empty())
+        return all;
+    std::vector<BenchFilter> chosen;
+    for (const std::string& label : split_list(flag_value)) {
+        bool found = false;
+        for (const BenchFilter& f : all)
+            if (f.label == label) {
+                chosen.push_back(f);
+                found = true;
+            }
+        if (!found) {
+            std::string valid;
+            for (const BenchFilter& f : all)
+                valid += (valid.empty() ? "" : ", ") + f.label;
+            throw Error("bad value for --filters: unknown label '" + label + "' (expected some of: " + valid + ")");
+        }
+    }
+    if (chosen.empty())
+        throw Error("bad value for --filters: no label given");
+    return chosen;
+}
+
+// The results directory appears whole or not at all: everything is written into a sibling directory that is
+// renamed into place at the end, and removed if anything fails.
+struct StagingDirectory {
+    fs::path path;
+    bool keep = false;
+    ~StagingDirectory()
+    {
+        std::error_code ignored;
+        if (!keep)
+            fs::remove_all(path, ignored);
+    }
+};
+
+void check_output_directory(const fs::path& out)
+{
+    fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
+    std::error_code ec;
+    if (!fs::is_directory(parent, ec))
+        throw Error(out.string() + ": its parent directory does not exist");
+    check_writable_directory(parent.string(), "bench --out " + out.string());
+    if (fs::exists(fs::symlink_status(out, ec)) && (!fs::is_directory(fs::symlink_status(out, ec)) || !fs::is_empty(out, ec)))
+        throw Error(out.string() + ": exists and is not an empty directory (the benchmark never overwrites results)");
+}
+
+} // namespace
+
+int run_bench(const std::vector<std::string>& argv)
+{
+    std::vector<FlagSpec> specs = join(
+        {{{"--out", "DIR", "results directory, new or empty: bench.json, bench.csv, images/ (required)"},
+          {"--quick", "", "a CI-sized run: 128x128, 4 scenes, 64 spp, 5 timed frames, 3 path frames"},
+          {"--scenes", "A,B", "scenes to run (default: all; quick: plane, tunnel, slanted, mesh)"},
+          {"--filters", "A,B", "filter labels to run (default: all; see docs/BENCHMARKS.md)"},
+          {"--size", "WxH", "image size, even sides (default 256x256)"},
+          {"--texture", "T", "procedural texture (default checker)"},
+          {"--texture-size", "N", "its side in texels (default 512)"},
+          {"--memory-budget", "SIZE", "most host memory the texture may take (512M, 8G; default: half of physical memory)"},
+          {"--spp", "N", "ground truth samples a pixel, a square number (default 256)"},
+          {"--truth-backend", "B", "vulkan (default: the device) or reference (the CPU, in double)"},
+          {"--warmup", "N", "untimed frames before timing (default 5)"},
+          {"--frames", "N", "timed frames; min, median and max are reported (default 20)"},
+          {"--flicker-frames", "N", "frames of the camera path for flicker, 2..64 (default 8)"},
+          {"--stage", "S", "fragment (default) or compute; the mesh scene always rasterizes"},
+          {"--timer", "T", "timestamps (GPU timestamps; default on GPUs) or wall-clock (default on CPU devices)"}},
+         device_flags()});
+    Args args = parse_args("bench", argv, specs, 0);
+    if (args.has("--help")) {
+        std::fputs(format_help("texfilter bench --out DIR [--quick] [--device NAME|INDEX]", specs).c_str(), stdout);
+        return 0;
+    }
+    BenchConfig config;
+    config.quick = args.has("--quick");
+    auto [width, height] = parse_size("--size", args.get("--size", config.quick ? "128x128" : "256x256"), 2, 4096);
+    if (width % 2 || height % 2)
+        throw Error("bad value for --size: '" + args.get("--size", "") + "' (sides must be even: 2x2 quads)");
+    config.width = width;
+    config.height = height;
+    config.stage = parse_flag(args, "--stage", "fragment", parse_stage);
+    config.texture.name_or_path = args.get("--texture", "checker");
+    config.texture.procedural_size = args.get_int("--texture-size", config.quick ? 256 : 512, 1, 16384);
+    if (args.has("--memory-budget"))
+        config.texture.memory_budget = parse_flag(args, "--memory-budget", "", parse_byte_size);
+    config.truth_side = parse_flag(args, "--spp", config.quick ? "64" : "256", parse_spp_side);
+    std::string truth = args.get("--truth-backend", "vulkan");
+    if (truth != "vulkan" && truth != "reference")
+        throw Error("bad value for --truth-backend: '" + truth + "' (expected vulkan or reference)");
+    config.truth_on_cpu = truth == "reference";
+    config.warmup = args.get_int("--warmup", config.quick ? 2 : 5, 0, 1000);
+    config.frames = args.get_int("--frames", config.quick ? 5 : 20, 1, 1000);
+    config.flicker_frames = args.get_int("--flicker-frames", config.quick ? 3 : 8, 2, 64);
+    std::string scenes = args.get("--scenes", config.quick ? "plane,tunnel,slanted,mesh" : "");
+    if (scenes.empty())
+        config.scenes = all_scenes();
+    for (const std::string& name : split_list(scenes)) {
+        try {
+            config.scenes.push_back(parse_scene(name));
+        } catch (const Error& e) {
+            throw Error(std::string("bad value for --scenes: ") + e.what());
+        }
+    }
+    config.filters = select_filters(args.get("--filters", ""));
+
+    std::string out_text = args.require("--out");
+    while (out_text.size() > 1 && out_text.back() == '/') // results/ names the directory results
+        out_text.pop_back();
+    fs::path out = out_text;
+    check_output_directory(out);
+    GpuSession gpu(context_options_from(args));
+    // Every filter runs, the SAT ones too: the texture must fit the table, the memory budget and the device.
+    const DeviceLimits limits = device_limits(gpu.context.info);
+    MipChain chain = load_texture(config.texture, {true, &limits});
+    StagingDirectory staging{temporary_path_for(out.string())};
+    fs::create_directories(staging.path);
+
+    bool cpu_device = gpu.context.info.type == "cpu";
+    config.timer = parse_flag(args, "--timer", cpu_device ? "wall-clock" : "timestamps", parse_frame_timer);
+    std::printf("bench on %s (%s %s), %dx%d, %zu scenes x %zu filters, %s timer\n", gpu.context.info.name.c_str(),
+                gpu.context.info.driver_name.c_str(), gpu.context.info.driver_info.c_str(), config.width, config.height,
+                config.scenes.size(), config.filters.size(), to_string(config.timer).c_str());
+    BenchRun run = run_bench(gpu.context, config, chain, staging.path.string());
+    gpu.finish(); // validation messages fail the run before anything appears at --out
+    write_file_atomic((staging.path / "bench.json").string(), bench_json(run));
+    write_file_atomic((staging.path / "bench.csv").string(), bench_csv(run));
+    if (fs::exists(out))
+        fs::remove(out); // empty, checked above
+    fs::rename(staging.path, out);
+    staging.keep = true;
+    for (const BenchGoal& g : run.goals)
+        std::printf("goal %-14s %s: %s%s%s\n", ("[" + g.status + "]").c_str(), g.goal.c_str(), g.measured.c_str(),
+                    g.note.empty() ? "" : " -- ", g.note.c_str());
+    std::printf("%s\n", out.string().c_str());
+    return 0;
+}
+
+} // namespace tf

@@ -1,0 +1,138 @@
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "vulkan/device_memory_check.h"
+#include "texture/error.h"
+#include "cli/golden.h"
+#include "vulkan/backend.h"
+#include "io/image_io.h"
+#include "io/output_dir.h"
+#include "io/output_path.h"
+#include "reference/render.h"
+#include "io/report.h"
+#include <cstdio>
+#include <filesystem>
+
+#ifndef TEXFILTER_SOURCE_DIR
+#define TEXFILTER_SOURCE_DIR "."
+#endif
+
+namespace tf {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct GoldenRun {
+    std::string golden_dir, out_dir;
+    std::vector<GoldenCase> cases;
+};
+
+void update_goldens(const GoldenRun& run)
+{
+    for (const GoldenCase& c : run.cases) {
+        MipChain chain = load_texture(c.texture, {needs_sat(c.sampler.filter), nullptr});
+        SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
+        std::string path = run.golden_dir + "/" + c.name + ".png";
+        write_image(path, reference_render(scene, chain, c.sampler, c.render));
+        std::printf("updated %s (CPU reference)\n", path.c_str());
+    }
+}
+
+int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
+{
+    GpuSession gpu(context_options);
+    // Claimed before any case runs (and after the device opened, so that a machine without one is left as it was).
+    OwnedDirectory out = claim_directory(run.out_dir, "golden");
+    const DeviceLimits limits = device_limits(gpu.context.info);
+    std::vector<ReportCase> report;
+    int failures = 0;
+    for (const GoldenCase& c : run.cases) {
+        MipChain chain = load_texture(c.texture, {needs_sat(c.sampler.filter), &limits});
+        SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
+        Image actual = with_texture(gpu.context, chain, needs_sat(c.sampler.filter),
+                                    [&](auto& t) { return gpu_render(gpu.context, t, scene, c.sampler, c.render); });
+
+        std::string golden_path = run.golden_dir + "/" + c.name + ".png";
+        Image golden = read_image_raw(golden_path);
+        if (golden.width != c.width || golden.height != c.height)
+            throw Error(golden_path + ": is " + std::to_string(golden.width) + "x" + std::to_string(golden.height) +
+                        ", the case renders " + std::to_string(c.width) + "x" + std::to_string(c.height) +
+                        " (run texfilter golden --update)");
+        Image encoded = encode_srgb(actual);
+        DiffResult result = diff_images(encoded, golden, c.thresholds);
+        ReportCase entry{c.name, result.pass, describe(result, c.thresholds), "", "", ""};
+        if (!result.pass) {
+            ++failures;
+            entry.actual_png = "actual/" + c.name + ".png";
+            entry.golden_png = "golden/" + c.name + ".png";
+            entry.diff_png = "diff/" + c.name + ".png";
+            for (const std::string* file : {&entry.actual_png, &entry.golden_png, &entry.diff_png}) {
+                record_file(out, *file);
+                fs::create_directories(fs::path(run.out_dir) / fs::path(*file).parent_path());
+            }
+            write_image(run.out_dir + "/" + entry.actual_png, actual);
+            fs::copy_file(golden_path, run.out_dir + "/" + entry.golden_png, fs::copy_options::overwrite_existing);
+            // Amplified so that one 8-bit step shows; the diff is of sRGB-encoded values.
+            write_image(run.out_dir + "/" + entry.diff_png, diff_image(encoded, golden, 32.0));
+        }
+        std::printf("%-40s %s  max %.5f  over %.3f%%\n", c.name.c_str(), result.pass ? "PASS" : "FAIL",
+                    result.max_error, result.fail_percent);
+        std::fflush(stdout);
+        report.push_back(entry);
+    }
+    std::string device_name = gpu.context.info.name;
+    gpu.finish();
+    record_file(out, "report.html");
+    std::string report_path = run.out_dir + "/report.html";
+    write_html_report(report_path, "texfilter golden regression on " + device_name, report);
+    std::printf("%zu cases, %d failed; report: %s\n", run.cases.size(), failures, report_path.c_str());
+    return failures == 0 ? 0 : 1;
+}
+
+} // namespace
+
+int run_golden(const std::vector<std::string>& argv)
+{
+    std::vector<FlagSpec> specs = join({{{"--update", "", "regenerate the golden images from the CPU reference"},
+                                         {"--case", "NAME", "only this case (repeat with commas: a,b)"},
+                                         {"--golden-dir", "DIR", "where manifest.txt and the images are (default: "
+                                                                 "the source tree's golden/)"},
+                                         {"--out", "DIR", "where failures and report.html go (default golden-out)"}},
+                                        device_flags()});
+    Args args = parse_args("golden", argv, specs, 0);
+    if (args.has("--help")) {
+        std::fputs(format_help("texfilter golden [--update] [--case NAME] [--out DIR]", specs).c_str(), stdout);
+        return 0;
+    }
+    GoldenRun run;
+    run.golden_dir = args.get("--golden-dir", std::string(TEXFILTER_SOURCE_DIR) + "/golden");
+    run.out_dir = args.get("--out", "golden-out");
+    std::vector<GoldenCase> all = read_manifest(run.golden_dir + "/manifest.txt");
+    if (args.has("--case")) {
+        std::string list = args.get("--case", "") + ",";
+        for (size_t start = 0, comma; (comma = list.find(',', start)) != std::string::npos; start = comma + 1) {
+            std::string name = list.substr(start, comma - start);
+            bool found = false;
+            for (const GoldenCase& c : all)
+                if (c.name == name) {
+                    run.cases.push_back(c);
+                    found = true;
+                }
+            if (!found)
+                throw Error("bad value for --case: no golden case named '" + name + "' in " + run.golden_dir +
+                            "/manifest.txt");
+        }
+    } else {
+        run.cases = all;
+    }
+    if (!image_io_available())
+        throw Error("golden needs image I/O, which was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON)");
+    if (args.has("--update")) {
+        check_writable_directory(run.golden_dir, "golden --update");
+        update_goldens(run);
+        return 0;
+    }
+    return check_goldens(run, context_options_from(args));
+}
+
+} // namespace tf

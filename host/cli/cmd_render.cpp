@@ -1,0 +1,65 @@
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "texture/error.h"
+#include "vulkan/backend.h"
+#include "io/image_io.h"
+#include "io/output_path.h"
+#include "io/pfm.h"
+#include "reference/render.h"
+#include "scene/scene.h"
+#include <cstdio>
+
+namespace tf {
+
+int run_render(const std::vector<std::string>& argv)
+{
+    std::vector<FlagSpec> specs = join(
+        {{{"--scene", "S", "plane, tunnel, zoom, minify or slanted"}},
+         texture_flags(),
+         sampler_flags(),
+         {{"--size", "WxH", "image size, even sides (default 256x256)"},
+          {"--stage", "S", "fragment (default) or compute (2x2 quads from subgroup quad operations)"},
+          {"--derivatives", "D", "fine (default), coarse (one pair a quad) or ray (ray differentials)"},
+          {"-o", "OUT", "output .png (8-bit sRGB), .exr (linear half) or .pfm (linear float, any build)"}},
+         device_flags()});
+    Args args = parse_args("render", argv, specs, 0);
+    if (args.has("--help")) {
+        std::fputs(format_help("texfilter render --scene S --texture T|PATH --filter F [--size WxH] "
+                               "[--backend vulkan|reference] [--aniso N] -o OUT.png|OUT.exr|OUT.pfm",
+                               specs)
+                       .c_str(),
+                   stdout);
+        return 0;
+    }
+    SceneKind kind = parse_flag(args, "--scene", "", parse_scene);
+    RenderOptions render = make_render_options(kind, parse_flag(args, "--stage", "fragment", parse_stage),
+                                               parse_flag(args, "--derivatives", "fine", parse_gradients));
+    SamplerOptions options = sampler_options_from(args);
+    Backend backend = backend_from(args);
+    auto [width, height] = parse_size("--size", args.get("--size", "256x256"), 2, 8192);
+    if (width % 2 || height % 2)
+        throw Error("bad value for --size: '" + args.get("--size", "") + "' (sides must be even: derivatives come from 2x2 quads)");
+    TextureSource source = texture_source_from(args);
+    std::string out = checked_output_path(args.require("-o"), {".png", ".exr", ".pfm"}, {source.name_or_path});
+    if (!image_io_available() && !is_pfm_path(out))
+        throw Error(out + ": image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON; "
+                          ".pfm output is built in)");
+    CommandDevice device = open_command_device(backend, args);
+    MipChain chain = load_texture(source, device.texture_use(needs_sat(options.filter)));
+    GpuSession* gpu = device.gpu.get();
+    SceneParams scene = make_scene(kind, width, height, chain.levels[0].width);
+
+    Image image;
+    if (!gpu) {
+        image = reference_render(scene, chain, options, render);
+    } else {
+        image = with_texture(gpu->context, chain, needs_sat(options.filter),
+                             [&](auto& t) { return gpu_render(gpu->context, t, scene, options, render); });
+        gpu->finish();
+    }
+    write_image(out, image);
+    std::printf("%s\n", out.c_str());
+    return 0;
+}
+
+} // namespace tf

@@ -1,0 +1,88 @@
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "vulkan/backend.h"
+#include "io/lookups_csv.h"
+#include "io/output_path.h"
+#include "reference/render.h"
+#include "texture/error.h"
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+
+namespace tf {
+
+namespace {
+
+void print_stats(const std::vector<LookupStats>& stats)
+{
+    if (stats.empty())
+        return;
+    auto summary = [&](const char* what, auto field) {
+        double sum = 0;
+        uint32_t low = UINT32_MAX, high = 0;
+        for (const LookupStats& s : stats) {
+            uint32_t v = s.*field;
+            sum += v;
+            low = std::min(low, v);
+            high = std::max(high, v);
+        }
+        std::printf("%s per lookup: mean %.2f, min %u, max %u\n", what, sum / double(stats.size()), low, high);
+    };
+    summary("texel fetches", &LookupStats::texel_fetches);
+    summary("hardware lookups", &LookupStats::hardware_lookups);
+}
+
+} // namespace
+
+int run_sample(const std::vector<std::string>& argv)
+{
+    std::vector<FlagSpec> specs = join({texture_flags(),
+                                        sampler_flags(),
+                                        {{"--lookups", "IN.csv", "header u,v,dudx,dvdx,dudy,dvdy; one lookup a row"},
+                                         {"-o", "OUT.csv", "r,g,b,a in linear light, one row per lookup"},
+                                         {"--stats", "", "vulkan: add columns fetches,hw_lookups (counted in the "
+                                                         "shader) and print their mean, min and max"}},
+                                        device_flags()});
+    Args args = parse_args("sample", argv, specs, 0);
+    if (args.has("--help")) {
+        std::fputs(format_help("texfilter sample --texture T|PATH --filter F --lookups IN.csv "
+                               "[--backend vulkan|reference] -o OUT.csv",
+                               specs)
+                       .c_str(),
+                   stdout);
+        return 0;
+    }
+    SamplerOptions options = sampler_options_from(args);
+    if (options.filter == Filter::ground_truth)
+        throw Error("bad value for --filter: ground-truth integrates over a scene's pixels, not around a lookup "
+                    "(use render)");
+    Backend backend = backend_from(args);
+    TextureSource source = texture_source_from(args);
+    std::string out = checked_output_path(args.require("-o"), {".csv"}, {args.require("--lookups"), source.name_or_path});
+    bool with_stats = args.has("--stats");
+    if (with_stats && backend != Backend::vulkan)
+        throw Error("--stats counts the shader's fetches: it needs --backend vulkan");
+    std::vector<Lookup> lookups = read_lookups_csv(args.require("--lookups"));
+    CommandDevice device = open_command_device(backend, args);
+    MipChain chain = load_texture(source, device.texture_use(needs_sat(options.filter)));
+    GpuSession* gpu = device.gpu.get();
+
+    std::vector<glm::dvec4> colors;
+    std::vector<LookupStats> stats;
+    if (!gpu) {
+        colors = reference_sample_all(chain, lookups, options);
+    } else {
+        std::vector<glm::vec4> results = with_texture(gpu->context, chain, needs_sat(options.filter), [&](auto& t) {
+            return gpu_sample(gpu->context, t, lookups, options, &stats);
+        });
+        gpu->finish();
+        colors.assign(results.begin(), results.end());
+    }
+    write_colors_csv(out, colors, with_stats ? &stats : nullptr);
+    std::printf("%s: %zu lookups\n", out.c_str(), colors.size());
+    if (with_stats)
+        print_stats(stats);
+    return 0;
+}
+
+} // namespace tf

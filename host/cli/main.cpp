@@ -1,0 +1,65 @@
+// texfilter: render test scenes, run point lookups, compare images, check goldens.
+#include "cli/commands.h"
+#include "texture/error.h"
+#include "io/temporary_files.h"
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <string>
+
+namespace {
+
+const char* usage = "usage: texfilter COMMAND [options]\n"
+                    "\n"
+                    "commands:\n"
+                    "  info      list Vulkan devices, their filtering limits, and the one texfilter would use\n"
+                    "  render    render a test scene with a filter (GPU or CPU reference) to PNG/EXR/PFM\n"
+                    "  sample    filter point lookups from a CSV file to a CSV of colours\n"
+                    "  diff      compare two images (idiff-style thresholds)\n"
+                    "  golden    render every golden case on the GPU and compare; --update re-blesses from the CPU reference\n"
+                    "  bench     time, count and score every scene x filter against ground truth (JSON, CSV, images)\n"
+                    "\n"
+                    "texfilter COMMAND --help shows a command's options.\n";
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    tf::install_signal_cleanup(); // before any thread: Ctrl-C must not leave temporaries behind
+    if (argc < 2) {
+        std::fputs(usage, stderr);
+        return 2;
+    }
+    std::string command = argv[1];
+    std::vector<std::string> rest(argv + 2, argv + argc);
+    try {
+        if (command == "--help" || command == "-h" || command == "help") {
+            std::fputs(usage, stdout);
+            return 0;
+        }
+        if (command == "info")
+            return tf::run_info(rest);
+        if (command == "render")
+            return tf::run_render(rest);
+        if (command == "sample")
+            return tf::run_sample(rest);
+        if (command == "diff")
+            return tf::run_diff(rest);
+        if (command == "golden")
+            return tf::run_golden(rest);
+        if (command == "bench")
+            return tf::run_bench(rest);
+        std::fprintf(stderr, "texfilter: unknown command '%s'\n\n%s", command.c_str(), usage);
+        return 2;
+    } catch (const tf::Error& e) {
+        std::fprintf(stderr, "texfilter: %s\n", e.what());
+        return 2;
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A file system call that a command did not check first: still a message about a path, not a bug report.
+        std::fprintf(stderr, "texfilter: %s: %s\n", e.path1().c_str(), e.code().message().c_str());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "texfilter: internal error: %s\n", e.what());
+        return 2;
+    }
+}

@@ -1,0 +1,104 @@
+#include "core/filter.h"
+
+#include "texture/error.h"
+
+#include <utility>
+
+namespace tf {
+
+namespace {
+
+// One table per enum keeps parse, to_string and the error message in step.
+const std::pair<Filter, const char*> kFilterNames[] = {
+    {Filter::nearest, "nearest"},
+    {Filter::bilinear, "bilinear"},
+    {Filter::trilinear, "trilinear"},
+    {Filter::nearest_mip, "nearest-mip"},
+    {Filter::bilinear_mip, "bilinear-mip"},
+    {Filter::hw_nearest, "hw-nearest"},
+    {Filter::hw_bilinear, "hw-bilinear"},
+    {Filter::hw_trilinear, "hw-trilinear"},
+    {Filter::hw_aniso, "hw-aniso"},
+    {Filter::brilinear, "brilinear"},
+    {Filter::aniso, "aniso"},
+    {Filter::ewa, "ewa"},
+    {Filter::sat, "sat"},
+    {Filter::sat_assembly, "sat-assembly"},
+    {Filter::ground_truth, "ground-truth"},
+    {Filter::none, "none"},
+};
+
+const std::pair<AnisoShape, const char*> kShapeNames[] = {{AnisoShape::gpu, "gpu"}, {AnisoShape::feline, "feline"}};
+const std::pair<Taps, const char*> kTapsNames[] = {{Taps::manual, "manual"}, {Taps::hardware, "hardware"}};
+
+const std::pair<PixelFilter, const char*> kPixelFilterNames[] = {{PixelFilter::box, "box"},
+                                                                 {PixelFilter::gaussian, "gaussian"}};
+
+const std::pair<Wrap, const char*> kWrapNames[] = {
+    {Wrap::repeat, "repeat"},
+    {Wrap::clamp, "clamp"},
+    {Wrap::mirror, "mirror"},
+};
+
+template <typename Table>
+std::string name_list(const Table& table) {
+    std::string list;
+    for (const auto& entry : table) {
+        if (!list.empty()) list += ", ";
+        list += entry.second;
+    }
+    return list;
+}
+
+template <typename Enum, size_t N>
+Enum parse_name(const std::pair<Enum, const char*> (&table)[N], const std::string& name, const char* what) {
+    for (const auto& [value, text] : table)
+        if (name == text) return value;
+    throw Error(std::string("unknown ") + what + " '" + name + "' (expected one of: " + name_list(table) + ")");
+}
+
+template <typename Enum, size_t N>
+std::string name_of(const std::pair<Enum, const char*> (&table)[N], Enum value, const char* what) {
+    for (const auto& [v, text] : table)
+        if (v == value) return text;
+    throw Error(std::string("invalid ") + what + " value " + std::to_string(int(value)));
+}
+
+} // namespace
+
+Filter parse_filter(const std::string& name) { return parse_name(kFilterNames, name, "filter"); }
+std::string to_string(Filter filter) { return name_of(kFilterNames, filter, "filter"); }
+Wrap parse_wrap(const std::string& name) { return parse_name(kWrapNames, name, "wrap mode"); }
+std::string to_string(Wrap wrap) { return name_of(kWrapNames, wrap, "wrap mode"); }
+AnisoShape parse_aniso_shape(const std::string& name) { return parse_name(kShapeNames, name, "aniso shape"); }
+std::string to_string(AnisoShape shape) { return name_of(kShapeNames, shape, "aniso shape"); }
+Taps parse_taps(const std::string& name) { return parse_name(kTapsNames, name, "taps form"); }
+std::string to_string(Taps taps) { return name_of(kTapsNames, taps, "taps form"); }
+PixelFilter parse_pixel_filter(const std::string& name) { return parse_name(kPixelFilterNames, name, "pixel filter"); }
+std::string to_string(PixelFilter filter) { return name_of(kPixelFilterNames, filter, "pixel filter"); }
+
+const std::vector<Filter>& all_filters() {
+    static const std::vector<Filter> filters = [] {
+        std::vector<Filter> list;
+        for (const auto& entry : kFilterNames)
+            if (!is_scene_level(entry.first)) list.push_back(entry.first);
+        return list;
+    }();
+    return filters;
+}
+
+bool is_hardware(Filter filter) {
+    switch (filter) {
+    case Filter::hw_nearest:
+    case Filter::hw_bilinear:
+    case Filter::hw_trilinear:
+    case Filter::hw_aniso:
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool is_scene_level(Filter filter) { return filter == Filter::ground_truth || filter == Filter::none; }
+
+} // namespace tf

@@ -1,0 +1,108 @@
+#include "core/memory_budget.h"
+#include "texture/error.h"
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <unistd.h>
+
+namespace tf {
+
+TextureMemory estimate_texture_memory(int width, int height, int file_channels, bool with_sat, bool on_device)
+{
+    const uint64_t texel = 4 * sizeof(float);
+    const uint64_t texels = uint64_t(width) * uint64_t(height);
+    TextureMemory m;
+    m.decode = texels * uint64_t(std::clamp(file_channels, 1, 4)) * sizeof(float) + texels * texel;
+    for (uint64_t w = uint64_t(width), h = uint64_t(height);; w = std::max<uint64_t>(1, w / 2),
+                  h = std::max<uint64_t>(1, h / 2)) {
+        m.chain += w * h * texel;
+        if (w == 1 && h == 1)
+            break;
+    }
+    if (with_sat)
+        m.sat = (uint64_t(width) + 1) * (uint64_t(height) + 1) * (4 + 1) * sizeof(uint32_t);
+    const uint64_t staging = on_device ? std::max(m.chain, m.sat) : 0;
+    m.host_peak = std::max(m.decode, m.chain + m.sat + staging);
+    m.device = on_device ? m.chain + m.sat : 0;
+    return m;
+}
+
+uint64_t default_memory_budget()
+{
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || page <= 0)
+        return uint64_t(4) << 30; // unknown machine: 4 GiB
+    return uint64_t(pages) * uint64_t(page) / 2;
+}
+
+uint64_t parse_byte_size(const std::string& text)
+{
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    double unit = 1;
+    std::string suffix = end ? std::string(end) : std::string();
+    if (!suffix.empty() && (suffix.back() == 'B' || suffix.back() == 'b') && suffix.size() > 1)
+        suffix.pop_back(); // 8GB, 8GiB read as 8G
+    if (suffix.size() == 2 && (suffix[1] == 'i' || suffix[1] == 'I'))
+        suffix.pop_back();
+    if (suffix.size() == 1) {
+        switch (suffix[0]) {
+        case 'k': case 'K': unit = 1024.0; break;
+        case 'm': case 'M': unit = 1024.0 * 1024; break;
+        case 'g': case 'G': unit = 1024.0 * 1024 * 1024; break;
+        case 't': case 'T': unit = 1024.0 * 1024 * 1024 * 1024; break;
+        default: unit = 0;
+        }
+    } else if (!suffix.empty()) {
+        unit = 0;
+    }
+    const double bytes = value * unit;
+    if (text.empty() || end == text.c_str() || unit == 0 || !std::isfinite(bytes) || bytes < 1 || bytes > 1e18)
+        throw Error("'" + text + "' is not a size (a number of bytes, or with K, M, G or T: 512M, 8G)");
+    return uint64_t(bytes);
+}
+
+std::string format_bytes(uint64_t bytes)
+{
+    const char* units[] = {"KiB", "MiB", "GiB", "TiB"};
+    if (bytes < 1024)
+        return std::to_string(bytes) + " bytes";
+    double value = double(bytes) / 1024;
+    int u = 0;
+    while (value >= 1024 && u < 3) {
+        value /= 1024;
+        ++u;
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f %s", value, units[u]);
+    return text;
+}
+
+void check_memory_budget(const std::string& what, int width, int height, const TextureMemory& need, uint64_t budget)
+{
+    if (need.host_peak <= budget)
+        return;
+    throw Error(what + ": a " + std::to_string(width) + "x" + std::to_string(height) + " texture needs " +
+                format_bytes(need.host_peak) + " of memory (decode " + format_bytes(need.decode) + ", MIP chain " +
+                format_bytes(need.chain) + (need.sat ? ", summed-area table " + format_bytes(need.sat) : "") +
+                (need.device ? ", staging for the device" : "") + "), over the memory budget of " +
+                format_bytes(budget) + " (half of physical memory by default; --memory-budget SIZE raises it)");
+}
+
+void check_device_limits(const std::string& what, int width, int height, const TextureMemory& need,
+                         const DeviceLimits& device)
+{
+    const uint64_t largest_image = std::max(need.chain, need.sat * 4 / 5); // the SAT's RGBA32UI part
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
+    if (device.max_allocation && largest_image > device.max_allocation)
+        throw Error(what + ": the " + size + " texture needs one allocation of " + format_bytes(largest_image) +
+                    ", over " + device.name + "'s maxMemoryAllocationSize of " + format_bytes(device.max_allocation) +
+                    " (out of device memory)");
+    if (device.heap && need.device > device.heap)
+        throw Error(what + ": the " + size + " texture needs " + format_bytes(need.device) + " of device memory, over " +
+                    device.name + "'s device-local heap " + std::to_string(device.heap_index) + " of " +
+                    format_bytes(device.heap) + " (out of device memory)");
+}
+
+} // namespace tf

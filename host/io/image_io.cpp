@@ -1,0 +1,386 @@
+// Image files through OpenImageIO. OIIO stays inside this file so that the rest of the project
+// (and a lean build with image_io_stub.cpp instead) never sees its headers.
+#include "io/image_io.h"
+#include "io/pfm.h"
+#include "io/output_path.h"
+
+#include "texture/error.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace tf {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lower(std::string s) {
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+// OIIO keeps errors in a queue per object (and one global queue); leaving them there makes it
+// complain at exit, so every failure path drains the relevant queue into our message.
+std::string oiio_message(std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+    // One message, one line: OIIO joins several library errors with newlines.
+    for (size_t at; (at = text.find('\n')) != std::string::npos;) text.replace(at, 1, "; ");
+    return text.empty() ? std::string("unknown OpenImageIO error") : text;
+}
+
+void check_readable_file(const std::string& path) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) throw Error(path + ": no such file");
+    if (fs::is_directory(status)) throw Error(path + ": is a directory, not an image file");
+    const auto size = fs::file_size(path, ec);
+    if (ec) throw Error(path + ": cannot read (" + ec.message() + ")");
+    if (size == 0) throw Error(path + ": file is empty");
+}
+
+bool names_linear(const std::string& color_space) {
+    const std::string cs = lower(color_space);
+    return cs == "linear" || cs == "scene_linear" || cs == "acescg" || cs.rfind("lin_", 0) == 0;
+}
+
+// The automatic rule of image_io.h: 8-bit is sRGB unless it says linear; 16-bit only where the
+// format is conventionally sRGB (PNG, JPEG) or the file names a non-linear space; float/half and
+// everything else is linear.
+bool stored_as_srgb(const OIIO::ImageSpec& spec, const std::string& format_name) {
+    const std::string cs = spec.get_string_attribute("oiio:ColorSpace");
+    if (names_linear(cs)) return false;
+    if (spec.format.basetype == OIIO::TypeDesc::UINT8) return true;
+    if (spec.format.basetype == OIIO::TypeDesc::UINT16)
+        return format_name == "png" || format_name == "jpeg" || !cs.empty();
+    return false;
+}
+
+// libpng's default error handler (which OIIO 2.4 keeps) prints "libpng error: ..." to stderr before OIIO
+// reports the same failure. While a decoder runs, file descriptor 2 points at an unnamed temporary file;
+// what landed there is handed back, so a failure gives one message and a success can pass warnings on.
+class StderrCapture {
+public:
+    StderrCapture()
+    {
+        std::fflush(stderr);
+        capture_ = std::tmpfile();
+        saved_ = capture_ ? dup(2) : -1;
+        if (saved_ >= 0 && dup2(fileno(capture_), 2) < 0) {
+            close(saved_);
+            saved_ = -1;
+        }
+    }
+    StderrCapture(const StderrCapture&) = delete;
+    StderrCapture& operator=(const StderrCapture&) = delete;
+    ~StderrCapture() { finish(); }
+
+    // Restores stderr and returns what was written meanwhile (at most a few KB are kept).
+    std::string finish()
+    {
+        std::string text;
+        if (saved_ >= 0) {
+            std::fflush(stderr);
+            dup2(saved_, 2);
+            close(saved_);
+            saved_ = -1;
+            std::rewind(capture_);
+            char buffer[4096];
+            const size_t n = std::fread(buffer, 1, sizeof buffer, capture_);
+            text.assign(buffer, n);
+        }
+        if (capture_) {
+            std::fclose(capture_);
+            capture_ = nullptr;
+        }
+        return text;
+    }
+
+private:
+    std::FILE* capture_ = nullptr;
+    int saved_ = -1;
+};
+
+// Uninitialised on purpose: a corrupt file that claims a huge size fails on its first rows, before a
+// zero-fill would have touched gigabytes of pages.
+struct FloatBuffer {
+    std::unique_ptr<float[]> data;
+    size_t size = 0;
+    const float& operator[](size_t i) const { return data[i]; }
+};
+
+struct RawPixels {
+    int width = 0, height = 0, channels = 0;  // channels: 1..4 as read
+    FloatBuffer values;                       // interleaved, normalised as OIIO converts to float
+    bool srgb = false;                        // what the automatic rule says about this file
+    int integer_levels = 0;                   // 255 / 65535 for UINT8 / UINT16, else 0
+};
+
+// The first line of a library message, cut to a readable length.
+std::string first_line(const std::string& text) {
+    std::string line = text.substr(0, text.find('\n'));
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    return line.size() > 200 ? line.substr(0, 200) + "..." : line;
+}
+
+// Deflate expands at most 1032:1 (258-byte matches coded in 2 bits), so a PNG's filtered rows,
+// height x (1 + width x bytes per pixel), can never exceed 1032 times the file's size. The rows are
+// counted at the smallest depth PNG has, 1 bit a pixel (1-bit grey or palette; OIIO reports those
+// expanded), so no real file is refused. Returns what is wrong, or nothing.
+std::string impossible_png_claim(const std::string& path, const OIIO::ImageSpec& spec) {
+    std::error_code ec;
+    const double file_bytes = double(fs::file_size(path, ec));
+    const double row_bytes = 1.0 + std::ceil(double(spec.width) / 8.0);
+    if (ec || double(spec.height) * row_bytes <= 1032.0 * file_bytes) return {};
+    return "the header claims " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+           " pixels, more than a " + std::to_string(uint64_t(file_bytes)) +
+           "-byte PNG can hold (deflate expands at most 1032:1): truncated or corrupt";
+}
+
+// Opens the file and checks what its header claims; the caller reads pixels from the returned input.
+std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, int max_dimension, StderrCapture& capture) {
+    check_readable_file(path);
+
+    // Keep PNG alpha unassociated (as stored): otherwise OIIO premultiplies on read, in the
+    // encoded space, and RGB under partial alpha would no longer round-trip.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
+    if (!in) {
+        const std::string message = oiio_message(OIIO::geterror());
+        capture.finish();
+        throw Error(path + ": cannot open as an image: " + message);
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    auto fail = [&](const std::string& what) {
+        in->geterror();  // drain
+        in->close();
+        in->geterror();
+        capture.finish();
+        throw Error(path + ": " + what);
+    };
+    if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1)
+        fail("unsupported image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+             (spec.depth > 1 ? "x" + std::to_string(spec.depth) : std::string()));
+    if (spec.width > max_dimension || spec.height > max_dimension)
+        fail(std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+             " exceeds the maximum texture size " + std::to_string(max_dimension));
+    if (spec.nchannels <= 0) fail("image has no channels");
+    if (std::string(in->format_name()) == "png")
+        if (const std::string wrong = impossible_png_claim(path, spec); !wrong.empty()) fail(wrong);
+    return in;
+}
+
+// Opens, validates and reads the first subimage as float. Files with more than four channels
+// (EXR with extra layers, say) contribute their first four: OIIO orders R, G, B, A first.
+RawPixels read_pixels(const std::string& path, int max_dimension) {
+    StderrCapture capture;
+    auto in = open_checked(path, max_dimension, capture);
+    const OIIO::ImageSpec spec = in->spec();
+    const std::string format_name = in->format_name();
+    auto fail = [&](const std::string& what) {
+        in->geterror();  // drain
+        in->close();
+        in->geterror();
+        capture.finish();  // libpng's own line said the same as OIIO's message
+        throw Error(path + ": " + what);
+    };
+
+    RawPixels raw;
+    raw.width = spec.width;
+    raw.height = spec.height;
+    raw.channels = std::min(spec.nchannels, 4);
+    raw.srgb = stored_as_srgb(spec, format_name);
+    if (spec.format.basetype == OIIO::TypeDesc::UINT8) raw.integer_levels = 255;
+    if (spec.format.basetype == OIIO::TypeDesc::UINT16) raw.integer_levels = 65535;
+    raw.values.size = size_t(raw.width) * size_t(raw.height) * size_t(raw.channels);
+    try {
+        raw.values.data.reset(new float[raw.values.size]);
+    } catch (const std::bad_alloc&) {
+        fail("out of memory for " + std::to_string(raw.width) + "x" + std::to_string(raw.height) + " pixels");
+    }
+
+    bool ok = false;
+    std::string oiio_error;
+    try {
+        ok = in->read_image(0, 0, 0, raw.channels, OIIO::TypeDesc::FLOAT, raw.values.data.get());
+    } catch (const std::exception& e) {
+        // Some format plugins report corrupt data by throwing; the contract is a tf::Error.
+        oiio_error = e.what();
+    }
+    if (!ok) {
+        if (oiio_error.empty()) oiio_error = in->geterror();
+        fail("cannot read pixels (corrupt or truncated file?): " + oiio_message(oiio_error));
+    }
+    // OIIO 2.4 returns success for a JPEG cut short ("Premature end of JPEG file") or a TIFF strip that
+    // ends early, with the missing pixels zero, and only leaves the decoder's complaint in the error
+    // queue: any message there means pixels were not read.
+    if (const std::string pending = in->geterror(); !pending.empty())
+        fail("incomplete pixel data (truncated or corrupt file): " + first_line(pending));
+    if (!in->close()) fail("cannot read: " + oiio_message(in->geterror()));
+    // A successful read can still have warnings of the library's own (libpng: "iCCP: known incorrect sRGB
+    // profile"): pass them on, named, one line each.
+    const std::string printed = capture.finish();
+    for (size_t start = 0; start < printed.size();) {
+        const size_t end = std::min(printed.find('\n', start), printed.size());
+        if (end > start) std::fprintf(stderr, "texfilter: %s: warning: %s\n", path.c_str(),
+                                      printed.substr(start, std::min<size_t>(end - start, 200)).c_str());
+        start = end + 1;
+    }
+    return raw;
+}
+
+// Lookup table from stored integer code to linear value, so a large 8/16-bit texture costs no
+// pow() per texel.
+std::vector<float> srgb_decode_table(int levels) {
+    std::vector<float> table(size_t(levels) + 1);
+    for (int i = 0; i <= levels; ++i) table[size_t(i)] = float(srgb_to_linear(double(i) / levels));
+    return table;
+}
+
+Image to_rgba(const RawPixels& raw, bool decode_srgb) {
+    std::vector<float> table;
+    if (decode_srgb && raw.integer_levels > 0) table = srgb_decode_table(raw.integer_levels);
+    auto decode = [&](float v) -> float {
+        if (!decode_srgb) return v;
+        if (!table.empty()) {
+            const long code = std::lround(std::clamp(v, 0.0f, 1.0f) * float(raw.integer_levels));
+            return table[size_t(code)];
+        }
+        return float(srgb_to_linear(double(v)));
+    };
+
+    Image image = make_image(raw.width, raw.height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    const size_t n = raw.channels;
+    for (size_t i = 0; i < image.texels.size(); ++i) {
+        const float* p = &raw.values[i * n];
+        glm::vec4& t = image.texels[i];
+        switch (n) {
+        case 1: {
+            const float g = decode(p[0]);
+            t = glm::vec4(g, g, g, 1.0f);
+            break;
+        }
+        case 2: {  // grey + alpha
+            const float g = decode(p[0]);
+            t = glm::vec4(g, g, g, p[1]);
+            break;
+        }
+        case 3: t = glm::vec4(decode(p[0]), decode(p[1]), decode(p[2]), 1.0f); break;
+        default: t = glm::vec4(decode(p[0]), decode(p[1]), decode(p[2]), p[3]); break;  // alpha as stored
+        }
+    }
+    return image;
+}
+
+std::string extension_of(const std::string& path) { return lower(fs::path(path).extension().string()); }
+
+uint8_t encode_png_channel(float linear, bool is_alpha) {
+    double v = std::isnan(linear) ? 0.0 : std::clamp(double(linear), 0.0, 1.0);
+    if (!is_alpha) v = linear_to_srgb(v);
+    return uint8_t(std::lround(v * 255.0));
+}
+
+} // namespace
+
+bool image_io_available() { return true; }
+
+ImageHeader read_image_header(const std::string& path, int max_dimension) {
+    StderrCapture capture;
+    auto in = open_checked(path, max_dimension, capture);
+    ImageHeader header{in->spec().width, in->spec().height, std::min(in->spec().nchannels, 4)};
+    in->close();
+    in->geterror();
+    capture.finish();
+    return header;
+}
+
+Image read_image(const std::string& path, ColorSpace space, int max_dimension) {
+    const RawPixels raw = read_pixels(path, max_dimension);
+    const bool decode = space == ColorSpace::srgb || (space == ColorSpace::automatic && raw.srgb);
+    return to_rgba(raw, decode);
+}
+
+Image read_image_raw(const std::string& path) {
+    return to_rgba(read_pixels(path, raw_image_max_dimension), false);
+}
+
+void write_image(const std::string& path, const Image& image) {
+    if (is_pfm_path(path)) return write_pfm(path, image); // built in: no OpenImageIO needed
+    const std::string ext = extension_of(path);
+    const bool png = ext == ".png";
+    if (!png && ext != ".exr")
+        throw Error(path + ": unsupported output format '" + ext + "' (use .png, .exr or .pfm)");
+    if (image.width <= 0 || image.height <= 0 ||
+        image.texels.size() != size_t(image.width) * size_t(image.height))
+        throw Error(path + ": cannot write an empty or inconsistent " + std::to_string(image.width) + "x" +
+                    std::to_string(image.height) + " image");
+
+    // Created by format name, because the temporary file's extension is not .png/.exr.
+    auto out = OIIO::ImageOutput::create(png ? "png" : "openexr");
+    if (!out) throw Error(path + ": cannot create a writer: " + oiio_message(OIIO::geterror()));
+
+    OIIO::ImageSpec spec(image.width, image.height, 4, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::HALF);
+    spec.channelnames = {"R", "G", "B", "A"};
+    spec.alpha_channel = 3;
+    std::vector<uint8_t> bytes;
+    const void* data = image.texels.data();
+    OIIO::TypeDesc data_type = OIIO::TypeDesc::FLOAT;
+    if (png) {
+        spec.attribute("oiio:ColorSpace", "sRGB");
+        spec.attribute("oiio:UnassociatedAlpha", 1);  // our alpha is straight; don't let OIIO divide
+        bytes.resize(image.texels.size() * 4);
+        for (size_t i = 0; i < image.texels.size(); ++i)
+            for (int c = 0; c < 4; ++c) bytes[i * 4 + size_t(c)] = encode_png_channel(image.texels[i][c], c == 3);
+        data = bytes.data();
+        data_type = OIIO::TypeDesc::UINT8;
+    } else {
+        spec.attribute("oiio:ColorSpace", "Linear");
+        spec.attribute("compression", "zip");
+        spec.attribute("DateTime", "");  // an empty value keeps OIIO from stamping the time: same image, same bytes
+    }
+
+    const std::string temp = temporary_path_for(path);
+    auto give_up = [&](const std::string& what) {
+        if (out) {
+            out->geterror();
+            out.reset();  // closes a half-written file before it is removed
+        }
+        std::error_code ec;
+        fs::remove(temp, ec);
+        throw Error(path + ": " + what);
+    };
+
+    bool ok = false;
+    std::string oiio_error;
+    try {
+        ok = out->open(temp, spec);
+        if (ok) ok = out->write_image(data_type, data);
+        if (ok) ok = out->close();
+    } catch (const std::exception& e) {
+        oiio_error = e.what();
+        ok = false;
+    }
+    if (!ok) {
+        if (oiio_error.empty()) oiio_error = out->geterror();
+        give_up("cannot write: " + oiio_message(oiio_error));
+    }
+    out.reset();
+
+    std::error_code ec;
+    fs::rename(temp, path, ec);
+    if (ec) give_up("cannot move the finished file into place: " + ec.message());
+}
+
+} // namespace tf

@@ -1,0 +1,112 @@
+#include "io/output_dir.h"
+#include "texture/error.h"
+#include "io/output_path.h"
+#include <filesystem>
+#include <fstream>
+
+namespace tf {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string heading(const std::string& command)
+{
+    return "# texfilter " + command + " output directory. texfilter " + command +
+           " removes the files listed here (and only these) when it runs again with this --out.";
+}
+
+// Only plain relative names below the directory: a tampered marker must not reach outside it.
+bool safe_relative(const std::string& relative)
+{
+    if (relative.empty() || relative.front() == '/')
+        return false;
+    for (const fs::path& part : fs::path(relative))
+        if (part == ".." || part == ".")
+            return false;
+    return true;
+}
+
+void write_marker(const OwnedDirectory& directory)
+{
+    std::string text = heading(directory.command) + "\n";
+    for (const std::string& f : directory.files)
+        text += f + "\n";
+    write_file_atomic(directory.marker, text);
+}
+
+// The files an earlier run listed; throws if the marker is not ours.
+std::vector<std::string> read_marker(const std::string& marker, const std::string& command)
+{
+    std::ifstream in(marker);
+    std::string line;
+    if (!in || !std::getline(in, line) || line != heading(command))
+        throw Error(marker + ": is not a texfilter " + command + " marker; nothing in its directory was touched");
+    std::vector<std::string> files;
+    while (std::getline(in, line))
+        if (!line.empty()) {
+            if (!safe_relative(line))
+                throw Error(marker + ": lists '" + line.substr(0, 60) +
+                            "', which is not a file below its directory; nothing was touched");
+            files.push_back(line);
+        }
+    return files;
+}
+
+void remove_listed(const std::string& root, const std::vector<std::string>& files)
+{
+    for (const std::string& f : files) {
+        fs::path p = fs::path(root) / f;
+        std::error_code ec;
+        if (fs::is_regular_file(fs::symlink_status(p, ec)))
+            fs::remove(p, ec);
+        // The folders the files were in go too, once empty (fs::remove leaves a non-empty one alone).
+        for (fs::path dir = fs::path(f).parent_path(); !dir.empty(); dir = dir.parent_path())
+            fs::remove(fs::path(root) / dir, ec);
+    }
+}
+
+} // namespace
+
+OwnedDirectory claim_directory(const std::string& path, const std::string& command)
+{
+    OwnedDirectory directory;
+    directory.path = path;
+    directory.command = command;
+    directory.marker = (fs::path(path) / (".texfilter-" + command)).string();
+    const std::string what = command + " --out " + path;
+    std::error_code ec;
+    const fs::file_status status = fs::symlink_status(path, ec);
+    if (!fs::exists(status)) {
+        fs::path parent = fs::path(path).parent_path();
+        check_writable_directory(parent.empty() ? "." : parent.string(), what);
+        if (!fs::create_directory(path, ec) || ec)
+            throw Error(what + ": cannot create the directory (" + ec.message() + ")");
+    } else if (!fs::is_directory(status)) {
+        throw Error(what + ": exists and is not a directory");
+    } else if (fs::exists(fs::symlink_status(directory.marker, ec))) {
+        check_writable_directory(path, what);
+        remove_listed(path, read_marker(directory.marker, command));
+    } else if (!fs::is_empty(path, ec) || ec) {
+        throw Error(what + ": exists, is not empty and was not made by texfilter " + command +
+                    " (no " + fs::path(directory.marker).filename().string() +
+                    " in it); nothing was touched: choose a new directory");
+    } else {
+        check_writable_directory(path, what);
+    }
+    write_marker(directory);
+    return directory;
+}
+
+void record_file(OwnedDirectory& directory, const std::string& relative)
+{
+    if (!safe_relative(relative))
+        throw Error("internal: '" + relative + "' is not a plain name below " + directory.path);
+    for (const std::string& f : directory.files)
+        if (f == relative)
+            return;
+    directory.files.push_back(relative);
+    write_marker(directory);
+}
+
+} // namespace tf

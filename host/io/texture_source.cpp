@@ -1,0 +1,36 @@
+#include "io/texture_source.h"
+#include "texture/error.h"
+#include "core/memory_budget.h"
+#include "core/procedural.h"
+#include "texture/sat.h"
+
+namespace tf {
+
+MipChain load_texture(const TextureSource& source, const TextureUse& use)
+{
+    const bool procedural = is_procedural(source.name_or_path);
+    int width = source.procedural_size, height = source.procedural_size, channels = 4;
+    if (!procedural) {
+        const ImageHeader header = read_image_header(source.name_or_path, max_texture_dimension);
+        width = header.width;
+        height = header.height;
+        channels = header.channels;
+    }
+    const std::string what = procedural ? "texture " + source.name_or_path : source.name_or_path;
+    if (use.sat && (width > sat_max_dimension || height > sat_max_dimension))
+        throw Error(what + ": " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is larger than the summed-area table allows (" + std::to_string(sat_max_dimension) +
+                    " a side: its 40-bit sums are exact only up to 4096x4096 texels of 16 bits)");
+    const uint64_t budget = source.memory_budget ? source.memory_budget : default_memory_budget();
+    const TextureMemory need = estimate_texture_memory(width, height, channels, use.sat, use.device != nullptr);
+    check_memory_budget(what, width, height, need, budget);
+    if (use.device)
+        check_device_limits(what, width, height, need, *use.device);
+    MipChain chain = procedural ? make_procedural(source.name_or_path, source.procedural_size)
+                                : build_mip_chain(read_image(source.name_or_path, source.color, max_texture_dimension));
+    if (use.sat) // NaN/Inf texels have no place in an integer table: refused here, naming the texture
+        check_sat_texels(chain.levels[0], source.name_or_path);
+    return chain;
+}
+
+} // namespace tf

@@ -1,0 +1,33 @@
+#pragma once
+// Where a texture comes from: a procedural name (checker, zoneplate, ...) or an image file.
+#include "io/image_io.h"
+#include "core/memory_budget.h"
+#include "texture/mip.h"
+#include <cstdint>
+#include <string>
+
+namespace tf {
+
+struct TextureSource {
+    std::string name_or_path;        // a procedural name wins over a file of the same name (use ./name)
+    int procedural_size = 256;       // --texture-size, procedural textures only
+    ColorSpace color = ColorSpace::automatic; // files only: --linear forces data/linear
+    uint64_t memory_budget = 0;      // --memory-budget in bytes; 0: default_memory_budget()
+};
+
+// What the texture will be used for, which decides how much memory loading it takes.
+struct TextureUse {
+    bool sat = false;                      // a summed-area table is built (sat, sat-assembly): at most 4096 a side
+    const DeviceLimits* device = nullptr;  // uploaded to this Vulkan device (and a staging copy on the host)
+};
+
+// The largest texture side accepted from a file before any device is asked (Vulkan guarantees 4096;
+// desktop GPUs and lavapipe allow 16384). Bigger files are rejected with a clear message.
+constexpr int max_texture_dimension = 16384;
+
+// Checks the size (the file's header, or the procedural side) against the limits of `use` and the memory
+// budget before anything is decoded or allocated, then loads and builds the MIP chain. Throws tf::Error
+// naming the texture.
+MipChain load_texture(const TextureSource& source, const TextureUse& use = {});
+
+} // namespace tf

@@ -1,0 +1,122 @@
+// CPU reference for brilinear and anisotropic (probe) filtering, in double, from the math in
+// shaders/texfilter/brilinear.glsl and aniso.glsl's headers (DESIGN.md section 3), not from their code:
+// the SVD here goes through the eigenvectors of J J^T, the shader uses a closed-form rotation split.
+// Both taps (manual, hardware) have this one reference: exact trilinear probes.
+#include "reference/reference.h"
+
+#include "texture/error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tf {
+
+namespace {
+
+constexpr int kMaxProbes = 16;
+
+// The sampler's LOD clamps: [lod_min, lod_max], then the existing levels [0, levels-1].
+// +inf (non-finite gradients) ends on the coarsest allowed level, -inf (zero gradients) on the finest.
+double clamp_lod(const MipChain& chain, double d, const SamplerOptions& options) {
+    d = std::min(std::max(d, double(options.lod_min)), double(options.lod_max));
+    if (std::isnan(d)) d = INFINITY;
+    return std::clamp(d, 0.0, double(chain.levels.size() - 1));
+}
+
+// N = min(ceil(ratio - 1/64), max_n), at least 1; ratio = +inf (zero minor axis) gives max_n. The 1/64 slack
+// keeps isotropic footprints at one probe whatever float noise their derivatives carry.
+constexpr double ratio_slack = 1.0 / 64.0;
+int probe_count(double ratio, int max_n) { return ratio >= max_n ? max_n : std::max(1, int(std::ceil(ratio - ratio_slack))); }
+
+// Probes along the major axis: uv + t_k * axis, t_k = (k + 1/2)/N - 1/2, all at one LOD.
+struct Probes {
+    int count = 1;
+    double lod = 0;
+    double axis_u = 0, axis_v = 0; // the whole major axis, uv units
+    bool gaussian = false;         // feline: weights exp(-2 (2 t_k)^2), else equal
+};
+
+Probes gpu_probes(const MipChain& chain, const SamplerOptions& options, const Lookup& l, int max_n) {
+    Probes p;
+    const double w = chain.levels[0].width, h = chain.levels[0].height;
+    const double px = std::hypot(l.dudx * w, l.dvdx * h), py = std::hypot(l.dudy * w, l.dvdy * h);
+    const double pmax = std::max(px, py), pmin = std::min(px, py);
+    if (pmax > 0) p.count = pmin > 0 ? probe_count(pmax / pmin, max_n) : max_n;
+    // lambda = log2(Pmax / N) + bias; reference_lod is log2(Pmax) + bias (and handles zero gradients).
+    p.lod = clamp_lod(chain, reference_lod(chain, l, options) - std::log2(double(p.count)), options);
+    if (p.count > 1) {
+        const bool x_major = px >= py;
+        p.axis_u = x_major ? l.dudx : l.dudy;
+        p.axis_v = x_major ? l.dvdx : l.dvdy;
+    }
+    return p;
+}
+
+Probes feline_probes(const MipChain& chain, const SamplerOptions& options, const Lookup& l, int max_n) {
+    Probes p;
+    p.gaussian = true;
+    const double w = chain.levels[0].width, h = chain.levels[0].height;
+    // J = [a b; c d], columns d(u,v)/dx and d(u,v)/dy in level-0 texels.
+    const double a = l.dudx * w, b = l.dudy * w, c = l.dvdx * h, d = l.dvdy * h;
+    // J J^T = [s t; t r]: its eigenvalues are sigma1^2 >= sigma2^2, its first eigenvector is J's major axis.
+    const double s = a * a + b * b, t = a * c + b * d, r = c * c + d * d;
+    const double mean = 0.5 * (s + r), dev = std::hypot(0.5 * (s - r), t);
+    const double sigma1 = std::sqrt(mean + dev);
+    if (sigma1 == 0) { // zero gradients: one probe on the finest level
+        p.lod = clamp_lod(chain, -INFINITY, options);
+        return p;
+    }
+    const double sigma2 = std::abs(a * d - b * c) / sigma1; // |det J| = sigma1 sigma2, no cancellation
+    p.count = sigma2 > 0 ? probe_count(sigma1 / sigma2, max_n) : max_n;
+    p.lod = clamp_lod(chain, std::log2(std::max(sigma2, sigma1 / p.count)) + options.lod_bias, options);
+    if (p.count > 1) {
+        const double theta = 0.5 * std::atan2(2 * t, s - r); // direction of the largest eigenvalue
+        p.axis_u = sigma1 * std::cos(theta) / w;
+        p.axis_v = sigma1 * std::sin(theta) / h;
+    }
+    return p;
+}
+
+} // namespace
+
+glm::dvec4 reference_brilinear(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
+    if (chain.levels.empty()) throw Error("reference_brilinear: empty MIP chain");
+    const double d = clamp_lod(chain, reference_lod(chain, lookup, options), options);
+    const int lo = int(std::floor(d));
+    const double f = d - lo;
+    // Weight of level lo+1: a ramp of slope 1/B centred on f = 1/2; B = 0 is the step of the nearest level
+    // (Vulkan mipmapMode NEAREST, ceil(d + 1/2) - 1: f = 1/2 stays on the finer level).
+    const double band = std::min(double(options.band), 1.0);
+    const double weight = band > 0 ? std::clamp((f - (1 - band) / 2) / band, 0.0, 1.0) : (f > 0.5 ? 1.0 : 0.0);
+    const Image& fine = chain.levels[size_t(lo)];
+    if (weight == 0) return reference_bilinear(fine, lookup.u, lookup.v, options.wrap);
+    const Image& coarse = chain.levels[size_t(lo + 1)]; // weight > 0 needs f > 0, so lo < levels-1
+    if (weight == 1) return reference_bilinear(coarse, lookup.u, lookup.v, options.wrap);
+    return (1 - weight) * reference_bilinear(fine, lookup.u, lookup.v, options.wrap) +
+           weight * reference_bilinear(coarse, lookup.u, lookup.v, options.wrap);
+}
+
+glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
+    if (chain.levels.empty()) throw Error("reference_aniso: empty MIP chain");
+    const int max_n = std::clamp(options.probes, 1, kMaxProbes);
+    Probes p;
+    if (!finite_footprint(chain, lookup)) // NaN/±Inf or past float range (reference.h): one probe, coarsest level
+        p.lod = clamp_lod(chain, INFINITY, options);
+    else if (options.aniso_shape == AnisoShape::feline)
+        p = feline_probes(chain, options, lookup, max_n);
+    else
+        p = gpu_probes(chain, options, lookup, max_n);
+
+    glm::dvec4 sum(0.0);
+    double weights = 0;
+    for (int k = 0; k < p.count; ++k) {
+        const double t = (k + 0.5) / p.count - 0.5;
+        const double weight = p.gaussian ? std::exp(-2 * (2 * t) * (2 * t)) : 1.0;
+        sum += weight * reference_trilinear_at(chain, p.lod, lookup.u + t * p.axis_u, lookup.v + t * p.axis_v,
+                                               options.wrap);
+        weights += weight;
+    }
+    return sum / weights;
+}
+
+} // namespace tf

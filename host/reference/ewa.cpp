@@ -1,0 +1,238 @@
+// EWA (elliptical weighted average), written from the definition in double precision: see
+// shaders/texfilter/ewa.glsl for the filter's contract. Where the shader scans row spans in float with
+// overflow guards and accumulates centred moments, this scans each level's whole bounding box in double,
+// tests every texel and solves the weighted least-squares normal equations directly.
+//
+//   J = [dUV/dx dUV/dy] in level-0 texels; the footprint ellipse J·Jᵀ has its minor semi-axis grown
+//   to major / max_aniso; lambda = max(log2 minor, log2(major / ((K-3)/(4R)))) + bias, clamped.
+//   Level l: M = S·(clamped J·Jᵀ)·S + I, S = diag(w_l/w_0, h_l/h_0), shrunk so that the support's
+//   bounding box half-extents R·sqrt(M.xx), R·sqrt(M.yy) stay <= (K-1)/2 - 1/64; texels with
+//   r² = xᵀM⁻¹x < R² (R² = 2) weigh exp(-alpha r²) - exp(-alpha R²) (continuous at the edge).
+//   Manual taps: the weighted least-squares fit b + g·d over the texels (d = texel centre - centre),
+//   evaluated at d = 0 and clamped to the range of the texels read (a line fitted across a step can
+//   overshoot it): it reproduces a linear texture exactly, whichever texels the support catches.
+//   Hardware taps: texels in 2x2 blocks at even indices, one exact bilinear lookup per block at its
+//   weight centroid less the taps' common centroid offset (so that their weighted mean position is the
+//   centre), weighted by the block's total weight: exact on a linear texture too.
+#include "texture/error.h"
+#include "reference/reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <glm/common.hpp>
+
+namespace tf {
+
+namespace {
+
+// TF_EWA_MAX_TEXELS's default in ewa.glsl: the loop cap K (texels per row and per column of a level).
+constexpr int kMaxTexels = 95;
+constexpr double kSupport = 2.0;                                  // R²: the weight's support is r² < R²
+constexpr double kHalfBox = 0.5 * (kMaxTexels - 1) - 1.0 / 64.0; // largest bounding-box half-extent
+// Largest major semi-axis (M's, without R) on the LOD's level: the support then fits the cap there.
+const double kMajorTexels = (kMaxTexels - 3) / (4.0 * std::sqrt(kSupport));
+constexpr double kMaxAlpha = 64.0;
+constexpr double kMaxTexel = 4503599627370496.0; // 2^52: beyond it doubles have no fraction
+
+struct Sym { // symmetric 2x2 matrix
+    double xx = 0, xy = 0, yy = 0;
+};
+
+// The footprint of a lookup: clamped covariance in level-0 texels² and the LOD before level clamps.
+struct Footprint {
+    Sym cov;          // all zero for zero or non-finite gradients (M = I on every level)
+    double lambda = 0;
+};
+
+Footprint footprint(const MipChain& chain, const SamplerOptions& options, const Lookup& l) {
+    Footprint fp;
+    if (!finite_footprint(chain, l)) { // NaN/±Inf, or past float range (docs/API.md, degenerate input)
+        fp.lambda = INFINITY;
+        return fp;
+    }
+    const double w0 = chain.levels[0].width, h0 = chain.levels[0].height;
+    const double ax = l.dudx * w0, ay = l.dvdx * h0; // J e_x
+    const double bx = l.dudy * w0, by = l.dvdy * h0; // J e_y
+    const Sym jj{ax * ax + bx * bx, ax * ay + bx * by, ay * ay + by * by};
+    // Eigen-decomposition of J·Jᵀ: eigenvalues from trace and determinant, major axis at angle theta.
+    const double half_trace = 0.5 * (jj.xx + jj.yy);
+    const double det = (ax * by - ay * bx) * (ax * by - ay * bx);
+    const double major2 = half_trace + std::hypot(0.5 * (jj.xx - jj.yy), jj.xy);
+    if (major2 <= 0.0) {
+        fp.lambda = -INFINITY;
+        return fp;
+    }
+    const double e = options.max_aniso >= 1.0f ? double(options.max_aniso) : 1.0;
+    const double minor2 = std::max(det / major2, major2 / (e * e));
+    const double theta = 0.5 * std::atan2(2.0 * jj.xy, jj.xx - jj.yy);
+    const double c = std::cos(theta), s = std::sin(theta);
+    // R diag(major2, minor2) Rᵀ with R = [c -s; s c].
+    fp.cov = {major2 * c * c + minor2 * s * s, (major2 - minor2) * c * s, major2 * s * s + minor2 * c * c};
+    fp.lambda = std::max(0.5 * std::log2(minor2), 0.5 * std::log2(major2) - std::log2(kMajorTexels)) +
+                double(options.lod_bias);
+    return fp;
+}
+
+// LOD after the sampler's clamps ([lod_min, lod_max], then the existing levels); NaN -> coarsest.
+double clamp_lambda(const MipChain& chain, const SamplerOptions& options, double lambda) {
+    lambda = std::min(std::max(lambda, double(options.lod_min)), double(options.lod_max));
+    if (std::isnan(lambda)) lambda = INFINITY;
+    return std::clamp(lambda, 0.0, double(chain.levels.size() - 1));
+}
+
+// The ellipse on one level. The centre uv·size is split into an integer texel `base` and a fraction, so
+// that texel offsets stay exact however far uv is from [0, 1]; for repeat and mirror, base moves by a
+// multiple of 2·size (both repeat every 2·size texels, and block parity is kept), for clamp it moves
+// at most to 2K texels past an edge (every texel there reads the edge).
+struct LevelEllipse {
+    Sym m;                    // M, level texels²
+    long long bx = 0, by = 0; // base texel
+    double fx = 0, fy = 0;    // centre - base, in [0, 1)
+};
+
+long long reduce_base(long long base, int size, Wrap wrap) {
+    if (wrap != Wrap::clamp) {
+        const long long period = 2LL * size;
+        return ((base % period) + period) % period;
+    }
+    const long long far = 2LL * kMaxTexels + 2; // even
+    if (base > size + far) return size + far + ((base - size - far) & 1); // same parity as base
+    if (base < -far) return -far - (base & 1);
+    return base;
+}
+
+LevelEllipse level_ellipse(const MipChain& chain, int level, const Footprint& fp, const Lookup& l, Wrap wrap) {
+    const Image& base = chain.levels[0];
+    const Image& img = chain.levels[size_t(level)];
+    const double sx = double(img.width) / base.width, sy = double(img.height) / base.height;
+    Sym d{sx * sx * fp.cov.xx, sx * sy * fp.cov.xy, sy * sy * fp.cov.yy};
+    const double widest = std::max(d.xx, d.yy);
+    if (kSupport * (widest + 1.0) > kHalfBox * kHalfBox) { // the loop cap: shrink, same shape
+        const double k = (kHalfBox * kHalfBox / kSupport - 1.0) / widest;
+        d = {k * d.xx, k * d.xy, k * d.yy};
+    }
+    LevelEllipse e;
+    e.m = {d.xx + 1.0, d.xy, d.yy + 1.0};
+    const double cx = std::clamp(l.u * img.width, -kMaxTexel, kMaxTexel);
+    const double cy = std::clamp(l.v * img.height, -kMaxTexel, kMaxTexel);
+    e.fx = cx - std::floor(cx), e.fy = cy - std::floor(cy);
+    e.bx = reduce_base((long long)std::floor(cx), img.width, wrap);
+    e.by = reduce_base((long long)std::floor(cy), img.height, wrap);
+    return e;
+}
+
+// Offset of texel (i, j)'s centre from the lookup's centre, level texels.
+void offset(const LevelEllipse& e, double i, double j, double& dx, double& dy) {
+    dx = i - double(e.bx) + 0.5 - e.fx, dy = j - double(e.by) + 0.5 - e.fy;
+}
+
+// Weight of the texel with integer index (i, j): exp(-alpha r²) - exp(-alpha R²) inside the support,
+// 0 outside; scaled by exp(alpha R²)/alpha, i.e. expm1(alpha (R² - r²))/alpha (alpha 0: its limit R² - r²),
+// which the normalisation cancels.
+double weight(const LevelEllipse& e, long long i, long long j, double alpha) {
+    double dx, dy;
+    offset(e, double(i), double(j), dx, dy);
+    const double det = e.m.xx * e.m.yy - e.m.xy * e.m.xy;
+    const double r2 = (e.m.yy * dx * dx - 2.0 * e.m.xy * dx * dy + e.m.xx * dy * dy) / det;
+    if (!(r2 < kSupport)) return 0.0;
+    return alpha > 0.0 ? std::expm1(alpha * (kSupport - r2)) / alpha : kSupport - r2;
+}
+
+// Weighted least squares: minimise sum w (t - b - g·d)² per channel, return b.
+struct Fit {
+    double w = 0, x = 0, y = 0, xx = 0, xy = 0, yy = 0; // sums of w, w·d, w·d·dᵀ
+    glm::dvec4 t{0.0}, tx{0.0}, ty{0.0};                // sums of w·t, w·dx·t, w·dy·t
+    glm::dvec4 lo{INFINITY}, hi{-INFINITY};             // the values' range, per channel
+    void add(double wt, double dx, double dy, const glm::dvec4& value) {
+        w += wt, x += wt * dx, y += wt * dy, xx += wt * dx * dx, xy += wt * dx * dy, yy += wt * dy * dy;
+        t += wt * value, tx += wt * dx * value, ty += wt * dy * value;
+        lo = glm::min(lo, value), hi = glm::max(hi, value);
+    }
+    // The fit clamped to the values' range: a line fitted across a step can overshoot it; a linear
+    // texture's value at the centre is inside the range (the 4 texel centres around it are in the support).
+    glm::dvec4 value() const { return glm::clamp(unclamped(), lo, hi); }
+    glm::dvec4 unclamped() const {
+        // Normal equations A·(b, gx, gy) = (t, tx, ty), A = [w x y; x xx xy; y xy yy]: Cramer's rule.
+        const double a11 = xx, a22 = yy;
+        const double det = w * (a11 * a22 - xy * xy) - x * (x * a22 - xy * y) + y * (x * xy - a11 * y);
+        if (!(det > 0.0)) return t / w; // a single sample (cannot happen with R² = 2; kept for safety)
+        // b = det([t x y; tx a11 xy; ty xy a22]) / det, per channel.
+        const glm::dvec4 num = t * (a11 * a22 - xy * xy) - x * (tx * a22 - xy * ty) + y * (tx * xy - a11 * ty);
+        return num / det;
+    }
+};
+
+// First and last texel index whose centre can lie within half-extent h of base + f.
+void box_range(long long base, double f, double h, long long& first, long long& last) {
+    first = base + (long long)std::floor(f - h - 0.5) - 1;
+    last = base + (long long)std::ceil(f + h - 0.5) + 1;
+}
+
+long long floor_div2(long long i) { return i >= 0 ? i / 2 : -((1 - i) / 2); }
+
+glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, const Lookup& l, double alpha,
+                     Wrap wrap, bool hardware) {
+    const Image& img = chain.levels[size_t(level)];
+    const LevelEllipse e = level_ellipse(chain, level, fp, l, wrap);
+    long long i0, i1, j0, j1;
+    box_range(e.bx, e.fx, std::sqrt(kSupport * e.m.xx), i0, i1); // the support's bounding box
+    box_range(e.by, e.fy, std::sqrt(kSupport * e.m.yy), j0, j1);
+    Fit fit;
+    if (!hardware) {
+        for (long long j = j0; j <= j1; ++j)
+            for (long long i = i0; i <= i1; ++i)
+                if (const double w = weight(e, i, j, alpha); w > 0.0) {
+                    double dx, dy;
+                    offset(e, double(i), double(j), dx, dy);
+                    fit.add(w, dx, dy,
+                            glm::dvec4(img.at(wrap_texel(i, img.width, wrap), wrap_texel(j, img.height, wrap))));
+                }
+    } else {
+        struct Tap {
+            double w, x, y; // weight; position in level texels (texel index + 1/2 + fraction)
+        };
+        std::vector<Tap> taps;
+        double w_sum = 0, x_sum = 0, y_sum = 0;
+        for (long long bj = floor_div2(j0); bj <= floor_div2(j1); ++bj)
+            for (long long bi = floor_div2(i0); bi <= floor_div2(i1); ++bi) {
+                const long long i = 2 * bi, j = 2 * bj;
+                const double w00 = weight(e, i, j, alpha), w10 = weight(e, i + 1, j, alpha);
+                const double w01 = weight(e, i, j + 1, alpha), w11 = weight(e, i + 1, j + 1, alpha);
+                const double w = w00 + w10 + w01 + w11;
+                if (w <= 0.0) continue;
+                // Texel coordinate 2b + 1/2 + a puts bilinear's i0 at 2b with fraction a: the block's weight centroid.
+                const Tap t{w, double(i) + 0.5 + (w10 + w11) / w, double(j) + 0.5 + (w01 + w11) / w};
+                taps.push_back(t);
+                w_sum += t.w, x_sum += t.w * t.x, y_sum += t.w * t.y;
+            }
+        if (!(w_sum > 0.0)) throw Error("ewa: no texel weighs anything (cannot happen: the nearest has r² <= 1/2)");
+        // Every tap moved by the same offset, so that their weighted mean position is the lookup's centre.
+        const double sx = x_sum / w_sum - (double(e.bx) + e.fx), sy = y_sum / w_sum - (double(e.by) + e.fy);
+        glm::dvec4 sum(0.0);
+        for (const Tap& t : taps)
+            sum += t.w * reference_bilinear(img, (t.x - sx) / img.width, (t.y - sy) / img.height, wrap);
+        return sum / w_sum;
+    }
+    if (!(fit.w > 0.0)) throw Error("ewa: no texel weighs anything (cannot happen: the nearest has r² <= 1/2)");
+    return fit.value();
+}
+
+} // namespace
+
+glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
+    if (chain.levels.empty()) throw Error("reference_ewa: empty MIP chain");
+    const double alpha = options.alpha >= 0.0f ? std::min(double(options.alpha), kMaxAlpha) : 0.0;
+    const bool hardware = options.taps == Taps::hardware;
+    const Footprint fp = footprint(chain, options, lookup);
+    const double lambda = clamp_lambda(chain, options, fp.lambda);
+    const int lo = int(std::floor(lambda));
+    const double f = lambda - lo;
+    const glm::dvec4 fine = ewa_level(chain, lo, fp, lookup, alpha, options.wrap, hardware);
+    if (f == 0.0) return fine;
+    const glm::dvec4 coarse = ewa_level(chain, lo + 1, fp, lookup, alpha, options.wrap, hardware);
+    return (1.0 - f) * fine + f * coarse;
+}
+
+} // namespace tf

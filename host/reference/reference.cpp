@@ -1,0 +1,166 @@
+#include "reference/reference.h"
+
+#include "texture/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace tf {
+
+namespace {
+
+// Beyond 2^52 every double is an integer and fractions vanish; clamping there keeps the
+// conversion to long long defined for any finite uv (e.g. 1e30) without changing the result's form.
+constexpr double kMaxTexel = 4503599627370496.0; // 2^52
+
+double clamp_texel(double x) { return std::clamp(x, -kMaxTexel, kMaxTexel); }
+
+glm::dvec4 fetch(const Image& level, long long i, long long j, Wrap wrap) {
+    return glm::dvec4(level.at(wrap_texel(i, level.width, wrap), wrap_texel(j, level.height, wrap)));
+}
+
+const Image& level_at(const MipChain& chain, int l) {
+    const int last = int(chain.levels.size()) - 1;
+    return chain.levels[size_t(std::clamp(l, 0, last))];
+}
+
+// The LOD after the sampler's clamps: [lod_min, lod_max], then [0, levels-1].
+double clamped_lod(const MipChain& chain, const Lookup& lookup, const SamplerOptions& options) {
+    double d = reference_lod(chain, lookup, options);
+    d = std::min(std::max(d, double(options.lod_min)), double(options.lod_max));
+    if (std::isnan(d)) d = INFINITY; // e.g. -inf + inf bias: fall back to the coarsest level, like non-finite input
+    const double top = double(chain.levels.size() - 1);
+    return std::min(std::max(d, 0.0), top);
+}
+
+} // namespace
+
+bool finite_uv(const Lookup& l) {
+    const double fmax = std::numeric_limits<float>::max();
+    return std::abs(l.u) <= fmax && std::abs(l.v) <= fmax; // false for NaN too
+}
+
+bool finite_footprint(const MipChain& chain, const Lookup& l) {
+    if (chain.levels.empty()) throw Error("finite_footprint: empty MIP chain");
+    const double fmax = std::numeric_limits<float>::max();
+    const double overflow = 0x1p128 - 0x1p103; // float rounds |x| >= this to Inf
+    const double w0 = chain.levels[0].width, h0 = chain.levels[0].height;
+    for (double g : {l.dudx, l.dvdx, l.dudy, l.dvdy})
+        if (!(std::abs(g) <= fmax)) return false;
+    return std::abs(l.dudx * w0) < overflow && std::abs(l.dudy * w0) < overflow && std::abs(l.dvdx * h0) < overflow &&
+           std::abs(l.dvdy * h0) < overflow;
+}
+
+double reduce_uv(double u, Wrap wrap) {
+    if (wrap == Wrap::clamp) return std::clamp(u, -1.0, 2.0);
+    return u - 2.0 * std::nearbyint(0.5 * u); // repeat and mirror: whole periods of 2 (ties to even), into [-1, 1]
+}
+
+int wrap_texel(long long i, int size, Wrap wrap) {
+    if (size < 1) throw Error("wrap_texel: size " + std::to_string(size) + " < 1");
+    const long long n = size;
+    switch (wrap) {
+    case Wrap::repeat:
+        return int(((i % n) + n) % n);
+    case Wrap::clamp:
+        return int(std::clamp(i, 0LL, n - 1));
+    case Wrap::mirror: {
+        // Vulkan mirrored repeat: period 2n, second half reversed.
+        const long long t = ((i % (2 * n)) + 2 * n) % (2 * n);
+        return int(t < n ? t : 2 * n - 1 - t);
+    }
+    }
+    throw Error("wrap_texel: invalid wrap mode");
+}
+
+double reference_lod(const MipChain& chain, const Lookup& lookup, const SamplerOptions& options) {
+    if (chain.levels.empty()) throw Error("reference_lod: empty MIP chain");
+    if (!finite_footprint(chain, lookup)) return INFINITY;
+    const double w0 = chain.levels[0].width, h0 = chain.levels[0].height;
+    const double rho_x = std::hypot(lookup.dudx * w0, lookup.dvdx * h0);
+    const double rho_y = std::hypot(lookup.dudy * w0, lookup.dvdy * h0);
+    const double rho = std::max(rho_x, rho_y);
+    if (rho == 0.0) return -INFINITY;
+    return std::log2(rho) + double(options.lod_bias);
+}
+
+glm::dvec4 reference_nearest(const Image& level, double u, double v, Wrap wrap) {
+    if (!finite_uv({u, v})) return glm::dvec4(0.0);
+    u = reduce_uv(u, wrap), v = reduce_uv(v, wrap);
+    const auto i = (long long)std::floor(clamp_texel(u * level.width));
+    const auto j = (long long)std::floor(clamp_texel(v * level.height));
+    return fetch(level, i, j, wrap);
+}
+
+glm::dvec4 reference_bilinear(const Image& level, double u, double v, Wrap wrap) {
+    if (!finite_uv({u, v})) return glm::dvec4(0.0);
+    u = reduce_uv(u, wrap), v = reduce_uv(v, wrap);
+    const double x = clamp_texel(u * level.width - 0.5), y = clamp_texel(v * level.height - 0.5);
+    const double fx = std::floor(x), fy = std::floor(y);
+    const double a = x - fx, b = y - fy;
+    const auto i0 = (long long)fx, j0 = (long long)fy;
+    return (1 - a) * (1 - b) * fetch(level, i0, j0, wrap) + a * (1 - b) * fetch(level, i0 + 1, j0, wrap) +
+           (1 - a) * b * fetch(level, i0, j0 + 1, wrap) + a * b * fetch(level, i0 + 1, j0 + 1, wrap);
+}
+
+glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap) {
+    const double d = std::clamp(lod, 0.0, double(chain.levels.size() - 1));
+    const int lo = int(std::floor(d));
+    const double f = d - lo;
+    const glm::dvec4 low = reference_bilinear(level_at(chain, lo), u, v, wrap);
+    if (f == 0.0 || lo + 1 >= int(chain.levels.size())) return low;
+    const glm::dvec4 high = reference_bilinear(level_at(chain, lo + 1), u, v, wrap);
+    return (1 - f) * low + f * high;
+}
+
+glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                            const SatLevels* sat) {
+    if (chain.levels.empty()) throw Error("reference_sample: empty MIP chain");
+    if (options.filter == Filter::hw_aniso)
+        throw Error("hw-aniso has no CPU reference: anisotropic filtering is implementation-defined in Vulkan");
+    if (options.filter == Filter::ground_truth)
+        throw Error("ground-truth integrates over a pixel of a scene, not around one lookup: render it");
+    if (!finite_uv(lookup)) return glm::dvec4(0.0);
+    Lookup reduced = lookup; // whole periods first (the probes of aniso are reduced again, per probe)
+    reduced.u = reduce_uv(lookup.u, options.wrap), reduced.v = reduce_uv(lookup.v, options.wrap);
+
+    const Image& base = chain.levels[0];
+    switch (options.filter) {
+    case Filter::nearest:
+    case Filter::hw_nearest:
+        return reference_nearest(base, reduced.u, reduced.v, options.wrap);
+    case Filter::bilinear:
+    case Filter::hw_bilinear:
+        return reference_bilinear(base, reduced.u, reduced.v, options.wrap);
+    case Filter::nearest_mip:
+    case Filter::bilinear_mip: {
+        // Vulkan mipmapMode NEAREST: level = ceil(d + 1/2) - 1, so d = 0.5 still picks level 0.
+        const double d = clamped_lod(chain, reduced, options);
+        const Image& level = level_at(chain, int(std::ceil(d + 0.5)) - 1);
+        return options.filter == Filter::nearest_mip ? reference_nearest(level, reduced.u, reduced.v, options.wrap)
+                                                     : reference_bilinear(level, reduced.u, reduced.v, options.wrap);
+    }
+    case Filter::trilinear:
+    case Filter::hw_trilinear:
+        return reference_trilinear_at(chain, clamped_lod(chain, reduced, options), reduced.u, reduced.v, options.wrap);
+    case Filter::brilinear:
+        return reference_brilinear(chain, options, reduced);
+    case Filter::aniso:
+        return reference_aniso(chain, options, reduced);
+    case Filter::ewa:
+        return reference_ewa(chain, options, reduced);
+    case Filter::sat:
+    case Filter::sat_assembly:
+        return reference_sat(chain, options, lookup, sat ? *sat : reference_sat_levels(chain.levels[0]));
+    case Filter::none: // the baseline: the scene's uv as colour, no texture
+        return glm::dvec4(lookup.u - std::floor(lookup.u), lookup.v - std::floor(lookup.v), 0.5, 1.0);
+    case Filter::hw_aniso:
+    case Filter::ground_truth:
+        break;
+    }
+    throw Error("reference_sample: invalid filter");
+}
+
+} // namespace tf

@@ -1,0 +1,60 @@
+#pragma once
+// The CPU reference: every filter written from the Vulkan spec's texel-filtering math in double
+// precision, independently of the GLSL. Goldens come from here and nowhere else.
+#include "core/filter.h"
+#include "core/lookup.h"
+#include "texture/mip.h"
+#include <glm/vec4.hpp>
+
+namespace tf {
+
+// The degenerate-input rules every family shares (docs/API.md, "Degenerate input"); the shaders see float
+// input, so the reference reads any value past float range (|x| > FLT_MAX) as the ±Inf a float holds:
+// - finite_footprint: every gradient component finite and within float range, and every footprint entry
+//   (gradient · level-0 size) within it too (below 2^128 - 2^103, where float rounds to Inf); otherwise
+//   the footprint is non-finite (the coarsest level allowed; aniso one probe; ewa M = I);
+// - finite_uv: u and v finite and within float range, else the result is (0,0,0,0);
+// - reduce_uv: uv moved by whole periods of 2 into [-1, 1] (repeat, mirror; [-1, 1] itself unchanged) or
+//   clamped to [-1, 2] (clamp), before any texel coordinate is formed: the same texels, no overflow.
+bool finite_footprint(const MipChain& chain, const Lookup& lookup);
+bool finite_uv(const Lookup& lookup);
+double reduce_uv(double u, Wrap wrap);
+
+// Integer texel coordinate wrapped into [0, size) (Vulkan repeat, clamp-to-edge, mirrored repeat).
+int wrap_texel(long long i, int size, Wrap wrap);
+
+// Unclamped LOD: log2(rho) + bias, rho = max(|J e_x|, |J e_y|) with J in level-0 texels.
+// Zero gradients give -inf; non-finite gradients give +inf (the coarsest level: safe, never a hang).
+double reference_lod(const MipChain& chain, const Lookup& lookup, const SamplerOptions& options);
+
+// Nearest / bilinear on one level (u_l = u * w_l; linear uses i0 = floor(u_l - 0.5), alpha = frac).
+glm::dvec4 reference_nearest(const Image& level, double u, double v, Wrap wrap);
+glm::dvec4 reference_bilinear(const Image& level, double u, double v, Wrap wrap);
+
+// Trilinear at a given LOD (clamped to [0, levels-1]): the building block of probes and hardware taps.
+glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap);
+
+// The filter families of reference/aniso.cpp, reference/ewa.cpp and reference/sat.cpp (see those files
+// and the matching shaders/texfilter/*.glsl headers for the math). uv is finite when these are called.
+glm::dvec4 reference_brilinear(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+
+// sat averages each channel quantised to 16 bits over the whole texture's range (reference/sat.cpp): that
+// range is found once a batch (reference_render, reference_sample_all), not once a lookup. Throws tf::Error
+// for a NaN or ±Inf texel.
+struct SatLevels {
+    glm::dvec4 lo{0.0};   // per channel: the smallest texel value (quantisation level 0)
+    glm::dvec4 span{0.0}; // largest minus lo, rounded up to float; 0 for a constant channel
+};
+SatLevels reference_sat_levels(const Image& level0);
+glm::dvec4 reference_sat(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                         const SatLevels& levels);
+
+// The full filter. hw-* filters map to the spec formula of the same mode (hw-nearest = nearest, ...);
+// hw-aniso throws tf::Error (its footprint is implementation-defined). Non-finite uv returns (0,0,0,0).
+// `sat`: the texture's SatLevels when the caller has them (null: found here, for this one lookup).
+glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                            const SatLevels* sat = nullptr);
+
+} // namespace tf

@@ -1,0 +1,55 @@
+#include "reference/render.h"
+#include "reference/ground_truth.h"
+#include "core/parallel.h"
+#include <algorithm>
+#include <optional>
+
+namespace tf {
+
+namespace {
+
+// Once a batch, where the filter needs it (the sat filters quantise over the whole texture's range).
+std::optional<SatLevels> sat_levels_for(const MipChain& chain, const SamplerOptions& options)
+{
+    if ((options.filter != Filter::sat && options.filter != Filter::sat_assembly) || chain.levels.empty())
+        return std::nullopt;
+    return reference_sat_levels(chain.levels[0]);
+}
+
+} // namespace
+
+Image reference_render(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options,
+                       const RenderOptions& render)
+{
+    if (options.filter == Filter::ground_truth)
+        return reference_ground_truth(scene, chain, options);
+    int width = scene.kind_size.y, height = scene.kind_size.z;
+    // The stage does not change the math: compute quads are the fragment stage's quads.
+    std::vector<PixelLookup> lookups = reference_lookups(scene, render.gradients, render.rasterize);
+    const std::optional<SatLevels> sat = sat_levels_for(chain, options);
+    Image out = make_image(width, height);
+    parallel_for(size_t(height), [&](size_t y) {
+        for (int x = 0; x < width; ++x) {
+            size_t i = y * size_t(width) + size_t(x);
+            out.texels[i] = lookups[i].hit ? glm::vec4(reference_sample(chain, options, lookups[i].lookup,
+                                                                        sat ? &*sat : nullptr))
+                                           : scene.background;
+        }
+    });
+    return out;
+}
+
+std::vector<glm::dvec4> reference_sample_all(const MipChain& chain, const std::vector<Lookup>& lookups,
+                                             const SamplerOptions& options)
+{
+    std::vector<glm::dvec4> out(lookups.size());
+    const std::optional<SatLevels> sat = sat_levels_for(chain, options);
+    const size_t chunk = 1024;
+    parallel_for((lookups.size() + chunk - 1) / chunk, [&](size_t c) {
+        for (size_t i = c * chunk; i < std::min(lookups.size(), (c + 1) * chunk); ++i)
+            out[i] = reference_sample(chain, options, lookups[i], sat ? &*sat : nullptr);
+    });
+    return out;
+}
+
+} // namespace tf

@@ -1,0 +1,34 @@
+#pragma once
+// The scenes ray-cast on the CPU, in double: what the GPU's ray casts and quad derivatives are checked
+// against (shaders/harness/scene.glsl is the GPU half).
+#include "core/lookup.h"
+#include "scene/scene.h"
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace tf {
+
+struct PixelHit {
+    bool hit = false;
+    glm::dvec2 uv{0.0}; // defined on a miss too: the unbounded surface (triangles: 0 on a miss)
+    int triangle = -1;  // triangles: which one was hit
+};
+
+PixelHit reference_hit(const SceneParams& scene, double px, double py);
+
+// uv where the ray through (px, py) meets the plane of triangle `triangle`, extrapolated beyond its edges:
+// what a rasterizer's helper invocations compute next to a triangle's edge.
+glm::dvec2 reference_triangle_plane_uv(const SceneParams& scene, int triangle, double px, double py);
+
+// The lookups of a whole image, row-major: uv at the pixel centre and its gradients.
+// fine: dx = uv(x|1, y) - uv(x&~1, y), dy = uv(x, y|1) - uv(x, y&~1); coarse: the quad's top-left pair
+// for all four pixels; ray: the exact derivative of uv with respect to the pixel position (central
+// differences in double), which ray differentials approximate to first order. rasterized (mesh): a
+// pixel's quad neighbours take uv on the plane of the pixel's own triangle. Sides must be even.
+struct PixelLookup {
+    bool hit = false;
+    Lookup lookup;
+};
+std::vector<PixelLookup> reference_lookups(const SceneParams& scene, Gradients gradients, bool rasterized);
+
+} // namespace tf

@@ -1,0 +1,70 @@
+#pragma once
+// The test scenes: one description feeds the GPU (uniform buffer, shaders/harness/scene.glsl) and the
+// CPU reference (reference/scene_cast.cpp, in double). Each pixel is ray-cast at its centre (the mesh scene is
+// rasterized on the GPU, ray-cast here); uv derivatives are fine or coarse 2x2 quad differences, as
+// dFdxFine/dFdxCoarse compute them, or ray differentials.
+#include "core/lookup.h"
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace tf {
+
+enum class SceneKind { plane, tunnel, zoom, minify, slanted, triangles, mesh };
+
+// How uv gradients are made: fine or coarse 2x2 quad differences, or ray differentials (ray-cast scenes).
+enum class Gradients { fine, coarse, ray };
+Gradients parse_gradients(const std::string& name); // "fine", "coarse", "ray"
+std::string to_string(Gradients gradients);
+
+// Which pipeline renders: a fragment shader (or, for mesh, the raster pipeline) or a compute shader
+// whose invocations form 2x2 quads through subgroup quad operations.
+enum class Stage { fragment, compute };
+Stage parse_stage(const std::string& name);
+std::string to_string(Stage stage);
+
+struct RenderOptions {
+    Stage stage = Stage::fragment;
+    Gradients gradients = Gradients::fine;
+    bool rasterize = false; // the mesh scene: triangles through the raster pipeline
+};
+
+// The render options a scene allows: mesh is rasterized (fragment stage, quad derivatives only);
+// ray differentials need a ray-cast scene. Throws tf::Error naming the conflict.
+RenderOptions make_render_options(SceneKind kind, Stage stage, Gradients gradients);
+
+SceneKind parse_scene(const std::string& name); // throws tf::Error listing the valid names
+std::string to_string(SceneKind kind);
+const std::vector<SceneKind>& all_scenes();
+
+// std140 layout, mirrored by tf_SceneParams in scene.glsl.
+struct SceneParams {
+    glm::vec4 origin;
+    glm::vec4 forward;
+    glm::vec4 right;      // scaled by tan(fov_x / 2)
+    glm::vec4 up;         // scaled by tan(fov_y / 2)
+    glm::vec4 p0;         // plane point, or cylinder (radius, length, u repeats, v per world unit)
+    glm::vec4 axis_u;
+    glm::vec4 axis_v;
+    glm::vec4 extent;     // xy half extents in uv (hit test), zw uv offset
+    glm::vec4 background;
+    glm::ivec4 kind_size; // TF_SCENE_*, width, height, triangle count
+    glm::vec4 positions[3 * 16]; // triangles: xyz of each corner (TF_MAX_TRIANGLES)
+    glm::vec4 uvs[3 * 16];       // triangles: uv of each corner in xy
+};
+
+// zoom and minify scale the quad so that one texel of a texture_width-wide texture spans 8 pixels
+// (zoom) or 1/8 pixel (minify) at the image centre.
+SceneParams make_scene(SceneKind kind, int width, int height, int texture_width);
+// The minify scene at another scale: texels_per_pixel level-0 texels across each pixel (the benchmark's
+// footprint-size sweep).
+SceneParams make_minified_scene(int width, int height, int texture_width, double texels_per_pixel);
+
+// The benchmark's camera path: frame f of a glide across the surface, which slides the scene's uv by
+// f * camera_step_texels level-0 texels (planes: the camera moves parallel to the plane; tunnel: along
+// and around the axis; triangles and mesh: the texture slides across them). Sub-texel steps in both
+// axes, so a filter that snaps to texels or levels shows it as flicker.
+constexpr glm::dvec2 camera_step_texels{0.37, 0.23};
+SceneParams scene_at_frame(const SceneParams& scene, int frame, int texture_width);
+
+} // namespace tf

@@ -1,0 +1,25 @@
+#pragma once
+// The Vulkan backend: uploads a MIP chain, renders a scene through the fragment harness, runs point
+// lookups through the compute harness. Results come back as RGBA32F, linear.
+#include "core/filter.h"
+#include "core/lookup_stats.h"
+#include "core/lookup.h"
+#include "scene/scene.h"
+#include "vulkan/context.h"
+#include "vulkan/upload.h"
+#include <glm/vec4.hpp>
+#include <vector>
+
+namespace tf {
+
+// Renders the scene: ray-cast in a fragment shader (full-screen triangle) or a compute shader (2x2 quads
+// from subgroup quad operations), or, with render.rasterize, its triangles through the raster pipeline.
+Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
+                 const SamplerOptions& options, const RenderOptions& render);
+
+std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture& texture,
+                                  const std::vector<Lookup>& lookups, const SamplerOptions& options,
+                                  std::vector<LookupStats>* stats = nullptr);
+
+
+} // namespace tf

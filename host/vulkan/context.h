@@ -1,0 +1,85 @@
+#pragma once
+// Headless Vulkan: instance (optionally with validation), device listing and selection, one queue.
+#include "vulkan/loader.h"
+#include <string>
+#include <vector>
+
+namespace tf {
+
+struct DeviceInfo {
+    int index = 0;
+    std::string name;
+    std::string type;        // "cpu", "discrete", "integrated", ...
+    std::string driver_name; // VkPhysicalDeviceDriverProperties
+    std::string driver_info;
+    VkDriverId driver_id = VkDriverId(0);
+    uint32_t api_version = 0;
+    uint32_t driver_version = 0;
+    uint32_t sub_texel_precision_bits = 0;
+    uint32_t mipmap_precision_bits = 0;
+    float max_sampler_anisotropy = 0;
+    float max_sampler_lod_bias = 0;
+    uint32_t max_image_dimension_2d = 0;
+    uint32_t subgroup_size = 0;
+    bool quad_ops_fragment = false;
+    bool quad_ops_compute = false;
+    bool sampler_anisotropy = false; // feature
+    float timestamp_period_ns = 0;     // nanoseconds a timestamp tick
+    uint32_t timestamp_valid_bits = 0; // of the queue texfilter uses; 0: no timestamps (no bench timings)
+    uint64_t max_memory_allocation_size = 0; // VkPhysicalDeviceMaintenance3Properties: the largest one allocation
+    uint64_t device_local_heap_size = 0;     // the largest DEVICE_LOCAL heap, where textures go
+    uint32_t device_local_heap_index = 0;
+    bool usable = false;
+    std::string why_not_usable; // empty when usable
+};
+
+struct ContextOptions {
+    std::string device; // "" = default (lavapipe first), else an index or part of a name
+    bool validate = false;
+};
+
+struct VulkanContext {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    DeviceInfo info;
+    VkDevice device = VK_NULL_HANDLE;
+    uint32_t queue_family = 0;
+    VkQueue queue = VK_NULL_HANDLE;
+    VkCommandPool command_pool = VK_NULL_HANDLE;
+};
+
+// Throws tf::Error when a Vulkan call fails, naming the call and the result.
+void vk_check(VkResult result, const char* what);
+#define TF_VK(call) ::tf::vk_check((call), #call)
+
+// Instance only (for listing devices). Throws tf::Error with one sentence if there is no loader/driver.
+VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger);
+std::vector<DeviceInfo> list_devices(VkInstance instance);
+// The device `request` names (see ContextOptions::device), or the default; throws with a per-device
+// account of why when nothing fits.
+int select_device(const std::vector<DeviceInfo>& devices, const std::string& request);
+
+VulkanContext create_context(const ContextOptions& options);
+void destroy_context(VulkanContext& context);
+
+// Validation messages reported so far (warnings and errors). Tests expect zero.
+int validation_message_count();
+
+// Records with `record`, submits, and waits.
+template <typename Record>
+void submit_and_wait(const VulkanContext& context, Record&& record);
+VkCommandBuffer begin_one_shot(const VulkanContext& context);
+void end_one_shot(const VulkanContext& context, VkCommandBuffer command_buffer);
+
+template <typename Record>
+void submit_and_wait(const VulkanContext& context, Record&& record)
+{
+    VkCommandBuffer command_buffer = begin_one_shot(context);
+    record(command_buffer);
+    end_one_shot(context, command_buffer);
+}
+
+std::string version_string(uint32_t version);
+
+} // namespace tf

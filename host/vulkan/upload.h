@@ -1,0 +1,43 @@
+#pragma once
+// Textures onto the device: the MIP chain (RGBA32F, every level) and, for the sat filters, the two
+// summed-area table images, each a sampled image in device-local memory.
+#include "core/filter.h"
+#include "texture/mip.h"
+#include "vulkan/context.h"
+#include <glm/vec4.hpp>
+
+namespace tf {
+
+struct GpuImage {
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+};
+
+struct GpuTexture {
+    GpuImage chain;              // RGBA32F, every MIP level
+    GpuImage sat_low, sat_high;  // the summed-area table (1x1 zeros unless asked for)
+    glm::vec4 sat_offset{0.0f}, sat_scale{0.0f}; // SatTable::offset, ::scale (zeros without a table)
+    int width = 0, height = 0, levels = 0;
+};
+
+// with_sat: also build and upload the summed-area table (sat, sat-assembly filters).
+GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat);
+void destroy_texture(const VulkanContext& context, GpuTexture& texture);
+
+// Uploads the texture, runs body(texture) and destroys it again, also when body throws.
+template <typename Body>
+auto with_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, Body&& body)
+{
+    GpuTexture texture = upload_texture(context, chain, with_sat);
+    struct Release {
+        const VulkanContext& context;
+        GpuTexture& texture;
+        ~Release() { destroy_texture(context, texture); }
+    } release{context, texture};
+    return body(texture);
+}
+
+bool needs_sat(Filter filter);
+
+} // namespace tf
