@@ -132,7 +132,9 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
     run.device = context.info;
     run.date = today();
     run.config = config;
-    const int texture_width = chain.levels[0].width;
+    run.texture_width = chain.levels[0].width;
+    run.texture_height = chain.levels[0].height;
+    const int texture_width = run.texture_width;
     with_texture(context, chain, true, [&](const GpuTexture& texture) {
         for (SceneKind kind : config.scenes) {
             SceneParams scene = make_scene(kind, config.width, config.height, texture_width);

@@ -66,6 +66,7 @@ struct BenchRun {
     DeviceInfo device;
     std::string date; // YYYY-MM-DD, local
     BenchConfig config;
+    int texture_width = 0, texture_height = 0; // level 0 of the texture benchmarked (procedural or file)
     std::map<SceneKind, TimeSummary> baseline;
     std::map<SceneKind, std::string> truth_box, truth_gaussian; // frame-0 images, relative paths
     std::vector<BenchResult> results;
