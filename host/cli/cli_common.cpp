@@ -15,26 +15,41 @@ std::vector<FlagSpec> texture_flags()
                                         "memory); checked from the file's header before decoding"}};
 }
 
-std::vector<FlagSpec> sampler_flags()
+std::vector<FlagSpec> sampler_flags(SamplerFlags which)
 {
-    return {{"--filter", "F", "nearest, bilinear, trilinear, nearest-mip, bilinear-mip, brilinear, aniso, ewa, "
-                              "sat, sat-assembly, hw-nearest, hw-bilinear, hw-trilinear, hw-aniso; render only: "
-                              "ground-truth (supersampled), none (no texture: the benchmark's baseline)"},
-            {"--wrap", "W", "repeat (default), clamp or mirror"},
-            {"--aniso", "N", "hw-aniso: maximum anisotropy, 1..16 (default 16)"},
-            {"--band", "B", "brilinear: trilinear band around each level transition, 0..1 (default 0.25)"},
-            {"--probes", "N", "aniso: most probes along the major axis, 1..16 (default 16)"},
-            {"--aniso-shape", "S", "aniso: gpu (Vulkan's model, default) or feline (ellipse axis, Gaussian weights)"},
-            {"--taps", "T", "aniso, ewa: manual (texelFetch, default) or hardware (bilinear/trilinear lookups)"},
-            {"--alpha", "A", "ewa: Gaussian exp(-A r^2), 0.05..16 (default 2)"},
-            {"--max-aniso", "E", "ewa: largest major/minor axis ratio, 1..64 (default 16)"},
-            {"--boxes", "K", "sat-assembly: boxes along the major axis, 1..16 (default 4)"},
-            {"--pixel-filter", "P", "ground-truth: box (over the pixel, default) or gaussian (sigma 0.5 px)"},
-            {"--spp", "N", "ground-truth: samples a pixel, a square number 1..4096 (default 256)"},
-            {"--lod-bias", "B", "added to the LOD (default 0)"},
-            {"--lod-min", "L", "lowest LOD used (default 0)"},
-            {"--lod-max", "L", "highest LOD used (default: the last level)"},
-            {"--backend", "B", "vulkan (default) or reference (the CPU reference)"}};
+    const bool scenes = which == SamplerFlags::scenes;
+    std::vector<FlagSpec> flags = {
+        {"--filter", "F",
+         std::string("nearest, bilinear, trilinear, nearest-mip, bilinear-mip, brilinear, aniso, ewa, sat, sat-assembly, "
+                     "hw-nearest, hw-bilinear, hw-trilinear, hw-aniso") +
+             (scenes ? ", ground-truth (supersampled) or none (no texture: the benchmark's baseline)" : "")},
+        {"--wrap", "W", "repeat (default), clamp or mirror"},
+        {"--aniso", "N", "hw-aniso: maximum anisotropy, 1..16 (default 16)"},
+        {"--band", "B", "brilinear: trilinear band around each level transition, 0..1 (default 0.25)"},
+        {"--probes", "N", "aniso: most probes along the major axis, 1..16 (default 16)"},
+        {"--aniso-shape", "S", "aniso: gpu (Vulkan's model, default) or feline (ellipse axis, Gaussian weights)"},
+        {"--taps", "T", "aniso, ewa: manual (texelFetch, default) or hardware (bilinear/trilinear lookups)"},
+        {"--alpha", "A", "ewa: Gaussian exp(-A r^2), 0.05..16 (default 2)"},
+        {"--max-aniso", "E", "ewa: largest major/minor axis ratio, 1..64 (default 16)"},
+        {"--boxes", "K", "sat-assembly: boxes along the major axis, 1..16 (default 4)"}};
+    if (scenes) {
+        flags.push_back({"--pixel-filter", "P", "ground-truth: box (over the pixel, default) or gaussian (sigma 0.5 px)"});
+        flags.push_back({"--spp", "N", "ground-truth: samples a pixel, a square number 1..4096 (default 256)"});
+    }
+    flags.insert(flags.end(), {{"--lod-bias", "B", "added to the LOD (default 0)"},
+                               {"--lod-min", "L", "lowest LOD used (default 0)"},
+                               {"--lod-max", "L", "highest LOD used (default: the last level)"},
+                               {"--backend", "B", "vulkan (default) or reference (the CPU reference)"}});
+    return flags;
+}
+
+std::string scene_names()
+{
+    std::string names;
+    const std::vector<SceneKind>& scenes = all_scenes();
+    for (size_t i = 0; i < scenes.size(); ++i)
+        names += (i == 0 ? "" : i + 1 == scenes.size() ? " or " : ", ") + to_string(scenes[i]);
+    return names;
 }
 
 std::vector<FlagSpec> device_flags()

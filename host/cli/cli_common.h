@@ -3,6 +3,7 @@
 #include "cli/args.h"
 #include "texture/error.h"
 #include "core/filter.h"
+#include "scene/scene.h"
 #include "io/texture_source.h"
 #include "vulkan/context.h"
 #include <memory>
@@ -13,7 +14,12 @@ namespace tf {
 enum class Backend { vulkan, reference };
 
 std::vector<FlagSpec> texture_flags();
-std::vector<FlagSpec> sampler_flags();
+// The filter flags: for one lookup (sample) or, with the ground-truth and none filters and their flags, for
+// a scene's pixels (render, golden).
+enum class SamplerFlags { lookups, scenes };
+std::vector<FlagSpec> sampler_flags(SamplerFlags which);
+// "plane, tunnel, ... or mesh": every scene, for --scene's help.
+std::string scene_names();
 std::vector<FlagSpec> device_flags();
 std::vector<FlagSpec> join(std::vector<std::vector<FlagSpec>> groups);
 

@@ -13,7 +13,10 @@
 #include <filesystem>
 
 #ifndef TEXFILTER_SOURCE_DIR
-#define TEXFILTER_SOURCE_DIR "."
+#define TEXFILTER_SOURCE_DIR ""
+#endif
+#ifndef TEXFILTER_BUILD_DIR
+#define TEXFILTER_BUILD_DIR ""
 #endif
 
 namespace tf {
@@ -21,6 +24,19 @@ namespace tf {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The source tree's golden/, but only for the binary the build tree made: an installed (or copied) texfilter
+// must be told --golden-dir, or `golden --update` would rewrite whatever checkout it was built from.
+std::string default_golden_dir()
+{
+    std::error_code ec;
+    fs::path exe = fs::canonical("/proc/self/exe", ec);
+    fs::path build = std::string(TEXFILTER_BUILD_DIR).empty() ? fs::path() : fs::weakly_canonical(TEXFILTER_BUILD_DIR, ec);
+    if (ec || build.empty() || exe.parent_path() != build || std::string(TEXFILTER_SOURCE_DIR).empty())
+        throw Error("golden: missing required flag --golden-dir (this texfilter is not the build tree's, so it has "
+                    "no source tree's golden/ to default to)");
+    return (fs::path(TEXFILTER_SOURCE_DIR) / "golden").string();
+}
 
 struct GoldenRun {
     std::string golden_dir, out_dir;
@@ -95,17 +111,18 @@ int run_golden(const std::vector<std::string>& argv)
 {
     std::vector<FlagSpec> specs = join({{{"--update", "", "regenerate the golden images from the CPU reference"},
                                          {"--case", "NAME", "only this case (repeat with commas: a,b)"},
-                                         {"--golden-dir", "DIR", "where manifest.txt and the images are (default: "
-                                                                 "the source tree's golden/)"},
+                                         {"--golden-dir", "DIR", "where manifest.txt and the images are (default, for the build "
+                                                                 "tree's binary only: the source tree's golden/; an "
+                                                                 "installed texfilter requires it)"},
                                          {"--out", "DIR", "where failures and report.html go (default golden-out)"}},
                                         device_flags()});
     Args args = parse_args("golden", argv, specs, 0);
     if (args.has("--help")) {
-        std::fputs(format_help("texfilter golden [--update] [--case NAME] [--out DIR]", specs).c_str(), stdout);
+        std::fputs(format_help("texfilter golden [--golden-dir DIR] [--update] [--case NAME] [--out DIR]", specs).c_str(), stdout);
         return 0;
     }
     GoldenRun run;
-    run.golden_dir = args.get("--golden-dir", std::string(TEXFILTER_SOURCE_DIR) + "/golden");
+    run.golden_dir = args.has("--golden-dir") ? args.get("--golden-dir", "") : default_golden_dir();
     run.out_dir = args.get("--out", "golden-out");
     std::vector<GoldenCase> all = read_manifest(run.golden_dir + "/manifest.txt");
     if (args.has("--case")) {

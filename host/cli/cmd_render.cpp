@@ -14,9 +14,9 @@ namespace tf {
 int run_render(const std::vector<std::string>& argv)
 {
     std::vector<FlagSpec> specs = join(
-        {{{"--scene", "S", "plane, tunnel, zoom, minify or slanted"}},
+        {{{"--scene", "S", scene_names()}},
          texture_flags(),
-         sampler_flags(),
+         sampler_flags(SamplerFlags::scenes),
          {{"--size", "WxH", "image size, even sides (default 256x256)"},
           {"--stage", "S", "fragment (default) or compute (2x2 quads from subgroup quad operations)"},
           {"--derivatives", "D", "fine (default), coarse (one pair a quad) or ray (ray differentials)"},

@@ -37,7 +37,7 @@ void print_stats(const std::vector<LookupStats>& stats)
 int run_sample(const std::vector<std::string>& argv)
 {
     std::vector<FlagSpec> specs = join({texture_flags(),
-                                        sampler_flags(),
+                                        sampler_flags(SamplerFlags::lookups),
                                         {{"--lookups", "IN.csv", "header u,v,dudx,dvdx,dudy,dvdy; one lookup a row"},
                                          {"-o", "OUT.csv", "r,g,b,a in linear light, one row per lookup"},
                                          {"--stats", "", "vulkan: add columns fetches,hw_lookups (counted in the "
@@ -46,7 +46,7 @@ int run_sample(const std::vector<std::string>& argv)
     Args args = parse_args("sample", argv, specs, 0);
     if (args.has("--help")) {
         std::fputs(format_help("texfilter sample --texture T|PATH --filter F --lookups IN.csv "
-                               "[--backend vulkan|reference] -o OUT.csv",
+                               "[--backend vulkan|reference] [--stats] -o OUT.csv",
                                specs)
                        .c_str(),
                    stdout);

@@ -22,7 +22,7 @@ std::vector<GoldenCase> parse_manifest(std::istream& in, const std::string& path
                                                {"--stage", "S", ""}, {"--derivatives", "D", ""},
                                                {"--failpercent", "P", ""}, {"--hardfail", "H", ""}},
                                               texture_flags(),
-                                              sampler_flags()});
+                                              sampler_flags(SamplerFlags::scenes)});
     std::vector<GoldenCase> cases;
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {
