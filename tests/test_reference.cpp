@@ -317,6 +317,22 @@ void test_level_selection() {
     opt.filter = Filter::nearest_mip;
     CHECK_NEAR(tf::reference_sample(chain, opt, lookup_at(0.3, 0.6, INFINITY)), colour(4), kEps);
 
+    // NaN in the LOD clamps, one rule for every family that picks levels (docs/API.md, "Degenerate input"):
+    // a NaN lambda counts as +inf (the coarsest level lod_max allows), a NaN lod_min or lod_max as no bound.
+    for (Filter f : {Filter::nearest_mip, Filter::trilinear, Filter::brilinear, Filter::aniso, Filter::ewa}) {
+        opt.filter = f;
+        opt.lod_bias = NAN;
+        opt.lod_max = 2.0f;
+        CHECK_NEAR(tf::reference_sample(chain, opt, one), colour(2), kEps);
+        opt.lod_bias = 10.0f;
+        opt.lod_max = NAN;
+        CHECK_NEAR(tf::reference_sample(chain, opt, one), colour(4), kEps);
+        opt.lod_bias = -10.0f;
+        opt.lod_min = NAN;
+        CHECK_NEAR(tf::reference_sample(chain, opt, one), colour(0), kEps);
+        opt.lod_bias = 0.0f, opt.lod_min = 0.0f, opt.lod_max = 1000.0f;
+    }
+
     opt.filter = Filter::hw_aniso;
     CHECK_THROWS(tf::reference_sample(chain, opt, one));
 }

@@ -1,39 +1,42 @@
 #pragma once
-// Filter and wrap-mode names: one enum each, with parse and to-string (the CLI's vocabulary).
+// Filter and wrap-mode names: one enum each, with parse and to-string (the CLI's vocabulary). The values
+// are the ids the harness shaders compare with (shaders/harness/config.h; checked in
+// scene/shader_interface.h), so the order here is free.
+#include "harness/config.h"
 #include <string>
 #include <vector>
 
 namespace tf {
 
 enum class Filter {
-    nearest,      // level 0 only
-    bilinear,     // level 0 only
-    trilinear,    // two levels blended by frac(lambda)
-    nearest_mip,  // one level chosen by LOD (Vulkan mipmapMode NEAREST), nearest texel
-    bilinear_mip, // one level chosen by LOD, bilinear
-    hw_nearest,   // hardware sampler via textureGrad, level 0 only
-    hw_bilinear,
-    hw_trilinear,
-    hw_aniso,     // hardware anisotropic, maxAnisotropy = --aniso
-    brilinear,    // trilinear only in a band around level transitions (--band)
-    aniso,        // N trilinear probes along the major axis (--probes, --aniso-shape, --taps)
-    ewa,          // elliptical weighted average, Gaussian (--alpha, --max-aniso, --taps)
-    sat,          // summed-area table: box over the footprint's bounding box
-    sat_assembly, // summed-area table: K boxes along the major axis (--boxes)
+    nearest = HARNESS_FILTER_NEAREST,         // level 0 only
+    bilinear = HARNESS_FILTER_BILINEAR,       // level 0 only
+    trilinear = HARNESS_FILTER_TRILINEAR,     // two levels blended by frac(lambda)
+    nearest_mip = HARNESS_FILTER_NEAREST_MIP, // one level chosen by LOD (Vulkan mipmapMode NEAREST), nearest texel
+    bilinear_mip = HARNESS_FILTER_BILINEAR_MIP, // one level chosen by LOD, bilinear
+    hw_nearest = HARNESS_FILTER_HW_NEAREST,     // hardware sampler via textureGrad, level 0 only
+    hw_bilinear = HARNESS_FILTER_HW_BILINEAR,
+    hw_trilinear = HARNESS_FILTER_HW_TRILINEAR,
+    hw_aniso = HARNESS_FILTER_HW_ANISO,   // hardware anisotropic, maxAnisotropy = --aniso
+    brilinear = HARNESS_FILTER_BRILINEAR, // trilinear only in a band around level transitions (--band)
+    aniso = HARNESS_FILTER_ANISO,         // N trilinear probes along the major axis (--probes, --aniso-shape, --taps)
+    ewa = HARNESS_FILTER_EWA,             // elliptical weighted average, Gaussian (--alpha, --max-aniso, --taps)
+    sat = HARNESS_FILTER_SAT,             // summed-area table: box over the footprint's bounding box
+    sat_assembly = HARNESS_FILTER_SAT_ASSEMBLY, // summed-area table: K boxes along the major axis (--boxes)
     // Scene-level, not lookup filters (render only):
-    ground_truth, // the pixel's integral of the level-0 bilinear texture under a pixel filter (--spp)
-    none,         // no texture at all: fract(uv) as colour, the benchmark's baseline cost
+    ground_truth = HARNESS_FILTER_GROUND_TRUTH, // the pixel's integral of the level-0 bilinear texture (--spp)
+    none = HARNESS_FILTER_NONE, // no texture at all: fract(uv) as colour, the benchmark's baseline cost
 };
 
-enum class Wrap { repeat, clamp, mirror };
+enum class Wrap { repeat = HARNESS_WRAP_REPEAT, clamp = HARNESS_WRAP_CLAMP, mirror = HARNESS_WRAP_MIRROR };
 
 // ground-truth: the pixel filter it integrates under, a box over the pixel or a Gaussian (sigma 0.5 px).
-enum class PixelFilter { box, gaussian };
+enum class PixelFilter { box = HARNESS_PIXEL_FILTER_BOX, gaussian = HARNESS_PIXEL_FILTER_GAUSSIAN };
 
 // aniso: where probes go and how they are weighted (see shaders/texfilter/aniso.glsl).
-enum class AnisoShape { gpu, feline };
+enum class AnisoShape { gpu = HARNESS_ANISO_GPU, feline = HARNESS_ANISO_FELINE };
 // Multi-tap filters: taps from texelFetch (exact everywhere) or hardware bilinear/trilinear lookups.
-enum class Taps { manual, hardware };
+enum class Taps { manual = HARNESS_TAPS_MANUAL, hardware = HARNESS_TAPS_HARDWARE };
 
 Filter parse_filter(const std::string& name); // throws tf::Error listing the valid names
 std::string to_string(Filter filter);
@@ -52,8 +55,8 @@ std::string to_string(PixelFilter filter);
 
 // ground-truth: the Gaussian pixel filter's standard deviation in pixels, and the largest sample grid side
 // (samples per pixel = side^2, so at most 4096).
-constexpr double ground_truth_sigma = 0.5;
-constexpr int max_ground_truth_side = 64;
+constexpr double ground_truth_sigma = HARNESS_GROUND_TRUTH_SIGMA;
+constexpr int max_ground_truth_side = HARNESS_MAX_TRUTH_SIDE;
 
 // Everything that selects how one lookup is filtered. Matches the GLSL side (shaders/harness/config.h).
 struct SamplerOptions {

@@ -15,14 +15,6 @@ namespace {
 
 constexpr int kMaxProbes = 16;
 
-// The sampler's LOD clamps: [lod_min, lod_max], then the existing levels [0, levels-1].
-// +inf (non-finite gradients) ends on the coarsest allowed level, -inf (zero gradients) on the finest.
-double clamp_lod(const MipChain& chain, double d, const SamplerOptions& options) {
-    d = std::min(std::max(d, double(options.lod_min)), double(options.lod_max));
-    if (std::isnan(d)) d = INFINITY;
-    return std::clamp(d, 0.0, double(chain.levels.size() - 1));
-}
-
 // N = min(ceil(ratio - 1/64), max_n), at least 1; ratio = +inf (zero minor axis) gives max_n. The 1/64 slack
 // keeps isotropic footprints at one probe whatever float noise their derivatives carry.
 constexpr double ratio_slack = 1.0 / 64.0;
@@ -88,12 +80,10 @@ glm::dvec4 reference_brilinear(const MipChain& chain, const SamplerOptions& opti
     // (Vulkan mipmapMode NEAREST, ceil(d + 1/2) - 1: f = 1/2 stays on the finer level).
     const double band = std::min(double(options.band), 1.0);
     const double weight = band > 0 ? std::clamp((f - (1 - band) / 2) / band, 0.0, 1.0) : (f > 0.5 ? 1.0 : 0.0);
-    const Image& fine = chain.levels[size_t(lo)];
-    if (weight == 0) return reference_bilinear(fine, lookup.u, lookup.v, options.wrap);
-    const Image& coarse = chain.levels[size_t(lo + 1)]; // weight > 0 needs f > 0, so lo < levels-1
-    if (weight == 1) return reference_bilinear(coarse, lookup.u, lookup.v, options.wrap);
-    return (1 - weight) * reference_bilinear(fine, lookup.u, lookup.v, options.wrap) +
-           weight * reference_bilinear(coarse, lookup.u, lookup.v, options.wrap);
+    // weight > 0 needs f > 0, so lo < levels-1 wherever level lo + 1 is read.
+    return blend_levels(lo, weight, [&](int level) {
+        return reference_bilinear(chain.levels[size_t(level)], lookup.u, lookup.v, options.wrap);
+    });
 }
 
 glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {

@@ -75,13 +75,6 @@ Footprint footprint(const MipChain& chain, const SamplerOptions& options, const 
     return fp;
 }
 
-// LOD after the sampler's clamps ([lod_min, lod_max], then the existing levels); NaN -> coarsest.
-double clamp_lambda(const MipChain& chain, const SamplerOptions& options, double lambda) {
-    lambda = std::min(std::max(lambda, double(options.lod_min)), double(options.lod_max));
-    if (std::isnan(lambda)) lambda = INFINITY;
-    return std::clamp(lambda, 0.0, double(chain.levels.size() - 1));
-}
-
 // The ellipse on one level. The centre uv·size is split into an integer texel `base` and a fraction, so
 // that texel offsets stay exact however far uv is from [0, 1]; for repeat and mirror, base moves by a
 // multiple of 2·size (both repeat every 2·size texels, and block parity is kept), for clamp it moves
@@ -226,13 +219,10 @@ glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, c
     const double alpha = options.alpha >= 0.0f ? std::min(double(options.alpha), kMaxAlpha) : 0.0;
     const bool hardware = options.taps == Taps::hardware;
     const Footprint fp = footprint(chain, options, lookup);
-    const double lambda = clamp_lambda(chain, options, fp.lambda);
+    const double lambda = clamp_lod(chain, fp.lambda, options);
     const int lo = int(std::floor(lambda));
-    const double f = lambda - lo;
-    const glm::dvec4 fine = ewa_level(chain, lo, fp, lookup, alpha, options.wrap, hardware);
-    if (f == 0.0) return fine;
-    const glm::dvec4 coarse = ewa_level(chain, lo + 1, fp, lookup, alpha, options.wrap, hardware);
-    return (1.0 - f) * fine + f * coarse;
+    return blend_levels(lo, lambda - lo,
+                        [&](int level) { return ewa_level(chain, level, fp, lookup, alpha, options.wrap, hardware); });
 }
 
 } // namespace tf

@@ -26,16 +26,15 @@ const Image& level_at(const MipChain& chain, int l) {
     return chain.levels[size_t(std::clamp(l, 0, last))];
 }
 
-// The LOD after the sampler's clamps: [lod_min, lod_max], then [0, levels-1].
-double clamped_lod(const MipChain& chain, const Lookup& lookup, const SamplerOptions& options) {
-    double d = reference_lod(chain, lookup, options);
-    d = std::min(std::max(d, double(options.lod_min)), double(options.lod_max));
-    if (std::isnan(d)) d = INFINITY; // e.g. -inf + inf bias: fall back to the coarsest level, like non-finite input
-    const double top = double(chain.levels.size() - 1);
-    return std::min(std::max(d, 0.0), top);
-}
-
 } // namespace
+
+double clamp_lod(const MipChain& chain, double lambda, const SamplerOptions& options) {
+    if (chain.levels.empty()) throw Error("clamp_lod: empty MIP chain");
+    double d = std::isnan(lambda) ? INFINITY : lambda; // e.g. -inf + inf bias: blur fully, like non-finite input
+    if (!std::isnan(options.lod_min)) d = std::max(d, double(options.lod_min));
+    if (!std::isnan(options.lod_max)) d = std::min(d, double(options.lod_max));
+    return std::clamp(d, 0.0, double(chain.levels.size() - 1)); // d is not NaN here
+}
 
 bool finite_uv(const Lookup& l) {
     const double fmax = std::numeric_limits<float>::max();
@@ -108,11 +107,8 @@ glm::dvec4 reference_bilinear(const Image& level, double u, double v, Wrap wrap)
 glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap) {
     const double d = std::clamp(lod, 0.0, double(chain.levels.size() - 1));
     const int lo = int(std::floor(d));
-    const double f = d - lo;
-    const glm::dvec4 low = reference_bilinear(level_at(chain, lo), u, v, wrap);
-    if (f == 0.0 || lo + 1 >= int(chain.levels.size())) return low;
-    const glm::dvec4 high = reference_bilinear(level_at(chain, lo + 1), u, v, wrap);
-    return (1 - f) * low + f * high;
+    const double f = d - lo; // 0 on the last level: level lo + 1 is never read
+    return blend_levels(lo, f, [&](int level) { return reference_bilinear(level_at(chain, level), u, v, wrap); });
 }
 
 glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
@@ -137,14 +133,15 @@ glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options
     case Filter::nearest_mip:
     case Filter::bilinear_mip: {
         // Vulkan mipmapMode NEAREST: level = ceil(d + 1/2) - 1, so d = 0.5 still picks level 0.
-        const double d = clamped_lod(chain, reduced, options);
+        const double d = clamp_lod(chain, reference_lod(chain, reduced, options), options);
         const Image& level = level_at(chain, int(std::ceil(d + 0.5)) - 1);
         return options.filter == Filter::nearest_mip ? reference_nearest(level, reduced.u, reduced.v, options.wrap)
                                                      : reference_bilinear(level, reduced.u, reduced.v, options.wrap);
     }
     case Filter::trilinear:
     case Filter::hw_trilinear:
-        return reference_trilinear_at(chain, clamped_lod(chain, reduced, options), reduced.u, reduced.v, options.wrap);
+        return reference_trilinear_at(chain, clamp_lod(chain, reference_lod(chain, reduced, options), options),
+                                      reduced.u, reduced.v, options.wrap);
     case Filter::brilinear:
         return reference_brilinear(chain, options, reduced);
     case Filter::aniso:

@@ -31,6 +31,22 @@ double reference_lod(const MipChain& chain, const Lookup& lookup, const SamplerO
 glm::dvec4 reference_nearest(const Image& level, double u, double v, Wrap wrap);
 glm::dvec4 reference_bilinear(const Image& level, double u, double v, Wrap wrap);
 
+// The LOD clamps every family shares: lambda to [lod_min, lod_max], then to the levels [0, levels-1]. NaN
+// follows the shaders' rule (tfi_clamp_lod in shaders/texfilter/lod.glsl; docs/API.md, "Degenerate
+// input"): a NaN lambda counts as +inf (blur fully: the coarsest level the clamps allow), a NaN bound as
+// no bound. -inf (zero gradients) ends on the finest level allowed.
+double clamp_lod(const MipChain& chain, double lambda, const SamplerOptions& options);
+
+// The two-level blend every family that blends MIP levels shares (trilinear, brilinear, aniso probes, ewa):
+// (1 - w) * level_value(lo) + w * level_value(lo + 1), w the coarser level's weight in [0, 1]; a level
+// that weighs 0 is not evaluated (so lo + 1 may be past the last level when w == 0).
+template <typename LevelValue>
+glm::dvec4 blend_levels(int lo, double w, LevelValue level_value) {
+    if (w == 0.0) return level_value(lo);
+    if (w == 1.0) return level_value(lo + 1);
+    return (1.0 - w) * level_value(lo) + w * level_value(lo + 1);
+}
+
 // Trilinear at a given LOD (clamped to [0, levels-1]): the building block of probes and hardware taps.
 glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap);
 

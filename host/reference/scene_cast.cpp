@@ -59,11 +59,11 @@ PixelHit reference_hit(const SceneParams& scene, double px, double py)
     glm::dvec3 d = camera_ray(scene, px, py);
     glm::dvec2 offset(scene.extent.z, scene.extent.w);
     PixelHit result;
-    if (scene.kind_size.x == TF_SCENE_TRIANGLES) { // nearest hit inside a triangle; uv 0 on a miss
+    if (scene.kind_size.x == HARNESS_SCENE_TRIANGLES) { // nearest hit inside a triangle; uv 0 on a miss
         double best = INFINITY;
         for (int i = 0; i < scene.kind_size.w; ++i) {
             double b1, b2, t;
-            const double slack = TF_EDGE_SLACK; // as the GPU: no holes along shared edges
+            const double slack = HARNESS_EDGE_SLACK; // as the GPU: no holes along shared edges
             if (triangle_plane_hit(scene, i, o, d, b1, b2, t) && t > 0.0 && t < best && b1 >= -slack &&
                 b2 >= -slack && b1 + b2 <= 1.0 + slack) {
                 best = t;
@@ -72,7 +72,7 @@ PixelHit reference_hit(const SceneParams& scene, double px, double py)
         }
         return result;
     }
-    if (scene.kind_size.x == TF_SCENE_CYLINDER) {
+    if (scene.kind_size.x == HARNESS_SCENE_CYLINDER) {
         double radius = scene.p0.x, length = scene.p0.y;
         double a = d.x * d.x + d.y * d.y, b = 2.0 * (o.x * d.x + o.y * d.y);
         double c = o.x * o.x + o.y * o.y - radius * radius;
@@ -104,7 +104,7 @@ std::vector<PixelLookup> reference_lookups(const SceneParams& scene, Gradients g
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
             hits[size_t(y) * width + x] = reference_hit(scene, x + 0.5, y + 0.5);
-    bool triangles = scene.kind_size.x == TF_SCENE_TRIANGLES;
+    bool triangles = scene.kind_size.x == HARNESS_SCENE_TRIANGLES;
     // uv of pixel (x, y) as seen from pixel `self`: a rasterizer's helper invocations stay on self's triangle.
     auto uv_at = [&](int x, int y, const PixelHit& self) {
         if (rasterized && self.hit && triangles)

@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 #include "harness/config.h"
+#include "scene/shader_interface.h" // its static_asserts hold the interface in every build
 #include "texture/error.h"
 #include <array>
 #include <cmath>
@@ -148,7 +149,7 @@ SceneKind parse_scene(const std::string& name)
 SceneParams make_scene(SceneKind kind, int width, int height, int texture_width)
 {
     SceneParams scene{};
-    scene.kind_size = glm::ivec4(TF_SCENE_PLANE, width, height, 0);
+    scene.kind_size = glm::ivec4(HARNESS_SCENE_PLANE, width, height, 0);
     scene.background = glm::vec4(0.02f, 0.02f, 0.03f, 1.0f);
     const float unbounded = 1e30f;
     // Offsets keep texel edges off pixel centres, so nearest lookups are not decided by rounding.
@@ -163,7 +164,7 @@ SceneParams make_scene(SceneKind kind, int width, int height, int texture_width)
         break;
     case SceneKind::tunnel: // cylinder of radius 1 and length 40, camera just off the axis
         set_camera(scene, {{0.25, 0.1, 0.0}, {0.0, 0.0, 1.0}, {0.0, 1.0, 0.0}, 90.0}, width, height);
-        scene.kind_size.x = TF_SCENE_CYLINDER;
+        scene.kind_size.x = HARNESS_SCENE_CYLINDER;
         // 2 repeats around; texels stay square: v per unit = repeats / circumference.
         scene.p0 = glm::vec4(1.0f, 40.0f, 2.0f, float(2.0 / (2.0 * pi)));
         break;
@@ -193,7 +194,10 @@ SceneParams make_scene(SceneKind kind, int width, int height, int texture_width)
     case SceneKind::mesh: { // the same triangles: ray-cast (triangles) or rasterized (mesh)
         set_camera(scene, {{0.0, 0.3, 0.0}, {0.1, -0.15, 1.0}, {0.0, 1.0, 0.0}, 55.0}, width, height);
         std::vector<std::array<Corner, 3>> mesh = mesh_triangles();
-        scene.kind_size.x = TF_SCENE_TRIANGLES;
+        scene.kind_size.x = HARNESS_SCENE_TRIANGLES;
+        if (mesh.size() > HARNESS_MAX_TRIANGLES)
+            throw Error("the triangles scene has " + std::to_string(mesh.size()) +
+                        " triangles; the scene block holds " + std::to_string(HARNESS_MAX_TRIANGLES));
         scene.kind_size.w = int(mesh.size());
         scene.extent = glm::vec4(0.0f);
         for (size_t t = 0; t < mesh.size(); ++t)

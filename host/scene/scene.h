@@ -4,6 +4,7 @@
 // rasterized on the GPU, ray-cast here); uv derivatives are fine or coarse 2x2 quad differences, as
 // dFdxFine/dFdxCoarse compute them, or ray differentials.
 #include "core/lookup.h"
+#include "harness/config.h"
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -13,7 +14,7 @@ namespace tf {
 enum class SceneKind { plane, tunnel, zoom, minify, slanted, triangles, mesh };
 
 // How uv gradients are made: fine or coarse 2x2 quad differences, or ray differentials (ray-cast scenes).
-enum class Gradients { fine, coarse, ray };
+enum class Gradients { fine = HARNESS_GRADIENTS_FINE, coarse = HARNESS_GRADIENTS_COARSE, ray = HARNESS_GRADIENTS_RAY };
 Gradients parse_gradients(const std::string& name); // "fine", "coarse", "ray"
 std::string to_string(Gradients gradients);
 
@@ -37,7 +38,7 @@ SceneKind parse_scene(const std::string& name); // throws tf::Error listing the 
 std::string to_string(SceneKind kind);
 const std::vector<SceneKind>& all_scenes();
 
-// std140 layout, mirrored by tf_SceneParams in scene.glsl.
+// The scene block of shaders/harness/scene.glsl (std140; checked in scene/shader_interface.h).
 struct SceneParams {
     glm::vec4 origin;
     glm::vec4 forward;
@@ -48,9 +49,9 @@ struct SceneParams {
     glm::vec4 axis_v;
     glm::vec4 extent;     // xy half extents in uv (hit test), zw uv offset
     glm::vec4 background;
-    glm::ivec4 kind_size; // TF_SCENE_*, width, height, triangle count
-    glm::vec4 positions[3 * 16]; // triangles: xyz of each corner (TF_MAX_TRIANGLES)
-    glm::vec4 uvs[3 * 16];       // triangles: uv of each corner in xy
+    glm::ivec4 kind_size; // HARNESS_SCENE_*, width, height, triangle count
+    glm::vec4 positions[3 * HARNESS_MAX_TRIANGLES]; // triangles: xyz of each corner
+    glm::vec4 uvs[3 * HARNESS_MAX_TRIANGLES];       // triangles: uv of each corner in xy
 };
 
 // zoom and minify scale the quad so that one texel of a texture_width-wide texture spans 8 pixels

@@ -1,31 +1,104 @@
 #pragma once
-// The C++ side of what the harness shaders read from the host beyond the scene (scene.h): the push
-// constants every pass shares. Layout and ids come from shaders/harness/config.h.
+// The C++ side of the harness shaders' interface, checked against shaders/harness/config.h, where every
+// id, offset and size is written once: the push constants every pass shares, sample's records, and (with
+// scene.h) the scene block. Each static_assert below names the shader declaration it guards, so that a
+// reordered enum or a moved member stops the build instead of running another filter or reading garbage.
+#include "core/filter.h"
+#include "core/lookup_stats.h"
+#include "harness/config.h"
+#include "scene/scene.h"
+#include <cstddef>
 #include <cstdint>
+#include <glm/glm.hpp>
 
 namespace tf {
 
-// Mirrors tf_PushConstants in shaders/harness/filter_select.glsl.
+// PushConstants in shaders/harness/filter_select.glsl (std430, explicit offsets from config.h).
 struct PushConstants {
-    int32_t wrap_mode;
+    int32_t wrap_mode; // HARNESS_WRAP_* (tf::Wrap)
     float lod_bias;
     float lod_min;
     float lod_max;
     uint32_t count;
     float band;
     int32_t probes;
-    int32_t aniso_shape;
-    int32_t taps;
+    int32_t aniso_shape; // HARNESS_ANISO_* (tf::AnisoShape)
+    int32_t taps;        // HARNESS_TAPS_* (tf::Taps)
     float alpha;
     float max_aniso;
     int32_t boxes;
-    int32_t gradients; // TF_GRADIENTS_*
+    int32_t gradients;    // HARNESS_GRADIENTS_* (tf::Gradients)
     int32_t truth_side;   // ground-truth: samples a pixel = side^2
-    int32_t pixel_filter; // ground-truth: TF_PIXEL_FILTER_*
-    int32_t padding;      // the vec4s start at byte 64, as in GLSL
+    int32_t pixel_filter; // HARNESS_PIXEL_FILTER_* (tf::PixelFilter)
+    int32_t padding;      // the vec4s start on a 16-byte boundary, as in std430
     float sat_offset[4];  // sat: SatTable::offset, ::scale (per channel)
     float sat_scale[4];
 };
-static_assert(sizeof(PushConstants) == 96, "PushConstants must match tf_PushConstants (std430)");
+static_assert(offsetof(PushConstants, wrap_mode) == HARNESS_PUSH_WRAP_MODE);
+static_assert(offsetof(PushConstants, lod_bias) == HARNESS_PUSH_LOD_BIAS);
+static_assert(offsetof(PushConstants, lod_min) == HARNESS_PUSH_LOD_MIN);
+static_assert(offsetof(PushConstants, lod_max) == HARNESS_PUSH_LOD_MAX);
+static_assert(offsetof(PushConstants, count) == HARNESS_PUSH_COUNT);
+static_assert(offsetof(PushConstants, band) == HARNESS_PUSH_BAND);
+static_assert(offsetof(PushConstants, probes) == HARNESS_PUSH_PROBES);
+static_assert(offsetof(PushConstants, aniso_shape) == HARNESS_PUSH_ANISO_SHAPE);
+static_assert(offsetof(PushConstants, taps) == HARNESS_PUSH_TAPS);
+static_assert(offsetof(PushConstants, alpha) == HARNESS_PUSH_ALPHA);
+static_assert(offsetof(PushConstants, max_aniso) == HARNESS_PUSH_MAX_ANISO);
+static_assert(offsetof(PushConstants, boxes) == HARNESS_PUSH_BOXES);
+static_assert(offsetof(PushConstants, gradients) == HARNESS_PUSH_GRADIENTS);
+static_assert(offsetof(PushConstants, truth_side) == HARNESS_PUSH_TRUTH_SIDE);
+static_assert(offsetof(PushConstants, pixel_filter) == HARNESS_PUSH_PIXEL_FILTER);
+static_assert(offsetof(PushConstants, sat_offset) == HARNESS_PUSH_SAT_OFFSET);
+static_assert(offsetof(PushConstants, sat_scale) == HARNESS_PUSH_SAT_SCALE);
+static_assert(sizeof(PushConstants) == HARNESS_PUSH_SIZE);
+
+// SceneBlock in shaders/harness/scene.glsl (std140: vec4 members and vec4 arrays, 16 bytes each).
+static_assert(offsetof(SceneParams, origin) == 0 * 16 && offsetof(SceneParams, forward) == 1 * 16 &&
+              offsetof(SceneParams, right) == 2 * 16 && offsetof(SceneParams, up) == 3 * 16 &&
+              offsetof(SceneParams, p0) == 4 * 16 && offsetof(SceneParams, axis_u) == 5 * 16 &&
+              offsetof(SceneParams, axis_v) == 6 * 16 && offsetof(SceneParams, extent) == 7 * 16 &&
+              offsetof(SceneParams, background) == 8 * 16 && offsetof(SceneParams, kind_size) == 9 * 16,
+              "SceneParams: the members of scene.glsl's SceneParams, in order, one vec4 each");
+static_assert(offsetof(SceneParams, positions) == HARNESS_SCENE_POSITIONS);
+static_assert(offsetof(SceneParams, uvs) == HARNESS_SCENE_UVS);
+static_assert(sizeof(SceneParams) == HARNESS_SCENE_SIZE);
+static_assert(sizeof(glm::vec4) == 16 && sizeof(glm::ivec4) == 16, "std140 vec4 and ivec4");
+
+// sample.comp.glsl's buffers: a lookup is HARNESS_LOOKUP_FLOATS floats, a result a vec4, stats a uvec2.
+struct LookupRecord {
+    float u, v, dudx, dvdx, dudy, dvdy;
+};
+static_assert(sizeof(LookupRecord) == HARNESS_LOOKUP_FLOATS * sizeof(float));
+static_assert(sizeof(glm::vec4) == HARNESS_RESULT_FLOATS * sizeof(float));
+static_assert(offsetof(LookupStats, texel_fetches) == 0 && offsetof(LookupStats, hardware_lookups) == 4 &&
+              sizeof(LookupStats) == HARNESS_STATS_UINTS * sizeof(uint32_t),
+              "LookupStats: uvec2(fetches, hardware lookups)");
+
+// Every enum value a shader compares with an id (the enums take their values from config.h; these fail
+// if one is renumbered by hand).
+static_assert(int(Filter::nearest) == HARNESS_FILTER_NEAREST && int(Filter::bilinear) == HARNESS_FILTER_BILINEAR &&
+              int(Filter::trilinear) == HARNESS_FILTER_TRILINEAR &&
+              int(Filter::nearest_mip) == HARNESS_FILTER_NEAREST_MIP &&
+              int(Filter::bilinear_mip) == HARNESS_FILTER_BILINEAR_MIP &&
+              int(Filter::hw_nearest) == HARNESS_FILTER_HW_NEAREST &&
+              int(Filter::hw_bilinear) == HARNESS_FILTER_HW_BILINEAR &&
+              int(Filter::hw_trilinear) == HARNESS_FILTER_HW_TRILINEAR &&
+              int(Filter::hw_aniso) == HARNESS_FILTER_HW_ANISO && int(Filter::brilinear) == HARNESS_FILTER_BRILINEAR &&
+              int(Filter::aniso) == HARNESS_FILTER_ANISO && int(Filter::ewa) == HARNESS_FILTER_EWA &&
+              int(Filter::sat) == HARNESS_FILTER_SAT && int(Filter::sat_assembly) == HARNESS_FILTER_SAT_ASSEMBLY &&
+              int(Filter::ground_truth) == HARNESS_FILTER_GROUND_TRUTH && int(Filter::none) == HARNESS_FILTER_NONE,
+              "tf::Filter: the specialization constant of filter_select.glsl");
+static_assert(int(Wrap::repeat) == HARNESS_WRAP_REPEAT && int(Wrap::clamp) == HARNESS_WRAP_CLAMP &&
+              int(Wrap::mirror) == HARNESS_WRAP_MIRROR, "tf::Wrap: PushConstants.wrapMode");
+static_assert(int(AnisoShape::gpu) == HARNESS_ANISO_GPU && int(AnisoShape::feline) == HARNESS_ANISO_FELINE,
+              "tf::AnisoShape: PushConstants.anisoShape");
+static_assert(int(Taps::manual) == HARNESS_TAPS_MANUAL && int(Taps::hardware) == HARNESS_TAPS_HARDWARE,
+              "tf::Taps: PushConstants.taps");
+static_assert(int(PixelFilter::box) == HARNESS_PIXEL_FILTER_BOX &&
+              int(PixelFilter::gaussian) == HARNESS_PIXEL_FILTER_GAUSSIAN,
+              "tf::PixelFilter: PushConstants.pixelFilter");
+static_assert(int(Gradients::fine) == HARNESS_GRADIENTS_FINE && int(Gradients::coarse) == HARNESS_GRADIENTS_COARSE &&
+              int(Gradients::ray) == HARNESS_GRADIENTS_RAY, "tf::Gradients: PushConstants.gradients");
 
 } // namespace tf

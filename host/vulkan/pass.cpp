@@ -15,9 +15,9 @@ VkDescriptorSetLayout create_set_layout(const VulkanContext& context, const std:
 
 std::vector<VkDescriptorSetLayoutBinding> texture_bindings(VkShaderStageFlags stage)
 {
-    return {{TF_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr},
-            {TF_BINDING_SAT_LOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr},
-            {TF_BINDING_SAT_HIGH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr}};
+    return {{HARNESS_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr},
+            {HARNESS_BINDING_SAT_LOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr},
+            {HARNESS_BINDING_SAT_HIGH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr}};
 }
 
 void create_pass_samplers(const VulkanContext& context, const GpuTexture& texture, const SamplerOptions& options,
@@ -107,9 +107,9 @@ VkPipeline create_compute_pipeline(const VulkanContext& context, const uint32_t*
 
 void write_textures(std::vector<VkWriteDescriptorSet>& writes, VkDescriptorSet set, const PassSamplers& samplers)
 {
-    writes.push_back(write_texture(set, TF_BINDING_TEXTURE, &samplers.infos[0]));
-    writes.push_back(write_texture(set, TF_BINDING_SAT_LOW, &samplers.infos[1]));
-    writes.push_back(write_texture(set, TF_BINDING_SAT_HIGH, &samplers.infos[2]));
+    writes.push_back(write_texture(set, HARNESS_BINDING_TEXTURE, &samplers.infos[0]));
+    writes.push_back(write_texture(set, HARNESS_BINDING_SAT_LOW, &samplers.infos[1]));
+    writes.push_back(write_texture(set, HARNESS_BINDING_SAT_HIGH, &samplers.infos[2]));
 }
 
 } // namespace tf

@@ -23,9 +23,9 @@ const VkFormat depth_format = VK_FORMAT_D32_SFLOAT;
 
 int gradients_id(Gradients gradients)
 {
-    return gradients == Gradients::coarse ? TF_GRADIENTS_COARSE
-           : gradients == Gradients::ray  ? TF_GRADIENTS_RAY
-                                          : TF_GRADIENTS_FINE;
+    return gradients == Gradients::coarse ? HARNESS_GRADIENTS_COARSE
+           : gradients == Gradients::ray  ? HARNESS_GRADIENTS_RAY
+                                          : HARNESS_GRADIENTS_FINE;
 }
 
 // A device-local 2D image with a view, destroyed by `cleanup`.
@@ -81,9 +81,9 @@ void create_pass_resources(const VulkanContext& context, const GpuTexture& textu
     create_pass_samplers(context, texture, options, pass.samplers, cleanup);
 
     std::vector<VkDescriptorSetLayoutBinding> bindings = texture_bindings(stages);
-    bindings.push_back({TF_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr});
+    bindings.push_back({HARNESS_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, stages, nullptr});
     if (pixel_buffer)
-        bindings.push_back({TF_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr});
+        bindings.push_back({HARNESS_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr});
     pass.set_layout = create_set_layout(context, bindings);
     VkDescriptorSetLayout set_layout = pass.set_layout;
     cleanup.add([=] { vkDestroyDescriptorSetLayout(device, set_layout, nullptr); });
@@ -98,9 +98,9 @@ void create_pass_resources(const VulkanContext& context, const GpuTexture& textu
     pass.pixel_info = {pass.pixels.buffer, 0, VK_WHOLE_SIZE};
     std::vector<VkWriteDescriptorSet> writes;
     write_textures(writes, pass.descriptors.set, pass.samplers);
-    writes.push_back(write_buffer(pass.descriptors.set, TF_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &pass.uniform_info));
+    writes.push_back(write_buffer(pass.descriptors.set, HARNESS_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &pass.uniform_info));
     if (pixel_buffer)
-        writes.push_back(write_buffer(pass.descriptors.set, TF_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &pass.pixel_info));
+        writes.push_back(write_buffer(pass.descriptors.set, HARNESS_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &pass.pixel_info));
     vkUpdateDescriptorSets(device, uint32_t(writes.size()), writes.data(), 0, nullptr);
 }
 
@@ -129,7 +129,7 @@ void check_compute_quads(const VulkanContext& context)
 {
     if (!context.info.quad_ops_compute)
         throw Error(context.info.name + " has no subgroup quad operations in compute shaders: use --stage fragment");
-    if (context.info.subgroup_size % 4 != 0 || (TF_RENDER_TILE * TF_RENDER_TILE) % context.info.subgroup_size != 0)
+    if (context.info.subgroup_size % 4 != 0 || (HARNESS_RENDER_TILE * HARNESS_RENDER_TILE) % context.info.subgroup_size != 0)
         throw Error("the compute render lays 2x2 quads over subgroups of " +
                     std::to_string(context.info.subgroup_size) + " invocations, which it cannot do");
 }
@@ -232,7 +232,7 @@ void record_frame(const GpuRenderer& r, VkCommandBuffer cb, VkQueryPool timestam
         vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
                              &previous, 0, nullptr, 0, nullptr);
         stamp(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, query);
-        vkCmdDispatch(cb, (r.width + TF_RENDER_TILE - 1) / TF_RENDER_TILE, (r.height + TF_RENDER_TILE - 1) / TF_RENDER_TILE, 1);
+        vkCmdDispatch(cb, (r.width + HARNESS_RENDER_TILE - 1) / HARNESS_RENDER_TILE, (r.height + HARNESS_RENDER_TILE - 1) / HARNESS_RENDER_TILE, 1);
         stamp(VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, query + 1);
         return;
     }

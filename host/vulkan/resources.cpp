@@ -131,7 +131,7 @@ DescriptorSet allocate_descriptor_set(const VulkanContext& context, VkDescriptor
 const VkSpecializationInfo* filter_specialization(Filter filter, FilterSpecialization& s)
 {
     s.filter_id = int32_t(filter);
-    s.entry = {TF_SPEC_FILTER, 0, sizeof(int32_t)};
+    s.entry = {HARNESS_SPEC_FILTER, 0, sizeof(int32_t)};
     s.info = {1, &s.entry, sizeof(int32_t), &s.filter_id};
     return &s.info;
 }

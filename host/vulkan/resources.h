@@ -40,7 +40,7 @@ struct DescriptorSet {
 };
 DescriptorSet allocate_descriptor_set(const VulkanContext& context, VkDescriptorSetLayout layout);
 
-// The filter, as the harness shaders' specialization constant TF_SPEC_FILTER (pipelines are per filter).
+// The filter, as the harness shaders' specialization constant HARNESS_SPEC_FILTER (pipelines are per filter).
 struct FilterSpecialization {
     int32_t filter_id;
     VkSpecializationMapEntry entry;

@@ -1,62 +1,110 @@
-// Shared by the C++ host and the harness shaders (GLSL): binding numbers, filter and scene ids.
-// Plain #defines so that one file serves both languages. The ids match tf::Filter, tf::Wrap.
-#ifndef TF_HARNESS_CONFIG_H
-#define TF_HARNESS_CONFIG_H
+// The interface between the C++ host and the harness shaders: every id, constant, binding, layout offset
+// and record size both sides use, written once here. Plain #defines so that one file serves GLSL and C++;
+// host/scene/shader_interface.h checks the C++ types against it (static_assert), and filter_select.glsl
+// checks the ids that must equal the texfilter includes' own (#error). Harness names, not the product's
+// TF_ prefix: none of this is texfilter's API.
+#ifndef HARNESS_CONFIG_H
+#define HARNESS_CONFIG_H
 
-// Filter ids, in tf::Filter order.
-#define TF_FILTER_NEAREST 0
-#define TF_FILTER_BILINEAR 1
-#define TF_FILTER_TRILINEAR 2
-#define TF_FILTER_NEAREST_MIP 3
-#define TF_FILTER_BILINEAR_MIP 4
-#define TF_FILTER_HW_NEAREST 5
-#define TF_FILTER_HW_BILINEAR 6
-#define TF_FILTER_HW_TRILINEAR 7
-#define TF_FILTER_HW_ANISO 8
-#define TF_FILTER_BRILINEAR 9
-#define TF_FILTER_ANISO 10
-#define TF_FILTER_EWA 11
-#define TF_FILTER_SAT 12
-#define TF_FILTER_SAT_ASSEMBLY 13
-#define TF_FILTER_GROUND_TRUTH 14 // render only: supersampled integral of the level-0 texture
-#define TF_FILTER_NONE 15         // render only: no texture (the benchmark's baseline)
+// Filter ids: the values of tf::Filter (host/core/filter.h).
+#define HARNESS_FILTER_NEAREST 0
+#define HARNESS_FILTER_BILINEAR 1
+#define HARNESS_FILTER_TRILINEAR 2
+#define HARNESS_FILTER_NEAREST_MIP 3
+#define HARNESS_FILTER_BILINEAR_MIP 4
+#define HARNESS_FILTER_HW_NEAREST 5
+#define HARNESS_FILTER_HW_BILINEAR 6
+#define HARNESS_FILTER_HW_TRILINEAR 7
+#define HARNESS_FILTER_HW_ANISO 8
+#define HARNESS_FILTER_BRILINEAR 9
+#define HARNESS_FILTER_ANISO 10
+#define HARNESS_FILTER_EWA 11
+#define HARNESS_FILTER_SAT 12
+#define HARNESS_FILTER_SAT_ASSEMBLY 13
+#define HARNESS_FILTER_GROUND_TRUTH 14 // render only: supersampled integral of the level-0 texture
+#define HARNESS_FILTER_NONE 15         // render only: no texture (the benchmark's baseline)
+
+// Sampler options passed straight to the includes: tf::Wrap, tf::AnisoShape, tf::Taps. They must equal
+// the includes' TF_WRAP_*, TF_ANISO_*, TF_TAPS_* (filter_select.glsl stops the build if not).
+#define HARNESS_WRAP_REPEAT 0
+#define HARNESS_WRAP_CLAMP 1
+#define HARNESS_WRAP_MIRROR 2
+#define HARNESS_ANISO_GPU 0
+#define HARNESS_ANISO_FELINE 1
+#define HARNESS_TAPS_MANUAL 0
+#define HARNESS_TAPS_HARDWARE 1
 
 // Ground truth's pixel filters (tf::PixelFilter) and its stratified grid's largest side.
-#define TF_PIXEL_FILTER_BOX 0
-#define TF_PIXEL_FILTER_GAUSSIAN 1
-#define TF_GROUND_TRUTH_SIGMA 0.5 // Gaussian pixel filter: standard deviation in pixels
-#define TF_MAX_TRUTH_SIDE 64
+#define HARNESS_PIXEL_FILTER_BOX 0
+#define HARNESS_PIXEL_FILTER_GAUSSIAN 1
+#define HARNESS_GROUND_TRUTH_SIGMA 0.5 // Gaussian pixel filter: standard deviation in pixels
+#define HARNESS_MAX_TRUTH_SIDE 64      // samples a pixel = side^2, at most 4096
 
 // Scene kinds: a textured plane or quad (plane, zoom, minify, slanted) and a cylinder (tunnel).
-#define TF_SCENE_PLANE 0
-#define TF_SCENE_CYLINDER 1
-#define TF_SCENE_TRIANGLES 2 // ray-cast triangle list (triangles, and the mesh scene's CPU twin)
-#define TF_MAX_TRIANGLES 16
-#define TF_EDGE_SLACK 1e-5 // triangles: barycentric slack at edges (watertight ray casts; see scene.glsl)
+#define HARNESS_SCENE_PLANE 0
+#define HARNESS_SCENE_CYLINDER 1
+#define HARNESS_SCENE_TRIANGLES 2 // ray-cast triangle list (triangles, and the mesh scene's CPU twin)
+#define HARNESS_MAX_TRIANGLES 16
+#define HARNESS_EDGE_SLACK 1e-5 // triangles: barycentric slack at edges (watertight ray casts; see scene.glsl)
 
-// How the harness gets uv gradients (render): quads of fine or coarse differences, or ray differentials.
-#define TF_GRADIENTS_FINE 0
-#define TF_GRADIENTS_COARSE 1
-#define TF_GRADIENTS_RAY 2
+// How the harness gets uv gradients (render; tf::Gradients): quads of fine or coarse differences, or ray
+// differentials.
+#define HARNESS_GRADIENTS_FINE 0
+#define HARNESS_GRADIENTS_COARSE 1
+#define HARNESS_GRADIENTS_RAY 2
 
-#define TF_RENDER_TILE 8 // compute render: 8x8 pixels a workgroup of 64 invocations, as 2x2 quads
+#define HARNESS_RENDER_TILE 8 // compute render: 8x8 pixels a workgroup of 64 invocations, as 2x2 quads
 
 // Descriptor set 0.
-#define TF_BINDING_TEXTURE 0 // combined image sampler: the MIP chain. texelFetch ignores the sampler; hardware
-                             // taps and hw-* filters use it (trilinear with the wrap mode, or the hw-* state)
-#define TF_BINDING_SCENE 1   // uniform buffer: tf_SceneParams (render)
-#define TF_BINDING_LOOKUPS 1 // storage buffer: 6 floats a lookup (sample)
-#define TF_BINDING_RESULTS 2 // storage buffer: vec4 a lookup (sample), vec4 a pixel (compute render)
-#define TF_BINDING_STATS 3   // storage buffer: uvec2 a lookup, texel fetches and hardware lookups (sample)
-#define TF_BINDING_SAT_LOW 4  // usampler2D RGBA32UI: summed-area table, low 32 bits per channel
-#define TF_BINDING_SAT_HIGH 5 // usampler2D R32UI: bits 32..39 of the four channels, one byte each
+#define HARNESS_BINDING_TEXTURE 0 // combined image sampler: the MIP chain. texelFetch ignores the sampler;
+                                  // hardware taps and hw-* filters use it (trilinear with the wrap mode, or
+                                  // the hw-* state)
+#define HARNESS_BINDING_SCENE 1   // uniform buffer: the scene block (render)
+#define HARNESS_BINDING_LOOKUPS 1 // storage buffer: HARNESS_LOOKUP_FLOATS floats a lookup (sample)
+#define HARNESS_BINDING_RESULTS 2 // storage buffer: vec4 a lookup (sample), vec4 a pixel (compute render)
+#define HARNESS_BINDING_STATS 3   // storage buffer: HARNESS_STATS_UINTS a lookup (sample)
+#define HARNESS_BINDING_SAT_LOW 4  // usampler2D RGBA32UI: summed-area table, low 32 bits per channel
+#define HARNESS_BINDING_SAT_HIGH 5 // usampler2D R32UI: bits 32..39 of the four channels, one byte each
 
-#define TF_SAMPLE_LOCAL_SIZE 64
+// sample's records: a lookup is u, v, du/dx, dv/dx, du/dy, dv/dy (floats), its result a vec4, its stats
+// texel fetches and hardware lookups (uints).
+#define HARNESS_LOOKUP_FLOATS 6
+#define HARNESS_RESULT_FLOATS 4
+#define HARNESS_STATS_UINTS 2
+
+// The push constants every pass shares (std430 offsets in bytes; tf::PushConstants).
+#define HARNESS_PUSH_WRAP_MODE 0
+#define HARNESS_PUSH_LOD_BIAS 4
+#define HARNESS_PUSH_LOD_MIN 8
+#define HARNESS_PUSH_LOD_MAX 12
+#define HARNESS_PUSH_COUNT 16
+#define HARNESS_PUSH_BAND 20
+#define HARNESS_PUSH_PROBES 24
+#define HARNESS_PUSH_ANISO_SHAPE 28
+#define HARNESS_PUSH_TAPS 32
+#define HARNESS_PUSH_ALPHA 36
+#define HARNESS_PUSH_MAX_ANISO 40
+#define HARNESS_PUSH_BOXES 44
+#define HARNESS_PUSH_GRADIENTS 48
+#define HARNESS_PUSH_TRUTH_SIDE 52
+#define HARNESS_PUSH_PIXEL_FILTER 56
+#define HARNESS_PUSH_SAT_OFFSET 64 // vec4: 16-byte aligned
+#define HARNESS_PUSH_SAT_SCALE 80
+#define HARNESS_PUSH_SIZE 96
+
+// The scene's uniform block (std140 offsets in bytes; tf::SceneParams): ten vec4s of parameters, then
+// three corners a triangle of positions, then of uvs (vec4 arrays: 16-byte stride in std140).
+#define HARNESS_SCENE_PARAMS_SIZE 160
+#define HARNESS_SCENE_POSITIONS HARNESS_SCENE_PARAMS_SIZE
+#define HARNESS_SCENE_UVS (HARNESS_SCENE_POSITIONS + 3 * HARNESS_MAX_TRIANGLES * 16)
+#define HARNESS_SCENE_SIZE (HARNESS_SCENE_UVS + 3 * HARNESS_MAX_TRIANGLES * 16)
+
+#define HARNESS_SAMPLE_LOCAL_SIZE 64
 // sample: filters whose lookups each get a whole subgroup, every 2x2 quad of it differencing to the lookup's
 // gradients (the hw-* filters, through textureGrad; see sample.comp.glsl); every other filter runs one
 // invocation a lookup.
-#define TF_SAMPLE_IN_QUADS(filter) ((filter) >= TF_FILTER_HW_NEAREST && (filter) <= TF_FILTER_HW_ANISO)
+#define HARNESS_SAMPLE_IN_QUADS(filter) ((filter) >= HARNESS_FILTER_HW_NEAREST && (filter) <= HARNESS_FILTER_HW_ANISO)
 
-#define TF_SPEC_FILTER 0 // specialization constant id of the filter (TF_FILTER_*)
+#define HARNESS_SPEC_FILTER 0 // specialization constant id of the filter (HARNESS_FILTER_*)
 
 #endif

@@ -1,14 +1,14 @@
 // Harness only: the uv gradients a render asked for (pc.gradients), for a ray-cast hit. Quad
 // derivatives must run in uniform control flow, so every form is computed and one is kept.
-#ifndef TF_HARNESS_GRADIENTS_GLSL
-#define TF_HARNESS_GRADIENTS_GLSL
+#ifndef HARNESS_GRADIENTS_GLSL
+#define HARNESS_GRADIENTS_GLSL
 
 #include "scene.glsl"
 
-tf_Gradients tf_harness_ray_gradients(tf_SceneParams scene, vec2 pixelCentre, tf_Hit h)
+tf_Gradients ray_gradients(SceneParams scene, vec2 pixelCentre, Hit h)
 {
-    return tf_ray_differential_gradients(tf_camera_ray(scene, pixelCentre), tf_camera_ray_dx(scene),
-                                         tf_camera_ray_dy(scene), h.t, h.normal, h.dPdu, h.dPdv);
+    return tf_ray_differential_gradients(camera_ray(scene, pixelCentre), camera_ray_dx(scene),
+                                         camera_ray_dy(scene), h.t, h.normal, h.dPdu, h.dPdv);
 }
 
 // What a pixel filters. Every lane filters, hit or miss, and the hit picks the result afterwards: behind
@@ -18,24 +18,24 @@ tf_Gradients tf_harness_ray_gradients(tf_SceneParams scene, vec2 pixelCentre, tf
 // lanes carried the unbounded surface's uv, enormous near its horizon, and one frame of the plane or
 // the slanted scene took up to a minute. So a missed lane takes the uv of a quad neighbour that hit (no
 // spread for the ellipse), or 0.5 in an all-miss quad, with gradients of one texture per pixel.
-struct tf_Lookup {
+struct PixelLookup {
     vec2 uv, dUVdx, dUVdy;
 };
 
 // One step of that adoption. q = (uv, 1) where the lane has a uv (hit or adopted), (0, 0, 0) where not;
 // across, down: the horizontal and vertical quad neighbours' q. Two steps reach the diagonal neighbour.
-vec3 tf_adopt_uv(vec3 q, vec3 across, vec3 down)
+vec3 adopt_uv(vec3 q, vec3 across, vec3 down)
 {
     return q.z > 0.5 ? q : across.z > 0.5 ? across : down.z > 0.5 ? down : q;
 }
 
-vec3 tf_uv_or_none(tf_Hit h) { return h.hit ? vec3(h.uv, 1.0) : vec3(0.0); }
+vec3 uv_or_none(Hit h) { return h.hit ? vec3(h.uv, 1.0) : vec3(0.0); }
 
-tf_Lookup tf_harness_lookup(tf_Hit h, tf_Gradients g, vec3 adopted)
+PixelLookup pixel_lookup(Hit h, tf_Gradients g, vec3 adopted)
 {
     if (h.hit)
-        return tf_Lookup(h.uv, g.dUVdx, g.dUVdy);
-    return tf_Lookup(adopted.z > 0.5 ? adopted.xy : vec2(0.5), vec2(1.0, 0.0), vec2(0.0, 1.0));
+        return PixelLookup(h.uv, g.dUVdx, g.dUVdy);
+    return PixelLookup(adopted.z > 0.5 ? adopted.xy : vec2(0.5), vec2(1.0, 0.0), vec2(0.0, 1.0));
 }
 
 #endif

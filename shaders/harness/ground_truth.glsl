@@ -2,13 +2,13 @@
 // texture (bilinear reconstruction) over the scene itself under a pixel filter, by stratified
 // supersampling: a side x side grid of strata jittered by an integer hash of (pixel, sample), the
 // pattern of host/reference/ground_truth.cpp (the CPU twin, in double). Box: uniform over the pixel. Gaussian:
-// sigma TF_GROUND_TRUTH_SIGMA pixels about the centre, Box-Muller on the stratified unit square.
+// sigma HARNESS_GROUND_TRUTH_SIGMA pixels about the centre, Box-Muller on the stratified unit square.
 // Needs scene.glsl and filter_select.glsl (u_texture, pc) included first.
-#ifndef TF_HARNESS_GROUND_TRUTH_GLSL
-#define TF_HARNESS_GROUND_TRUTH_GLSL
+#ifndef HARNESS_GROUND_TRUTH_GLSL
+#define HARNESS_GROUND_TRUTH_GLSL
 
 // host/core/hash.h mix32 ("lowbias32"), bit for bit.
-uint tf_truth_hash(uint x)
+uint truth_hash(uint x)
 {
     x ^= x >> 16;
     x *= 0x7feb352du;
@@ -19,27 +19,27 @@ uint tf_truth_hash(uint x)
 }
 
 // 24 hash bits in [0, 1): exact in float, as on the CPU.
-float tf_truth_unit(uint h) { return float(h >> 8) * (1.0 / 16777216.0); }
+float truth_unit(uint h) { return float(h >> 8) * (1.0 / 16777216.0); }
 
-vec2 tf_truth_sample(ivec2 pixel, int i, int side, int pixelFilter)
+vec2 truth_sample(ivec2 pixel, int i, int side, int pixelFilter)
 {
-    uint h = tf_truth_hash(uint(i) + tf_truth_hash(uint(pixel.y) + tf_truth_hash(uint(pixel.x))));
-    float a = (float(i % side) + tf_truth_unit(h)) / float(side);
-    float b = (float(i / side) + tf_truth_unit(tf_truth_hash(h))) / float(side);
-    if (pixelFilter != TF_PIXEL_FILTER_GAUSSIAN)
+    uint h = truth_hash(uint(i) + truth_hash(uint(pixel.y) + truth_hash(uint(pixel.x))));
+    float a = (float(i % side) + truth_unit(h)) / float(side);
+    float b = (float(i / side) + truth_unit(truth_hash(h))) / float(side);
+    if (pixelFilter != HARNESS_PIXEL_FILTER_GAUSSIAN)
         return vec2(pixel) + vec2(a, b);
-    float r = TF_GROUND_TRUTH_SIGMA * sqrt(-2.0 * log(1.0 - a)); // 1 - a in (0, 1]: finite
+    float r = HARNESS_GROUND_TRUTH_SIGMA * sqrt(-2.0 * log(1.0 - a)); // 1 - a in (0, 1]: finite
     float angle = 6.283185307179586 * b;
     return vec2(pixel) + 0.5 + r * vec2(cos(angle), sin(angle));
 }
 
-vec4 tf_ground_truth(ivec2 pixel)
+vec4 ground_truth(ivec2 pixel)
 {
-    int side = clamp(pc.truthSide, 1, TF_MAX_TRUTH_SIDE); // bounded loop whatever the host sends
+    int side = clamp(pc.truthSide, 1, HARNESS_MAX_TRUTH_SIDE); // bounded loop whatever the host sends
     tf_Sampler s = tf_sampler(pc.wrapMode);
     vec4 sum = vec4(0.0);
     [[dont_unroll]] for (int i = 0; i < side * side; ++i) {
-        tf_Hit h = tf_scene_hit(scene, tf_truth_sample(pixel, i, side, pc.pixelFilter));
+        Hit h = scene_hit(scene, truth_sample(pixel, i, side, pc.pixelFilter));
         sum += h.hit ? tf_bilinear(u_texture, h.uv, s) : scene.background;
     }
     return sum / float(side * side);

@@ -11,6 +11,6 @@ void main()
 {
     tf_Gradients fine = tf_quad_gradients_fine(uv);
     tf_Gradients coarse = tf_quad_gradients_coarse(uv);
-    tf_Gradients g = pc.gradients == TF_GRADIENTS_COARSE ? coarse : fine;
-    outColor = tf_harness_filter(uv, g.dUVdx, g.dUVdy);
+    tf_Gradients g = pc.gradients == HARNESS_GRADIENTS_COARSE ? coarse : fine;
+    outColor = harness_filter(uv, g.dUVdx, g.dUVdy);
 }

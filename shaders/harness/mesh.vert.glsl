@@ -9,7 +9,7 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec2 uv;
 layout(location = 0) out vec2 outUV; // smooth: perspective-correct interpolation
 
-const float TF_NEAR = 0.05, TF_FAR = 1000.0;
+const float NEAR_PLANE = 0.05, FAR_PLANE = 1000.0;
 
 void main()
 {
@@ -20,6 +20,6 @@ void main()
     vec3 right = scene.right.xyz, up = scene.up.xyz;
     // Vulkan's framebuffer y grows downward; the scene's ndc y grows upward.
     gl_Position = vec4(dot(c, right) / dot(right, right), -dot(c, up) / dot(up, up),
-                       (z - TF_NEAR) * TF_FAR / (TF_FAR - TF_NEAR), z);
+                       (z - NEAR_PLANE) * FAR_PLANE / (FAR_PLANE - NEAR_PLANE), z);
     outUV = uv + scene.extent.zw; // the camera path's slide, as the ray-cast twin
 }

@@ -10,30 +10,30 @@
 #include "gradients.glsl"
 #include "ground_truth.glsl"
 
-layout(local_size_x = TF_RENDER_TILE * TF_RENDER_TILE) in;
+layout(local_size_x = HARNESS_RENDER_TILE * HARNESS_RENDER_TILE) in;
 
-layout(set = 0, binding = TF_BINDING_RESULTS, std430) writeonly buffer tf_Pixels { vec4 pixels[]; };
+layout(set = 0, binding = HARNESS_BINDING_RESULTS, std430) writeonly buffer PixelsBuffer { vec4 pixels[]; };
 
 void main()
 {
-    ivec2 pixel = tf_quad_pixel(ivec2(gl_WorkGroupID.xy) * TF_RENDER_TILE, TF_RENDER_TILE);
+    ivec2 pixel = tf_quad_pixel(ivec2(gl_WorkGroupID.xy) * HARNESS_RENDER_TILE, HARNESS_RENDER_TILE);
     vec2 centre = vec2(pixel) + 0.5;
     ivec2 size = scene.kindSize.yz;
-    if (TF_FILTER_ID == TF_FILTER_GROUND_TRUTH) { // no quads needed: a specialization constant, uniform
+    if (FILTER_ID == HARNESS_FILTER_GROUND_TRUTH) { // no quads needed: a specialization constant, uniform
         if (all(lessThan(pixel, size)))
-            pixels[pixel.y * size.x + pixel.x] = tf_ground_truth(pixel);
+            pixels[pixel.y * size.x + pixel.x] = ground_truth(pixel);
         return;
     }
-    tf_Hit h = tf_scene_hit(scene, centre);
+    Hit h = scene_hit(scene, centre);
     // All lanes (those past the image's edge too) take part in the quad operations.
-    tf_Gradients quad = tf_compute_quad_gradients(h.uv, pc.gradients == TF_GRADIENTS_COARSE ? TF_DERIVATIVES_COARSE
+    tf_Gradients quad = tf_compute_quad_gradients(h.uv, pc.gradients == HARNESS_GRADIENTS_COARSE ? TF_DERIVATIVES_COARSE
                                                                                             : TF_DERIVATIVES_FINE);
-    tf_Gradients g = pc.gradients == TF_GRADIENTS_RAY ? tf_harness_ray_gradients(scene, centre, h) : quad;
-    vec3 q = tf_uv_or_none(h);
+    tf_Gradients g = pc.gradients == HARNESS_GRADIENTS_RAY ? ray_gradients(scene, centre, h) : quad;
+    vec3 q = uv_or_none(h);
     [[unroll]] for (int step = 0; step < 2; ++step)
-        q = tf_adopt_uv(q, subgroupQuadSwapHorizontal(q), subgroupQuadSwapVertical(q));
-    tf_Lookup l = tf_harness_lookup(h, g, q);
-    vec4 color = tf_harness_filter(l.uv, l.dUVdx, l.dUVdy);
+        q = adopt_uv(q, subgroupQuadSwapHorizontal(q), subgroupQuadSwapVertical(q));
+    PixelLookup l = pixel_lookup(h, g, q);
+    vec4 color = harness_filter(l.uv, l.dUVdx, l.dUVdy);
     if (all(lessThan(pixel, size)))
         pixels[pixel.y * size.x + pixel.x] = h.hit ? color : scene.background;
 }

@@ -12,25 +12,25 @@ layout(location = 0) out vec4 outColor;
 
 void main()
 {
-    if (TF_FILTER_ID == TF_FILTER_GROUND_TRUTH) { // a specialization constant: uniform control flow
-        outColor = tf_ground_truth(ivec2(gl_FragCoord.xy));
+    if (FILTER_ID == HARNESS_FILTER_GROUND_TRUTH) { // a specialization constant: uniform control flow
+        outColor = ground_truth(ivec2(gl_FragCoord.xy));
         return;
     }
-    tf_Hit h = tf_scene_hit(scene, gl_FragCoord.xy);
+    Hit h = scene_hit(scene, gl_FragCoord.xy);
     // Every lane of the quad computes uv, hit or not, before any branch.
     tf_Gradients fine = tf_quad_gradients_fine(h.uv);
     tf_Gradients coarse = tf_quad_gradients_coarse(h.uv);
-    tf_Gradients g = pc.gradients == TF_GRADIENTS_COARSE ? coarse
-                     : pc.gradients == TF_GRADIENTS_RAY  ? tf_harness_ray_gradients(scene, gl_FragCoord.xy, h)
+    tf_Gradients g = pc.gradients == HARNESS_GRADIENTS_COARSE ? coarse
+                     : pc.gradients == HARNESS_GRADIENTS_RAY  ? ray_gradients(scene, gl_FragCoord.xy, h)
                                                          : fine;
     // A neighbour's q from fine differences: exact where this lane's q is 0 (the only case adoption uses).
     bvec2 odd = equal(ivec2(gl_FragCoord.xy) & 1, ivec2(1));
-    vec3 q = tf_uv_or_none(h);
+    vec3 q = uv_or_none(h);
     [[unroll]] for (int step = 0; step < 2; ++step) {
         vec3 dx = dFdxFine(q), dy = dFdyFine(q);
-        q = tf_adopt_uv(q, q + (odd.x ? -dx : dx), q + (odd.y ? -dy : dy));
+        q = adopt_uv(q, q + (odd.x ? -dx : dx), q + (odd.y ? -dy : dy));
     }
-    tf_Lookup l = tf_harness_lookup(h, g, q);
-    vec4 color = tf_harness_filter(l.uv, l.dUVdx, l.dUVdy);
+    PixelLookup l = pixel_lookup(h, g, q);
+    vec4 color = harness_filter(l.uv, l.dUVdx, l.dUVdy);
     outColor = h.hit ? color : scene.background;
 }

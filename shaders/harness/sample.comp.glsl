@@ -7,7 +7,7 @@
 // hardware-tap forms (textureLod with an explicit LOD) do not mind. A hardware lookup through textureGrad
 // may: lavapipe's anisotropic filter takes its footprint from the 2x2 quad's uv differences, not from
 // the gradients given, and its level from the first quad of the SIMD batch (one subgroup), so the same
-// lookup gave 0.06 or 0.70 by file order. So each hw-* lookup (TF_SAMPLE_IN_QUADS) gets a whole subgroup
+// lookup gave 0.06 or 0.70 by file order. So each hw-* lookup (HARNESS_SAMPLE_IN_QUADS) gets a whole subgroup
 // to itself, every quad of it (lanes 4q..4q+3 by subgroup invocation id, bit 0 = x, bit 1 = y: the quads
 // of GL_KHR_shader_subgroup_quad, and lavapipe's) laid out as
 //     (0,0) uv   (1,0) uv + dUVdx   (0,1) uv + dUVdy   (1,1) uv + dUVdx + dUVdy
@@ -26,32 +26,32 @@
 #include "config.h"
 #include "filter_select.glsl"
 
-layout(local_size_x = TF_SAMPLE_LOCAL_SIZE) in;
+layout(local_size_x = HARNESS_SAMPLE_LOCAL_SIZE) in;
 
-layout(set = 0, binding = TF_BINDING_LOOKUPS, std430) readonly buffer tf_Lookups { float lookups[]; };
-layout(set = 0, binding = TF_BINDING_RESULTS, std430) writeonly buffer tf_Results { vec4 results[]; };
-layout(set = 0, binding = TF_BINDING_STATS, std430) writeonly buffer tf_Stats { uvec2 stats[]; };
+layout(set = 0, binding = HARNESS_BINDING_LOOKUPS, std430) readonly buffer LookupsBuffer { float lookups[]; };
+layout(set = 0, binding = HARNESS_BINDING_RESULTS, std430) writeonly buffer ResultsBuffer { vec4 results[]; };
+layout(set = 0, binding = HARNESS_BINDING_STATS, std430) writeonly buffer StatsBuffer { uvec2 stats[]; };
 
-const float TF_SAMPLE_HUGE_GRADIENT = 1048576.0; // G = 2^20
+const float HUGE_GRADIENT = 1048576.0; // G = 2^20
 
 void main()
 {
-    const bool quads = TF_SAMPLE_IN_QUADS(TF_FILTER_ID); // a specialization constant: uniform
+    const bool quads = HARNESS_SAMPLE_IN_QUADS(FILTER_ID); // a specialization constant: uniform
     // The invocation's place, subgroup by subgroup (full subgroups: the host checks that the subgroup size
     // divides the workgroup size and is a multiple of 4).
     uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-    uint i = group * TF_SAMPLE_LOCAL_SIZE + gl_LocalInvocationIndex;
+    uint i = group * HARNESS_SAMPLE_LOCAL_SIZE + gl_LocalInvocationIndex;
     if (quads)
-        i = (group * TF_SAMPLE_LOCAL_SIZE) / gl_SubgroupSize + gl_SubgroupID;
+        i = (group * HARNESS_SAMPLE_LOCAL_SIZE) / gl_SubgroupSize + gl_SubgroupID;
     if (i >= pc.count) // a subgroup's lanes leave together in quads mode
         return;
-    uint b = 6u * i;
+    uint b = uint(HARNESS_LOOKUP_FLOATS) * i;
     vec2 uv = vec2(lookups[b], lookups[b + 1u]);
     vec2 dUVdx = vec2(lookups[b + 2u], lookups[b + 3u]);
     vec2 dUVdy = vec2(lookups[b + 4u], lookups[b + 5u]);
     if (!quads) {
-        results[i] = tf_harness_filter(uv, dUVdx, dUVdy);
-        stats[i] = uvec2(tf_fetchCount, tf_hwLookupCount);
+        results[i] = harness_filter(uv, dUVdx, dUVdy);
+        stats[i] = uvec2(fetchCount, hwLookupCount);
         return;
     }
     bool finiteUV = tf_finite(uv);
@@ -59,9 +59,9 @@ void main()
         uv = vec2(0.0);
         dUVdx = dUVdy = vec2(0.0);
     } else if (!tf_finite(dUVdx) || !tf_finite(dUVdy) ||
-               any(greaterThanEqual(abs(vec4(dUVdx, dUVdy)), vec4(TF_SAMPLE_HUGE_GRADIENT)))) {
-        dUVdx = vec2(TF_SAMPLE_HUGE_GRADIENT, 0.0); // blur fully
-        dUVdy = vec2(0.0, TF_SAMPLE_HUGE_GRADIENT);
+               any(greaterThanEqual(abs(vec4(dUVdx, dUVdy)), vec4(HUGE_GRADIENT)))) {
+        dUVdx = vec2(HUGE_GRADIENT, 0.0); // blur fully
+        dUVdy = vec2(0.0, HUGE_GRADIENT);
     }
     uint lane = gl_SubgroupInvocationID & 3u;
     vec2 at = uv;
@@ -69,9 +69,9 @@ void main()
         at += dUVdx;
     if ((lane & 2u) != 0u)
         at += dUVdy;
-    vec4 color = tf_harness_filter(at, dUVdx, dUVdy);
+    vec4 color = harness_filter(at, dUVdx, dUVdy);
     if (gl_SubgroupInvocationID == 0u) {
         results[i] = finiteUV ? color : vec4(0.0);
-        stats[i] = uvec2(tf_fetchCount, tf_hwLookupCount);
+        stats[i] = uvec2(fetchCount, hwLookupCount);
     }
 }

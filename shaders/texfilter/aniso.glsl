@@ -51,7 +51,7 @@
 const int TF_ANISO_MAX_PROBES = 16; // hard cap on probes (and loop iterations) for any input
 
 // Where the probes go: uv + ((k + ½)/probes − ½)·axis, k = 0..probes−1, all on LOD `lod`.
-struct tf_AnisoFootprint {
+struct tfi_AnisoFootprint {
     vec2 axis;   // the whole major axis in uv units (zero when probes == 1)
     int probes;  // N in [1, TF_ANISO_MAX_PROBES]
     float lod;   // biased and clamped like tf_lod
@@ -63,15 +63,15 @@ struct tf_AnisoFootprint {
 #ifndef TF_ANISO_RATIO_SLACK
 #define TF_ANISO_RATIO_SLACK (1.0 / 64.0)
 #endif
-int tf_aniso_count(float ratio, int maxN)
+int tfi_aniso_count(float ratio, int maxN)
 {
     return ratio < float(maxN) ? max(1, int(ceil(ratio - TF_ANISO_RATIO_SLACK))) : maxN;
 }
 
-tf_AnisoFootprint tf_aniso_footprint(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
+tfi_AnisoFootprint tfi_aniso_footprint(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
 {
     int maxN = clamp(maxProbes, 1, TF_ANISO_MAX_PROBES);
-    tf_AnisoFootprint fp = tf_AnisoFootprint(vec2(0.0), 1, 0.0);
+    tfi_AnisoFootprint fp = tfi_AnisoFootprint(vec2(0.0), 1, 0.0);
     vec2 size0 = vec2(textureSize(tex, 0));
     vec2 ax = dUVdx * size0, ay = dUVdy * size0; // the columns of J, in level-0 texels
     float m = max(max(abs(ax.x), abs(ax.y)), max(abs(ay.x), abs(ay.y)));
@@ -88,7 +88,7 @@ tf_AnisoFootprint tf_aniso_footprint(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_S
 
     if (shape != TF_ANISO_FELINE) {
         float px2 = dot(cx, cx), py2 = dot(cy, cy);
-        fp.probes = tf_aniso_count(sqrt(max(px2, py2) / min(px2, py2)), maxN);
+        fp.probes = tfi_aniso_count(sqrt(max(px2, py2) / min(px2, py2)), maxN);
         tf_Sampler t = s;
         if (fp.probes > 1) { // log2(Pmax/N) + bias = log2(Pmax) + (bias − log2 N); N = 1 stays tf_lod exactly
             t.lodBias -= log2(float(fp.probes));
@@ -105,10 +105,9 @@ tf_AnisoFootprint tf_aniso_footprint(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_S
     float G = 0.5 * (cx.y + cy.x), H = 0.5 * (cx.y - cy.x);
     float Q = length(vec2(E, H)), R = length(vec2(F, G));
     float major = Q + R, minor = abs(Q - R); // σ1, σ2 times 2^-e
-    fp.probes = tf_aniso_count(major / minor, maxN);
+    fp.probes = tfi_aniso_count(major / minor, maxN);
     float lambda = float(e) + log2(max(minor, major / float(fp.probes))) + s.lodBias;
-    float top = float(textureQueryLevels(tex) - 1);
-    fp.lod = clamp(clamp(lambda, s.lodMin, s.lodMax), 0.0, top);
+    fp.lod = tfi_clamp_lod(lambda, s, tex);
     if (fp.probes > 1) { // then major > minor, so R > 0, Q > 0 and z != 0
         vec2 z = vec2(F * E - G * H, F * H + G * E);
         float r = length(z);
@@ -119,32 +118,31 @@ tf_AnisoFootprint tf_aniso_footprint(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_S
 }
 
 // One trilinear probe at a given LOD in [0, levels−1], from texelFetch: tf_trilinear's blend.
-vec4 tf_aniso_probe(sampler2D tex, vec2 uv, float lod, int wrapMode)
+vec4 tfi_aniso_probe(sampler2D tex, vec2 uv, float lod, int wrapMode)
 {
-    int lo = int(floor(lod));
-    float f = lod - float(lo);
-    vec4 fine = tf_bilinear_level(tex, uv, lo, wrapMode);
-    if (f == 0.0)
-        return fine;
-    return mix(fine, tf_bilinear_level(tex, uv, lo + 1, wrapMode), f);
+    float f;
+    int lo = tfi_split_lod(lod, f);
+#define TFI_PROBE_LEVEL(level) tf_bilinear_level(tex, uv, level, wrapMode)
+    return TFI_BLEND_LEVELS(TFI_PROBE_LEVEL, lo, f);
+#undef TFI_PROBE_LEVEL
 }
 
 // One trilinear probe through the hardware sampler, at uv moved by whole periods as the manual form's
 // bilinear lookups do (a sampler given |uv| >= ~1e37 returns NaN on lavapipe: uv·size overflows).
-vec4 tf_aniso_probe_hw(sampler2D tex, vec2 uv, float lod, int wrapMode)
+vec4 tfi_aniso_probe_hw(sampler2D tex, vec2 uv, float lod, int wrapMode)
 {
     TF_COUNT_HW_LOOKUPS(1);
     return textureLod(tex, tf_reduce_uv(uv, wrapMode), lod);
 }
 
-vec4 tf_aniso_filter(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape,
+vec4 tfi_aniso_filter(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape,
                      bool hardware)
 {
     if (!tf_finite(uv))
         return vec4(0.0);
-    tf_AnisoFootprint fp = tf_aniso_footprint(tex, dUVdx, dUVdy, s, maxProbes, shape);
+    tfi_AnisoFootprint fp = tfi_aniso_footprint(tex, dUVdx, dUVdy, s, maxProbes, shape);
     if (fp.probes == 1)
-        return hardware ? tf_aniso_probe_hw(tex, uv, fp.lod, s.wrap) : tf_aniso_probe(tex, uv, fp.lod, s.wrap);
+        return hardware ? tfi_aniso_probe_hw(tex, uv, fp.lod, s.wrap) : tfi_aniso_probe(tex, uv, fp.lod, s.wrap);
     vec4 sum = vec4(0.0);
     float weights = 0.0;
     for (int k = 0; k < TF_ANISO_MAX_PROBES; ++k) {
@@ -153,7 +151,7 @@ vec4 tf_aniso_filter(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler 
         float t = (float(k) + 0.5) / float(fp.probes) - 0.5;
         float w = shape == TF_ANISO_FELINE ? exp(-8.0 * t * t) : 1.0;
         vec2 p = uv + t * fp.axis;
-        sum += w * (hardware ? tf_aniso_probe_hw(tex, p, fp.lod, s.wrap) : tf_aniso_probe(tex, p, fp.lod, s.wrap));
+        sum += w * (hardware ? tfi_aniso_probe_hw(tex, p, fp.lod, s.wrap) : tfi_aniso_probe(tex, p, fp.lod, s.wrap));
         weights += w;
     }
     return sum / weights;
@@ -161,12 +159,12 @@ vec4 tf_aniso_filter(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler 
 
 vec4 tf_aniso(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
 {
-    return tf_aniso_filter(tex, uv, dUVdx, dUVdy, s, maxProbes, shape, false);
+    return tfi_aniso_filter(tex, uv, dUVdx, dUVdy, s, maxProbes, shape, false);
 }
 
 vec4 tf_aniso_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
 {
-    return tf_aniso_filter(tex, uv, dUVdx, dUVdy, s, maxProbes, shape, true);
+    return tfi_aniso_filter(tex, uv, dUVdx, dUVdy, s, maxProbes, shape, true);
 }
 
 #endif

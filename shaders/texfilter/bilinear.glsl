@@ -27,7 +27,7 @@ vec4 tf_bilinear_level(sampler2D tex, vec2 uv, int level, int wrapMode)
     vec2 x = clamp(tf_reduce_uv(uv, wrapMode) * vec2(size) - 0.5, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
     vec2 i0 = floor(x);
     vec2 a = x - i0;
-    ivec2 xs = tf_wrap_pair(i0.x, size.x, wrapMode), ys = tf_wrap_pair(i0.y, size.y, wrapMode);
+    ivec2 xs = tfi_wrap_pair(i0.x, size.x, wrapMode), ys = tfi_wrap_pair(i0.y, size.y, wrapMode);
     TF_COUNT_FETCHES(4);
     vec4 top = mix(texelFetch(tex, ivec2(xs.x, ys.x), level), texelFetch(tex, ivec2(xs.y, ys.x), level), a.x);
     vec4 bottom = mix(texelFetch(tex, ivec2(xs.x, ys.y), level), texelFetch(tex, ivec2(xs.y, ys.y), level), a.x);

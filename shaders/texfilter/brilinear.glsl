@@ -44,14 +44,12 @@ float tf_brilinear_weight(float f, float band)
 
 vec4 tf_brilinear(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band)
 {
-    float lod = tf_lod(tex, dUVdx, dUVdy, s);
-    int lo = int(floor(lod));
-    float w = tf_brilinear_weight(lod - float(lo), band);
-    if (w == 0.0)
-        return tf_bilinear_level(tex, uv, lo, s.wrap); // finer level only (also on a level, or the last one)
-    if (w == 1.0)
-        return tf_bilinear_level(tex, uv, lo + 1, s.wrap); // coarser level only
-    return mix(tf_bilinear_level(tex, uv, lo, s.wrap), tf_bilinear_level(tex, uv, lo + 1, s.wrap), w);
+    float f;
+    int lo = tfi_split_lod(tf_lod(tex, dUVdx, dUVdy, s), f);
+    float w = tf_brilinear_weight(f, band); // 0 or 1 outside the band: one level, 4 fetches
+#define TFI_BRILINEAR_LEVEL(level) tf_bilinear_level(tex, uv, level, s.wrap)
+    return TFI_BLEND_LEVELS(TFI_BRILINEAR_LEVEL, lo, w);
+#undef TFI_BRILINEAR_LEVEL
 }
 
 #endif

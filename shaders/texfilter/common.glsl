@@ -76,7 +76,7 @@ int tf_wrap(float i, int size, int wrapMode)
 }
 
 // The texel pair (i, i + 1) of a linear lookup, wrapped: repeat wraps once and steps (one division, not two).
-ivec2 tf_wrap_pair(float i, int size, int wrapMode)
+ivec2 tfi_wrap_pair(float i, int size, int wrapMode)
 {
     int first = tf_wrap(i, size, wrapMode);
     if (wrapMode == TF_WRAP_REPEAT)

@@ -76,10 +76,10 @@
 #error "TF_EWA_MAX_TEXELS must be odd and at least 7"
 #endif
 
-#include "common.glsl"
+#include "lod.glsl"
 
 // Widens the row/column spans a little so that the r² test, not rounding in the span, decides.
-const float TF_EWA_SPAN_MARGIN = 1.0 / 256.0;
+const float TFI_EWA_SPAN_MARGIN = 1.0 / 256.0;
 
 // The weight's support: r² = xᵀM⁻¹x < TF_EWA_SUPPORT (R², in the footprint's own units: r = 1 is one
 // pixel from its centre). Below, M is scaled by R² so that the loops test the support ellipse against 1.
@@ -87,7 +87,7 @@ const float TF_EWA_SUPPORT = 2.0;
 
 // The ellipse of one lookup before any level: level-0 texel space, scaled by 1/m² (m = the largest
 // |gradient component|, so that 1e30 gradients do not overflow).
-struct tf_EwaShape {
+struct tfi_EwaShape {
     vec3 cov;     // (xx, xy, yy) of the clamped J·Jᵀ / m²
     float major2; // its eigenvalues / m², major2 >= minor2
     float minor2;
@@ -95,10 +95,9 @@ struct tf_EwaShape {
 };
 
 // Shape and (biased, clamped) LOD of a lookup.
-tf_EwaShape tf_ewa_shape(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float maxAniso, out float lambda)
+tfi_EwaShape tfi_ewa_shape(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float maxAniso, out float lambda)
 {
-    tf_EwaShape shape = tf_EwaShape(vec3(0.0), 0.0, 0.0, 0.0);
-    float top = float(textureQueryLevels(tex) - 1);
+    tfi_EwaShape shape = tfi_EwaShape(vec3(0.0), 0.0, 0.0, 0.0);
     vec2 size0 = vec2(textureSize(tex, 0));
     // NaN/±Inf, or a footprint entry (gradient · size) past float range: non-finite, as in every family.
     if (!tf_finite(dUVdx * size0) || !tf_finite(dUVdy * size0)) {
@@ -120,17 +119,14 @@ tf_EwaShape tf_ewa_shape(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
             minor2 = max(minor2, major2 / (e * e));
             // Clamped covariance = minor2·I + (major2 - minor2)·e1e1ᵀ, e1e1ᵀ the projector on the major axis.
             vec3 p1 = d > 0.0 ? 0.5 * vec3(1.0 + h / d, xy / d, 1.0 - h / d) : vec3(0.5, 0.0, 0.5);
-            shape = tf_EwaShape(vec3(minor2, 0.0, minor2) + max(major2 - minor2, 0.0) * p1, major2, minor2, m);
+            shape = tfi_EwaShape(vec3(minor2, 0.0, minor2) + max(major2 - minor2, 0.0) * p1, major2, minor2, m);
             // On the LOD's level the support's major semi-axis stays inside the loop cap (see the header).
             const float majorTexels = 0.25 * float(TF_EWA_MAX_TEXELS - 3) / sqrt(TF_EWA_SUPPORT);
             lambda = log2(m) + max(0.5 * log2(max(minor2, 1e-30)), 0.5 * log2(major2) - log2(majorTexels)) +
                      s.lodBias;
         }
     }
-    lambda = min(max(lambda, s.lodMin), s.lodMax);
-    if (isnan(lambda))
-        lambda = top;
-    lambda = clamp(lambda, 0.0, top);
+    lambda = tfi_clamp_lod(lambda, s, tex);
     return shape;
 }
 
@@ -139,7 +135,7 @@ tf_EwaShape tf_ewa_shape(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
 // from it are exact in float. For repeat/mirror, base is moved by a multiple of 2·size into
 // [0, 2·size): both modes repeat every 2·size texels, and the parity that anchors tf_ewa_hw's 2x2 grid
 // is kept. uv has been through tf_reduce_uv.
-void tf_ewa_level_ellipse(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShape shape, out vec3 M,
+void tfi_ewa_level_ellipse(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, out vec3 M,
                           out float det, out vec2 base, out vec2 frac)
 {
     vec2 size = vec2(tf_level_size(tex, level));
@@ -165,7 +161,7 @@ void tf_ewa_level_ellipse(sampler2D tex, vec2 uv, int level, int wrapMode, tf_Ew
 }
 
 // r²/R² = xᵀ(R²M)⁻¹x for x = (dx, dy): below 1 inside the support.
-float tf_ewa_r2(vec3 M, float det, float dx, float dy)
+float tfi_ewa_r2(vec3 M, float det, float dx, float dy)
 {
     return (M.z * dx * dx - 2.0 * M.y * dx * dy + M.x * dy * dy) / det;
 }
@@ -173,7 +169,7 @@ float tf_ewa_r2(vec3 M, float det, float dx, float dy)
 // The weight exp(-alpha r²) - exp(-alpha R²) (r2 = r²/R² here), continuous at the support's edge, divided
 // by alpha R² (the sums are normalised, so that alpha 0 has a limit: 1 - r²/R²). Near the edge, where
 // the difference would cancel (q < ½), exp(-alpha R²)·expm1(q)/(alpha R²) as a series, q = alpha R² (1 - r²/R²).
-float tf_ewa_weight(float r2, float alpha)
+float tfi_ewa_weight(float r2, float alpha)
 {
     float t = 1.0 - r2, aR2 = alpha * TF_EWA_SUPPORT, q = aR2 * t, edge = exp(-aR2);
     if (q >= 0.5)
@@ -186,27 +182,27 @@ float tf_ewa_weight(float r2, float alpha)
 
 // Texel offsets [lo, hi] (from base) of the row at dy from the centre whose centres lie in the
 // ellipse (lo > hi: none); fx = frac.x.
-vec2 tf_ewa_row_span(vec3 M, float det, float fx, float dy)
+vec2 tfi_ewa_row_span(vec3 M, float det, float fx, float dy)
 {
     float disc = M.z - dy * dy;
     if (disc < 0.0)
         return vec2(1.0, 0.0);
     float xc = fx + M.y / M.z * dy, halfWidth = sqrt(det * disc) / M.z;
-    return vec2(ceil(xc - halfWidth - 0.5 - TF_EWA_SPAN_MARGIN), floor(xc + halfWidth - 0.5 + TF_EWA_SPAN_MARGIN));
+    return vec2(ceil(xc - halfWidth - 0.5 - TFI_EWA_SPAN_MARGIN), floor(xc + halfWidth - 0.5 + TFI_EWA_SPAN_MARGIN));
 }
 
 // Texel row offsets [lo, hi] (from base) that the ellipse can reach; fy = frac.y.
-vec2 tf_ewa_rows(vec3 M, float fy)
+vec2 tfi_ewa_rows(vec3 M, float fy)
 {
     float hy = sqrt(M.z);
-    return vec2(ceil(fy - hy - 0.5 - TF_EWA_SPAN_MARGIN), floor(fy + hy - 0.5 + TF_EWA_SPAN_MARGIN));
+    return vec2(ceil(fy - hy - 0.5 - TFI_EWA_SPAN_MARGIN), floor(fy + hy - 0.5 + TFI_EWA_SPAN_MARGIN));
 }
 
 // Weighted moments of one level's texels about the lookup's centre, d = texel centre - centre (in
-// tf_ewa_level's whitened coordinates): w = sum w, wd = sum w·d, wdd = sum w·(dx², dx·dy, dy²), t = sum w·(value - pivot), tx, ty =
-// sum w·dx·(value - pivot), sum w·dy·(value - pivot); pivot = the first texel's value (so that the sums
+// tfi_ewa_level's whitened coordinates): w = sum w, wd = sum w·d, wdd = sum w·(dx², dx·dy, dy²),
+// t = sum w·(value - pivot), tx, ty = sum w·dx·(value - pivot), sum w·dy·(value - pivot); pivot = the first texel's value (so that the sums
 // are small and a constant texture gives exactly its value); lo, hi = the texels' per-channel range.
-struct tf_EwaMoments {
+struct tfi_EwaMoments {
     float w;
     vec2 wd;
     vec3 wdd;
@@ -219,7 +215,7 @@ struct tf_EwaMoments {
 // the level); where the centroid is at the centre it is the weighted mean. The support holds the disc
 // of radius sqrt(R²) = 1.41 texels, so at least 3 of the 4 nearest texel centres, never on one line:
 // the 2x2 system is never singular (a single sample, impossible, would return the mean).
-vec4 tf_ewa_fit_unclamped(tf_EwaMoments s)
+vec4 tfi_ewa_fit_unclamped(tfi_EwaMoments s)
 {
     if (!(s.w > 0.0))
         return vec4(0.0);
@@ -238,32 +234,32 @@ vec4 tf_ewa_fit_unclamped(tf_EwaMoments s)
 // (by up to 2 % of the step at alpha 8 on a checker, none measured at alpha <= 2). The clamp keeps linear
 // textures exact: the 4 texel centres around uv lie in the support (the disc of radius 1.41 texels), so
 // uv is inside their hull and a linear texture's value there within their range.
-vec4 tf_ewa_fit(tf_EwaMoments s)
+vec4 tfi_ewa_fit(tfi_EwaMoments s)
 {
-    return clamp(tf_ewa_fit_unclamped(s), s.lo, s.hi);
+    return clamp(tfi_ewa_fit_unclamped(s), s.lo, s.hi);
 }
 
-// The filter on one level: every texel inside the support (texelFetch), fitted (tf_ewa_fit).
-vec4 tf_ewa_level(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShape shape, float alpha)
+// The filter on one level: every texel inside the support (texelFetch), fitted (tfi_ewa_fit).
+vec4 tfi_ewa_level(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, float alpha)
 {
     vec3 M;
     float det;
     vec2 base, frac;
-    tf_ewa_level_ellipse(tex, uv, level, wrapMode, shape, M, det, base, frac);
+    tfi_ewa_level_ellipse(tex, uv, level, wrapMode, shape, M, det, base, frac);
     ivec2 size = tf_level_size(tex, level);
-    vec2 rowSpan = tf_ewa_rows(M, frac.y);
+    vec2 rowSpan = tfi_ewa_rows(M, frac.y);
     int rows = int(clamp(rowSpan.y - rowSpan.x + 1.0, 0.0, float(TF_EWA_MAX_TEXELS)));
     // Moments in whitened coordinates y = R·d, RᵀR = (R²M)⁻¹ (Cholesky, R upper triangular): the support
     // is the unit disc there, so the fit's 2x2 system is well conditioned however thin the ellipse (the
     // fit's value does not depend on the coordinates).
     float r11 = sqrt(M.z / det), r12 = -M.y / (det * r11), r22 = inversesqrt(M.z);
-    tf_EwaMoments s = tf_EwaMoments(0.0, vec2(0.0), vec3(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0),
+    tfi_EwaMoments s = tfi_EwaMoments(0.0, vec2(0.0), vec3(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0),
                                     vec4(0.0));
     for (int k = 0; k < TF_EWA_MAX_TEXELS; ++k) {
         if (k >= rows)
             break;
         float j = rowSpan.x + float(k), dy = j + 0.5 - frac.y, yy = r22 * dy, cx = r12 * dy;
-        vec2 span = tf_ewa_row_span(M, det, frac.x, dy);
+        vec2 span = tfi_ewa_row_span(M, det, frac.x, dy);
         int cols = int(clamp(span.y - span.x + 1.0, 0.0, float(TF_EWA_MAX_TEXELS)));
         int ty = tf_wrap(base.y + j, size.y, wrapMode);
         // One row: y.y is constant, so its sums need only the y.x moments.
@@ -273,9 +269,9 @@ vec4 tf_ewa_level(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShape s
             if (n >= cols)
                 break;
             float i = span.x + float(n), dx = i + 0.5 - frac.x;
-            float r2 = tf_ewa_r2(M, det, dx, dy);
+            float r2 = tfi_ewa_r2(M, det, dx, dy);
             if (r2 < 1.0) {
-                float w = tf_ewa_weight(r2, alpha), yx = r11 * dx + cx, wx = w * yx;
+                float w = tfi_ewa_weight(r2, alpha), yx = r11 * dx + cx, wx = w * yx;
                 TF_COUNT_FETCHES(1);
                 vec4 t = texelFetch(tex, ivec2(tf_wrap(base.x + i, size.x, wrapMode), ty), level);
                 if (s.w + rw == 0.0) {
@@ -300,26 +296,26 @@ vec4 tf_ewa_level(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShape s
         s.tx += rtx;
         s.ty += yy * rt;
     }
-    return tf_ewa_fit(s);
+    return tfi_ewa_fit(s);
 }
 
 // The same filter from hardware bilinear lookups: one per 2x2 block of texels 2b, 2b+1 on each axis,
 // at the block's weight centroid, weighted by the block's total weight. Their weighted mean is centred
-// on the texels' weight centroid, not on the lookup's centre (the fit of tf_ewa_level needs 3 samples
+// on the texels' weight centroid, not on the lookup's centre (the fit of tfi_ewa_level needs 3 samples
 // not on a line, which a few merged blocks need not give): a first pass over the weights finds that
 // offset m, the second moves every tap by -m, which centres the taps' mean on uv. Exact on a linear
 // texture (a bilinear lookup reproduces it wherever it lands), the same as the fit where the weights
 // are symmetric.
-vec4 tf_ewa_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShape shape, float alpha)
+vec4 tfi_ewa_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, float alpha)
 {
     const int maxBlocks = TF_EWA_MAX_TEXELS / 2 + 1; // K texels touch at most K/2+1 blocks
     vec3 M;
     float det;
     vec2 base, frac;
-    tf_ewa_level_ellipse(tex, uv, level, wrapMode, shape, M, det, base, frac);
+    tfi_ewa_level_ellipse(tex, uv, level, wrapMode, shape, M, det, base, frac);
     vec2 size = vec2(tf_level_size(tex, level));
     vec2 parity = base - 2.0 * floor(0.5 * base); // blocks start at offsets o with base + o even
-    vec2 rowSpan = tf_ewa_rows(M, frac.y);
+    vec2 rowSpan = tfi_ewa_rows(M, frac.y);
     float firstRow = 2.0 * floor(0.5 * (rowSpan.x + parity.y)) - parity.y;
     int blockRows = int(clamp(floor(0.5 * (rowSpan.y - firstRow)) + 1.0, 0.0, float(maxBlocks)));
     vec4 sum = vec4(0.0);
@@ -331,7 +327,7 @@ vec4 tf_ewa_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShap
                 break;
             float j0 = firstRow + 2.0 * float(k);
             float dy0 = j0 + 0.5 - frac.y, dy1 = dy0 + 1.0;
-            vec2 span0 = tf_ewa_row_span(M, det, frac.x, dy0), span1 = tf_ewa_row_span(M, det, frac.x, dy1);
+            vec2 span0 = tfi_ewa_row_span(M, det, frac.x, dy0), span1 = tfi_ewa_row_span(M, det, frac.x, dy1);
             float lo = min(span0.x <= span0.y ? span0.x : 1e30, span1.x <= span1.y ? span1.x : 1e30);
             float hi = max(span0.x <= span0.y ? span0.y : -1e30, span1.x <= span1.y ? span1.y : -1e30);
             if (lo > hi)
@@ -343,10 +339,10 @@ vec4 tf_ewa_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShap
                     break;
                 float i0 = firstCol + 2.0 * float(n);
                 float dx0 = i0 + 0.5 - frac.x, dx1 = dx0 + 1.0;
-                vec4 r2 = vec4(tf_ewa_r2(M, det, dx0, dy0), tf_ewa_r2(M, det, dx1, dy0), tf_ewa_r2(M, det, dx0, dy1),
-                               tf_ewa_r2(M, det, dx1, dy1));
-                vec4 w = vec4(tf_ewa_weight(r2.x, alpha), tf_ewa_weight(r2.y, alpha), tf_ewa_weight(r2.z, alpha),
-                              tf_ewa_weight(r2.w, alpha));
+                vec4 r2 = vec4(tfi_ewa_r2(M, det, dx0, dy0), tfi_ewa_r2(M, det, dx1, dy0), tfi_ewa_r2(M, det, dx0, dy1),
+                               tfi_ewa_r2(M, det, dx1, dy1));
+                vec4 w = vec4(tfi_ewa_weight(r2.x, alpha), tfi_ewa_weight(r2.y, alpha), tfi_ewa_weight(r2.z, alpha),
+                              tfi_ewa_weight(r2.w, alpha));
                 w = mix(vec4(0.0), w, lessThan(r2, vec4(1.0))); // w00, w10, w01, w11
                 float total = w.x + w.y + w.z + w.w;
                 if (total > 0.0) {
@@ -371,17 +367,17 @@ vec4 tf_ewa_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShap
 }
 
 // One level: a 1x1 level is its texel whatever the ellipse (saves up to K² reads of it at the horizon).
-vec4 tf_ewa_on_level(sampler2D tex, vec2 uv, int level, int wrapMode, tf_EwaShape shape, float alpha, bool hardware)
+vec4 tfi_ewa_on_level(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, float alpha, bool hardware)
 {
     if (tf_level_size(tex, level) == ivec2(1)) {
         TF_COUNT_FETCHES(1);
         return texelFetch(tex, ivec2(0), level);
     }
-    return hardware ? tf_ewa_level_hw(tex, uv, level, wrapMode, shape, alpha)
-                    : tf_ewa_level(tex, uv, level, wrapMode, shape, alpha);
+    return hardware ? tfi_ewa_level_hw(tex, uv, level, wrapMode, shape, alpha)
+                    : tfi_ewa_level(tex, uv, level, wrapMode, shape, alpha);
 }
 
-vec4 tf_ewa_impl(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso,
+vec4 tfi_ewa_impl(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso,
                  bool hardware)
 {
     if (!tf_finite(uv))
@@ -389,23 +385,22 @@ vec4 tf_ewa_impl(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, f
     uv = tf_reduce_uv(uv, s.wrap);
     float a = alpha >= 0.0 ? min(alpha, 64.0) : 0.0;
     float lambda;
-    tf_EwaShape shape = tf_ewa_shape(tex, dUVdx, dUVdy, s, maxAniso, lambda);
-    int lo = int(floor(lambda));
-    float f = lambda - float(lo);
-    vec4 fine = tf_ewa_on_level(tex, uv, lo, s.wrap, shape, a, hardware);
-    if (f == 0.0)
-        return fine; // on a level, or clamped to the last one: the second level would weigh 0
-    return mix(fine, tf_ewa_on_level(tex, uv, lo + 1, s.wrap, shape, a, hardware), f);
+    tfi_EwaShape shape = tfi_ewa_shape(tex, dUVdx, dUVdy, s, maxAniso, lambda);
+    float f;
+    int lo = tfi_split_lod(lambda, f);
+#define TFI_EWA_LEVEL(level) tfi_ewa_on_level(tex, uv, level, s.wrap, shape, a, hardware)
+    return TFI_BLEND_LEVELS(TFI_EWA_LEVEL, lo, f);
+#undef TFI_EWA_LEVEL
 }
 
 vec4 tf_ewa(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso)
 {
-    return tf_ewa_impl(tex, uv, dUVdx, dUVdy, s, alpha, maxAniso, false);
+    return tfi_ewa_impl(tex, uv, dUVdx, dUVdy, s, alpha, maxAniso, false);
 }
 
 vec4 tf_ewa_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso)
 {
-    return tf_ewa_impl(tex, uv, dUVdx, dUVdy, s, alpha, maxAniso, true);
+    return tfi_ewa_impl(tex, uv, dUVdx, dUVdy, s, alpha, maxAniso, true);
 }
 
 #endif

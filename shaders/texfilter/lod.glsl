@@ -11,6 +11,7 @@
 // Cost:    no texel fetch (one log2).
 // Degenerate input: zero gradients give the finest level allowed (λ = −∞ before clamping); NaN or ±Inf
 //          gradients, or ρ past float range, the coarsest (+∞): a defined, blurry answer, never undefined.
+//          A NaN λ (a NaN lodBias) counts as +∞ too, a NaN lodMin or lodMax as no bound (docs/API.md).
 // Example: int level = tf_mip_level_nearest(tf_lod(tex, dFdxFine(uv), dFdyFine(uv), s));
 #ifndef TF_LOD_GLSL
 #define TF_LOD_GLSL
@@ -30,12 +31,39 @@ float tf_lod_unclamped(sampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias)
     return 0.5 * log2(rho2) + lodBias;
 }
 
+// The LOD clamps every filter that picks levels shares: λ to [s.lodMin, s.lodMax], then to the levels
+// [0, levels − 1]. SPIR-V leaves FClamp, FMin and FMax (GLSL clamp, min, max) undefined for a NaN operand, so
+// NaN is decided first, with isnan: a NaN λ counts as +∞ (blur fully, as non-finite gradients do: the
+// coarsest level the clamps allow), a NaN lodMin or lodMax as no bound. Finite input: clamp(clamp(λ, lodMin,
+// lodMax), 0, levels − 1) exactly. host/reference/reference.cpp clamp_lod follows the same rule.
+float tfi_clamp_lod(float lambda, tf_Sampler s, sampler2D tex)
+{
+    float lod = isnan(lambda) ? 1.0 / 0.0 : lambda;
+    if (!isnan(s.lodMin))
+        lod = max(lod, s.lodMin);
+    if (!isnan(s.lodMax))
+        lod = min(lod, s.lodMax);
+    return clamp(lod, 0.0, float(textureQueryLevels(tex) - 1)); // lod is not NaN here
+}
+
 float tf_lod(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
 {
-    float lambda = tf_lod_unclamped(tex, dUVdx, dUVdy, s.lodBias);
-    float top = float(textureQueryLevels(tex) - 1);
-    return clamp(clamp(lambda, s.lodMin, s.lodMax), 0.0, top);
+    return tfi_clamp_lod(tf_lod_unclamped(tex, dUVdx, dUVdy, s.lodBias), s, tex);
 }
+
+// The two-level blend every filter that blends MIP levels shares (trilinear, brilinear, the aniso probes,
+// ewa). tfi_split_lod splits a clamped LOD into the finer level floor(lod), returned, and the coarser
+// level's weight frac(lod). TFI_BLEND_LEVELS(LEVEL, lo, w) is (1 − w)·LEVEL(lo) + w·LEVEL(lo + 1) for a
+// function-like macro LEVEL(l), the filter's value on level l; a level that weighs 0 is not evaluated, so
+// its fetches are not paid (λ on a level or clamped to the last one, or outside brilinear's band).
+int tfi_split_lod(float lod, out float f)
+{
+    float lo = floor(lod);
+    f = lod - lo;
+    return int(lo);
+}
+#define TFI_BLEND_LEVELS(LEVEL, lo, w) \
+    ((w) == 0.0 ? LEVEL(lo) : (w) == 1.0 ? LEVEL((lo) + 1) : mix(LEVEL(lo), LEVEL((lo) + 1), (w)))
 
 // Vulkan mipmapMode NEAREST: ceil(d + 0.5) - 1, so d = 0.5 still picks the finer level. Written with
 // floor and a comparison because lod + 0.5 rounds in float (1.50000012 + 0.5 == 2.0 exactly).

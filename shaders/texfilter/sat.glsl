@@ -93,69 +93,69 @@
 
 // Integers modulo 2^40, one per channel: bits 0..31 in lo, bits 32.. in hi. Arithmetic runs modulo 2^64
 // (2^40 divides 2^64) and only the low 8 bits of hi are kept when converting.
-struct tf_SatInt {
+struct tfi_SatInt {
     uvec4 lo;
     uvec4 hi;
 };
 
-tf_SatInt tf_sat_add(tf_SatInt a, tf_SatInt b)
+tfi_SatInt tfi_sat_add(tfi_SatInt a, tfi_SatInt b)
 {
     uvec4 carry;
     uvec4 lo = uaddCarry(a.lo, b.lo, carry);
-    return tf_SatInt(lo, a.hi + b.hi + carry);
+    return tfi_SatInt(lo, a.hi + b.hi + carry);
 }
 
-tf_SatInt tf_sat_sub(tf_SatInt a, tf_SatInt b)
+tfi_SatInt tfi_sat_sub(tfi_SatInt a, tfi_SatInt b)
 {
     uvec4 borrow;
     uvec4 lo = usubBorrow(a.lo, b.lo, borrow);
-    return tf_SatInt(lo, a.hi - b.hi - borrow);
+    return tfi_SatInt(lo, a.hi - b.hi - borrow);
 }
 
 // a·k for a small signed integer k.
-tf_SatInt tf_sat_mul(tf_SatInt a, int k)
+tfi_SatInt tfi_sat_mul(tfi_SatInt a, int k)
 {
     uint m = uint(abs(k));
     uvec4 msb, lsb;
     umulExtended(a.lo, uvec4(m), msb, lsb);
-    tf_SatInt p = tf_SatInt(lsb, a.hi * m + msb);
-    return k < 0 ? tf_sat_sub(tf_SatInt(uvec4(0u), uvec4(0u)), p) : p;
+    tfi_SatInt p = tfi_SatInt(lsb, a.hi * m + msb);
+    return k < 0 ? tfi_sat_sub(tfi_SatInt(uvec4(0u), uvec4(0u)), p) : p;
 }
 
 // The value modulo 2^40 as a float (used only on exact, non-negative block sums).
-vec4 tf_sat_to_float(tf_SatInt a) { return vec4(a.hi & 0xFFu) * 4294967296.0 + vec4(a.lo); }
+vec4 tfi_sat_to_float(tfi_SatInt a) { return vec4(a.hi & 0xFFu) * 4294967296.0 + vec4(a.lo); }
 
-tf_SatInt tf_sat_entry(usampler2D satLow, usampler2D satHigh, ivec2 t)
+tfi_SatInt tfi_sat_entry(usampler2D satLow, usampler2D satHigh, ivec2 t)
 {
     TF_COUNT_FETCHES(2);
     uint h = texelFetch(satHigh, t, 0).r;
-    return tf_SatInt(texelFetch(satLow, t, 0), uvec4(h, h >> 8, h >> 16, h >> 24) & 0xFFu);
+    return tfi_SatInt(texelFetch(satLow, t, 0), uvec4(h, h >> 8, h >> 16, h >> 24) & 0xFFu);
 }
 
 // One integer coordinate i of the extended table along an axis of n texels: E(i) = c.x·S(t.x) + c.y·S(t.y)
 // (a zero coefficient: no term). See the header for the formulas.
-struct tf_SatTerms {
+struct tfi_SatTerms {
     ivec2 t;
     ivec2 c;
 };
 
-tf_SatTerms tf_sat_axis(int i, int n, int wrapMode)
+tfi_SatTerms tfi_sat_axis(int i, int n, int wrapMode)
 {
     if (i >= 0 && i <= n)
-        return tf_SatTerms(ivec2(i, 0), ivec2(1, 0));
-    tf_SatTerms e;
+        return tfi_SatTerms(ivec2(i, 0), ivec2(1, 0));
+    tfi_SatTerms e;
     if (wrapMode == TF_WRAP_CLAMP) {
-        e = i < 0 ? tf_SatTerms(ivec2(1, 0), ivec2(i, 0)) : tf_SatTerms(ivec2(n, n - 1), ivec2(1 + i - n, n - i));
+        e = i < 0 ? tfi_SatTerms(ivec2(1, 0), ivec2(i, 0)) : tfi_SatTerms(ivec2(n, n - 1), ivec2(1 + i - n, n - i));
     } else {
         int period = wrapMode == TF_WRAP_MIRROR ? 2 * n : n;
         int q = (i >= 0 ? i : i - period + 1) / period; // floor division (int / truncates toward zero)
         int r = i - q * period;
         if (wrapMode != TF_WRAP_MIRROR)
-            e = tf_SatTerms(ivec2(n, r), ivec2(q, 1));
+            e = tfi_SatTerms(ivec2(n, r), ivec2(q, 1));
         else if (r <= n)
-            e = tf_SatTerms(ivec2(n, r), ivec2(2 * q, 1));
+            e = tfi_SatTerms(ivec2(n, r), ivec2(2 * q, 1));
         else
-            e = tf_SatTerms(ivec2(n, period - r), ivec2(2 * q + 2, -1));
+            e = tfi_SatTerms(ivec2(n, period - r), ivec2(2 * q + 2, -1));
     }
     if (e.t.y == 0) // S(0) = 0: nothing to read
         e.c.y = 0;
@@ -163,23 +163,23 @@ tf_SatTerms tf_sat_axis(int i, int n, int wrapMode)
 }
 
 // Extended table entry at the corner (x, y): up to 4 table entries with integer coefficients.
-tf_SatInt tf_sat_corner(usampler2D satLow, usampler2D satHigh, tf_SatTerms x, tf_SatTerms y)
+tfi_SatInt tfi_sat_corner(usampler2D satLow, usampler2D satHigh, tfi_SatTerms x, tfi_SatTerms y)
 {
-    tf_SatInt sum = tf_SatInt(uvec4(0u), uvec4(0u));
+    tfi_SatInt sum = tfi_SatInt(uvec4(0u), uvec4(0u));
     for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b) {
             int k = x.c[a] * y.c[b];
             if (k == 0)
                 continue;
-            tf_SatInt e = tf_sat_entry(satLow, satHigh, ivec2(x.t[a], y.t[b]));
-            sum = tf_sat_add(sum, k == 1 ? e : tf_sat_mul(e, k));
+            tfi_SatInt e = tfi_sat_entry(satLow, satHigh, ivec2(x.t[a], y.t[b]));
+            sum = tfi_sat_add(sum, k == 1 ? e : tfi_sat_mul(e, k));
         }
     return sum;
 }
 
 // One axis of the box [x0, x1): corners (i0, i0+1, i1, i1+1) and the weights of the three intervals
 // between them (first texel, whole texels, last texel) divided by the width.
-void tf_sat_edges(float x0, float x1, out ivec4 corners, out vec3 weights)
+void tfi_sat_edges(float x0, float x1, out ivec4 corners, out vec3 weights)
 {
     float f0 = floor(x0);
     float l1 = max(ceil(x1) - 1.0, f0);
@@ -192,26 +192,26 @@ void tf_sat_edges(float x0, float x1, out ivec4 corners, out vec3 weights)
 }
 
 // Mean over the box [lo, hi) in texel units (corners within ±2^24), in the units of the texture.
-vec4 tf_sat_box(usampler2D satLow, usampler2D satHigh, vec2 lo, vec2 hi, ivec2 size, int wrapMode, vec4 offset,
+vec4 tfi_sat_box(usampler2D satLow, usampler2D satHigh, vec2 lo, vec2 hi, ivec2 size, int wrapMode, vec4 offset,
                 vec4 scale)
 {
     ivec4 px, py;
     vec3 wx, wy;
-    tf_sat_edges(lo.x, hi.x, px, wx);
-    tf_sat_edges(lo.y, hi.y, py, wy);
-    tf_SatTerms tx[4];
+    tfi_sat_edges(lo.x, hi.x, px, wx);
+    tfi_sat_edges(lo.y, hi.y, py, wy);
+    tfi_SatTerms tx[4];
     for (int k = 0; k < 4; ++k)
-        tx[k] = tf_sat_axis(px[k], size.x, wrapMode);
+        tx[k] = tfi_sat_axis(px[k], size.x, wrapMode);
     vec4 sum = vec4(0.0);
-    tf_SatInt previous[3]; // x differences E(px[k+1], y) − E(px[k], y) of the previous corner row
+    tfi_SatInt previous[3]; // x differences E(px[k+1], y) − E(px[k], y) of the previous corner row
     for (int l = 0; l < 4; ++l) {
-        tf_SatTerms ty = tf_sat_axis(py[l], size.y, wrapMode);
-        tf_SatInt e0 = tf_sat_corner(satLow, satHigh, tx[0], ty);
+        tfi_SatTerms ty = tfi_sat_axis(py[l], size.y, wrapMode);
+        tfi_SatInt e0 = tfi_sat_corner(satLow, satHigh, tx[0], ty);
         for (int k = 0; k < 3; ++k) {
-            tf_SatInt e1 = tf_sat_corner(satLow, satHigh, tx[k + 1], ty);
-            tf_SatInt d = tf_sat_sub(e1, e0);
+            tfi_SatInt e1 = tfi_sat_corner(satLow, satHigh, tx[k + 1], ty);
+            tfi_SatInt d = tfi_sat_sub(e1, e0);
             if (l > 0) // block [px[k], px[k+1]) x [py[l-1], py[l]): exact, then weighted in float
-                sum += (wx[k] * wy[l - 1]) * tf_sat_to_float(tf_sat_sub(d, previous[k]));
+                sum += (wx[k] * wy[l - 1]) * tfi_sat_to_float(tfi_sat_sub(d, previous[k]));
             previous[k] = d;
             e0 = e1;
         }
@@ -221,7 +221,7 @@ vec4 tf_sat_box(usampler2D satLow, usampler2D satHigh, vec2 lo, vec2 hi, ivec2 s
 
 // Moves uv by whole periods into [0, 1) (repeat) or [0, 2) (mirror): changes nothing (and is exact in
 // float), keeps coordinates small, and is idempotent. Clamp: unchanged.
-vec2 tf_sat_period(vec2 uv, int wrapMode)
+vec2 tfi_sat_period(vec2 uv, int wrapMode)
 {
     if (wrapMode == TF_WRAP_CLAMP)
         return uv;
@@ -231,20 +231,20 @@ vec2 tf_sat_period(vec2 uv, int wrapMode)
 }
 
 // Mean over the box of half-extents h (texel units) centred on uv.
-vec4 tf_sat_centred(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 h, ivec2 size, int wrapMode, vec4 offset,
+vec4 tfi_sat_centred(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 h, ivec2 size, int wrapMode, vec4 offset,
                     vec4 scale)
 {
     vec2 n = vec2(size);
     h = min(h, 0.5 * n); // at most W x H texels: the bit budget
     // Clamp: from −1 or 2 outward a box of at most the texture's size sees only edge texels.
-    uv = wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0, 2.0) : tf_sat_period(uv, wrapMode);
+    uv = wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0, 2.0) : tfi_sat_period(uv, wrapMode);
     vec2 c = uv * n;
-    return tf_sat_box(satLow, satHigh, c - h, c + h, size, wrapMode, offset, scale);
+    return tfi_sat_box(satLow, satHigh, c - h, c + h, size, wrapMode, offset, scale);
 }
 
 // The footprint's columns J·e_x, J·e_y in level-0 texels times exp2(lodBias), components clamped to
 // ±2^24. False for non-finite gradients.
-bool tf_sat_columns(ivec2 size, vec2 dUVdx, vec2 dUVdy, float lodBias, out vec2 jx, out vec2 jy)
+bool tfi_sat_columns(ivec2 size, vec2 dUVdx, vec2 dUVdy, float lodBias, out vec2 jx, out vec2 jy)
 {
     jx = vec2(0.0);
     jy = vec2(0.0);
@@ -263,9 +263,9 @@ vec4 tf_sat(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUV
     if (!tf_finite(uv) || any(lessThan(size, ivec2(1)))) // no table bound: nothing to average
         return vec4(0.0);
     vec2 jx, jy;
-    if (!tf_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
-        return tf_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, offset, scale);
-    return tf_sat_centred(satLow, satHigh, uv, 0.5 * (abs(jx) + abs(jy)), size, s.wrap, offset, scale);
+    if (!tfi_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
+        return tfi_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, offset, scale);
+    return tfi_sat_centred(satLow, satHigh, uv, 0.5 * (abs(jx) + abs(jy)), size, s.wrap, offset, scale);
 }
 
 vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s,
@@ -275,19 +275,19 @@ vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx,
     if (!tf_finite(uv) || any(lessThan(size, ivec2(1)))) // no table bound: nothing to average
         return vec4(0.0);
     vec2 jx, jy;
-    if (!tf_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
-        return tf_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, offset, scale);
+    if (!tfi_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
+        return tfi_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, offset, scale);
     int k = clamp(boxes, 1, 16);
     float n = float(k);
     bool xMajor = dot(jx, jx) >= dot(jy, jy);
     vec2 major = xMajor ? jx : jy;
     vec2 minor = xMajor ? jy : jx;
     vec2 h = 0.5 * (abs(major) / n + abs(minor)); // every slice's bounding box
-    uv = tf_sat_period(uv, s.wrap); // before adding offsets: keeps float precision in the slice centres
+    uv = tfi_sat_period(uv, s.wrap); // before adding offsets: keeps float precision in the slice centres
     vec4 sum = vec4(0.0);
     for (int i = 0; i < k; ++i) {
         float a = (float(i) + 0.5) / n - 0.5; // slice centre along the major column, in (−½, ½)
-        sum += tf_sat_centred(satLow, satHigh, uv + major * a / vec2(size), h, size, s.wrap, offset, scale);
+        sum += tfi_sat_centred(satLow, satHigh, uv + major * a / vec2(size), h, size, s.wrap, offset, scale);
     }
     return sum / n;
 }

@@ -18,13 +18,11 @@
 
 vec4 tf_trilinear(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
 {
-    float lod = tf_lod(tex, dUVdx, dUVdy, s);
-    int lo = int(floor(lod));
-    float f = lod - float(lo);
-    vec4 fine = tf_bilinear_level(tex, uv, lo, s.wrap);
-    if (f == 0.0)
-        return fine; // on a level, or clamped to the last one: the second level would weigh 0
-    return mix(fine, tf_bilinear_level(tex, uv, lo + 1, s.wrap), f);
+    float f;
+    int lo = tfi_split_lod(tf_lod(tex, dUVdx, dUVdy, s), f);
+#define TFI_TRILINEAR_LEVEL(level) tf_bilinear_level(tex, uv, level, s.wrap)
+    return TFI_BLEND_LEVELS(TFI_TRILINEAR_LEVEL, lo, f);
+#undef TFI_TRILINEAR_LEVEL
 }
 
 #endif
