@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The includes as a product: install texfilter to a temporary prefix, check what landed there, and build
-# and run examples/ (a standalone project) against the installed package only.
+# The includes and texfilter::host as a product: install texfilter to a temporary prefix, check what landed
+# there, and build and run examples/ (a standalone project) against the installed package only.
 #
 # usage: install_consumer.sh BUILD_DIR REPO_ROOT
 set -euo pipefail
@@ -17,11 +17,12 @@ prefix=$work/prefix
 cmake --install "$build" --prefix "$prefix" >/dev/null
 for file in bin/texfilter include/texfilter/texfilter.glsl include/texfilter/version.glsl \
     lib/cmake/texfilter/texfilterConfig.cmake lib/cmake/texfilter/texfilterConfigVersion.cmake \
-    lib/cmake/texfilter/texfilterShaders.cmake share/doc/texfilter/CHANGELOG.md; do
+    lib/cmake/texfilter/texfilterShaders.cmake lib/cmake/texfilter/texfilterTargets.cmake \
+    include/texfilter/host.h lib/libtexfilter_host.a share/doc/texfilter/CHANGELOG.md; do
     [[ -s $prefix/$file ]] || { echo "install_consumer: $file was not installed" >&2; exit 1; }
 done
-# Every include of the source tree, and nothing of the harness.
-diff <(cd "$root/shaders/texfilter" && ls *.glsl) <(cd "$prefix/include/texfilter" && ls)
+# Every include of the source tree and the one C++ header, nothing of the harness or the host's own headers.
+diff <( (cd "$root/shaders/texfilter" && ls *.glsl; echo host.h) | sort) <(cd "$prefix/include/texfilter" && ls | sort)
 "$prefix/bin/texfilter" --help >/dev/null
 
 # The package's version check: this minor version is found, another is refused.
@@ -51,4 +52,6 @@ VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation "$work/example/texfilter_example"
 for image in fragment.ppm compute.ppm; do
     [[ -s $work/out/$image ]] || { echo "install_consumer: the example wrote no $image" >&2; exit 1; }
 done
-echo "install_consumer: installed texfilter $version; the example built against it and rendered"
+# texfilter::host from the same prefix: SAT box sums against brute force, MIP chain, sRGB decode.
+"$work/example/texfilter_host_tables"
+echo "install_consumer: installed texfilter $version; the example built against it, rendered and checked texfilter::host"

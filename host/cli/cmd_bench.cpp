@@ -1,4 +1,5 @@
 #include "bench/bench.h"
+#include "bench/mip_build_bench.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "vulkan/device_memory_check.h"
@@ -95,11 +96,18 @@ int run_bench(const std::vector<std::string>& argv)
           {"--frames", "N", "timed frames; min, median and max are reported (default 20)"},
           {"--flicker-frames", "N", "frames of the camera path for flicker, 2..64 (default 8)"},
           {"--stage", "S", "fragment (default) or compute; the mesh scene always rasterizes"},
-          {"--timer", "T", "timestamps (GPU timestamps; default on GPUs) or wall-clock (default on CPU devices)"}},
+          {"--timer", "T", "timestamps (GPU timestamps; default on GPUs) or wall-clock (default on CPU devices)"},
+          {"--mip-build", "", "instead: time the host's MIP build beside memcpy (--texture-size, default 8192; no --out)"},
+          {"--repeat", "N", "--mip-build: runs of each measure, the median reported (default 5)"}},
          device_flags()});
     Args args = parse_args("bench", argv, specs, 0);
     if (args.has("--help")) {
         std::fputs(format_help("texfilter bench --out DIR [--quick] [--device NAME|INDEX]", specs).c_str(), stdout);
+        return 0;
+    }
+    if (args.has("--mip-build")) {
+        const int side = args.get_int("--texture-size", 8192, 1, 16384);
+        std::fputs(format_mip_build_bench(run_mip_build_bench(side, args.get_int("--repeat", 5, 1, 100))).c_str(), stdout);
         return 0;
     }
     BenchConfig config;

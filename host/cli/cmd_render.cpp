@@ -45,16 +45,21 @@ int run_render(const std::vector<std::string>& argv)
         throw Error(out + ": image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON; "
                           ".pfm output is built in)");
     CommandDevice device = open_command_device(backend, args);
-    MipChain chain = load_texture(source, device.texture_use(needs_sat(options.filter)));
+    const bool sat = needs_sat(options.filter);
+    const TextureSize size = check_texture(source, device.texture_use(sat));
     GpuSession* gpu = device.gpu.get();
-    SceneParams scene = make_scene(kind, width, height, chain.levels[0].width);
+    SceneParams scene = make_scene(kind, width, height, size.width);
+    auto draw = [&](const GpuTexture& t) { return gpu_render(gpu->context, t, scene, options, render); };
 
     Image image;
     if (!gpu) {
-        image = reference_render(scene, chain, options, render);
+        image = reference_render(scene, load_texture(source, device.texture_use(sat)), options, render);
+    } else if (streams_level0(source) && !sat) { // decoded into the staging buffer: no MipChain on the host
+        image = with_streamed_texture(gpu->context, size.width, size.height,
+                                      [&](glm::vec4* texels) { read_level0(source, size, texels); }, draw);
+        gpu->finish();
     } else {
-        image = with_texture(gpu->context, chain, needs_sat(options.filter),
-                             [&](auto& t) { return gpu_render(gpu->context, t, scene, options, render); });
+        image = with_texture(gpu->context, load_texture(source, device.texture_use(sat)), sat, draw);
         gpu->finish();
     }
     write_image(out, image);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <system_error>
@@ -112,20 +113,15 @@ private:
     int saved_ = -1;
 };
 
-// Uninitialised on purpose: a corrupt file that claims a huge size fails on its first rows, before a
-// zero-fill would have touched gigabytes of pages.
-struct FloatBuffer {
-    std::unique_ptr<float[]> data;
-    size_t size = 0;
-    const float& operator[](size_t i) const { return data[i]; }
-};
-
-struct RawPixels {
+// What the file holds, from its header: the decode rules of image_io.h apply to it.
+struct PixelFormat {
     int width = 0, height = 0, channels = 0;  // channels: 1..4 as read
-    FloatBuffer values;                       // interleaved, normalised as OIIO converts to float
     bool srgb = false;                        // what the automatic rule says about this file
     int integer_levels = 0;                   // 255 / 65535 for UINT8 / UINT16, else 0
 };
+
+// Where decoded rows go: given the size, the caller's width x height linear RGBA texels.
+using RgbaDestination = std::function<glm::vec4*(int width, int height)>;
 
 // The first line of a library message, cut to a readable length.
 std::string first_line(const std::string& text) {
@@ -182,9 +178,87 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, int max_
     return in;
 }
 
-// Opens, validates and reads the first subimage as float. Files with more than four channels
-// (EXR with extra layers, say) contribute their first four: OIIO orders R, G, B, A first.
-RawPixels read_pixels(const std::string& path, int max_dimension) {
+// Lookup table from stored integer code to linear value, so a large 8/16-bit texture costs no
+// pow() per texel.
+std::vector<float> srgb_decode_table(int levels) {
+    std::vector<float> table(size_t(levels) + 1);
+    for (int i = 0; i <= levels; ++i) table[size_t(i)] = float(srgb_to_linear(double(i) / levels));
+    return table;
+}
+
+// Rows of OIIO's float values (channels a pixel) to linear RGBA: decoded from sRGB where asked, grey
+// replicated to RGB, a missing alpha 1, alpha as stored.
+class RgbaConverter {
+public:
+    RgbaConverter(const PixelFormat& format, bool decode_srgb) : format_(format), decode_(decode_srgb)
+    {
+        if (decode_ && format.integer_levels > 0) table_ = srgb_decode_table(format.integer_levels);
+        uint8_t codes[256];
+        for (int c = 0; c < 256; ++c) codes[c] = uint8_t(c);
+        OIIO::convert_pixel_values(OIIO::TypeDesc::UINT8, codes, OIIO::TypeDesc::FLOAT, alpha8_, 256);
+        for (int c = 0; c < 256; ++c) colour8_[c] = decode(alpha8_[c]);
+    }
+
+    // 8-bit files are read as bytes and take each channel's value from a table of the 256 codes, holding
+    // exactly what the float path gives (OIIO's own conversion, then the decode): same values, no per-value
+    // rounding or pow.
+    void convert(const uint8_t* codes, size_t pixels, glm::vec4* out) const
+    {
+        convert_with(codes, pixels, out, [&](uint8_t code) { return colour8_[code]; },
+                     [&](uint8_t code) { return alpha8_[code]; });
+    }
+
+    void convert(const float* values, size_t pixels, glm::vec4* out) const
+    {
+        convert_with(values, pixels, out, [&](float v) { return decode(v); }, [](float v) { return v; });
+    }
+
+private:
+    template <typename T, typename Colour, typename Alpha>
+    void convert_with(const T* values, size_t pixels, glm::vec4* out, Colour colour, Alpha alpha) const
+    {
+        const size_t n = size_t(format_.channels);
+        for (size_t i = 0; i < pixels; ++i) {
+            const T* p = values + i * n;
+            switch (n) {
+            case 1: {
+                const float g = colour(p[0]);
+                out[i] = glm::vec4(g, g, g, 1.0f);
+                break;
+            }
+            case 2: {  // grey + alpha
+                const float g = colour(p[0]);
+                out[i] = glm::vec4(g, g, g, alpha(p[1]));
+                break;
+            }
+            case 3: out[i] = glm::vec4(colour(p[0]), colour(p[1]), colour(p[2]), 1.0f); break;
+            default: out[i] = glm::vec4(colour(p[0]), colour(p[1]), colour(p[2]), alpha(p[3])); break;  // alpha as stored
+            }
+        }
+    }
+
+    float decode(float v) const
+    {
+        if (!decode_) return v;
+        if (!table_.empty()) {
+            const long code = std::lround(std::clamp(v, 0.0f, 1.0f) * float(format_.integer_levels));
+            return table_[size_t(code)];
+        }
+        return float(srgb_to_linear(double(v)));
+    }
+
+    PixelFormat format_;
+    bool decode_;
+    std::vector<float> table_;
+    float colour8_[256], alpha8_[256]; // 8-bit code -> colour value (decoded when asked), alpha value
+};
+
+// Opens, validates and decodes the first subimage into destination(width, height), a band of rows at a time
+// (a few MB of float values), so no whole-image float copy is ever held. Files with more than four channels
+// (EXR with extra layers, say) contribute their first four: OIIO orders R, G, B, A first. raw: no colour
+// decode at all (read_image_raw); else `space` decides as image_io.h says.
+void read_rgba(const std::string& path, int max_dimension, bool raw, ColorSpace space,
+               const RgbaDestination& destination) {
     StderrCapture capture;
     auto in = open_checked(path, max_dimension, capture);
     const OIIO::ImageSpec spec = in->spec();
@@ -197,37 +271,56 @@ RawPixels read_pixels(const std::string& path, int max_dimension) {
         throw Error(path + ": " + what);
     };
 
-    RawPixels raw;
-    raw.width = spec.width;
-    raw.height = spec.height;
-    raw.channels = std::min(spec.nchannels, 4);
-    raw.srgb = stored_as_srgb(spec, format_name);
-    if (spec.format.basetype == OIIO::TypeDesc::UINT8) raw.integer_levels = 255;
-    if (spec.format.basetype == OIIO::TypeDesc::UINT16) raw.integer_levels = 65535;
-    raw.values.size = size_t(raw.width) * size_t(raw.height) * size_t(raw.channels);
+    PixelFormat format;
+    format.width = spec.width;
+    format.height = spec.height;
+    format.channels = std::min(spec.nchannels, 4);
+    format.srgb = stored_as_srgb(spec, format_name);
+    if (spec.format.basetype == OIIO::TypeDesc::UINT8) format.integer_levels = 255;
+    if (spec.format.basetype == OIIO::TypeDesc::UINT16) format.integer_levels = 65535;
+    const bool decode = !raw && (space == ColorSpace::srgb || (space == ColorSpace::automatic && format.srgb));
+    const RgbaConverter converter(format, decode);
+
+    glm::vec4* texels = nullptr;
+    const size_t row_values = size_t(format.width) * size_t(format.channels);
+    const int band_rows = int(std::clamp<size_t>((size_t(1) << 20) / row_values, 1, size_t(format.height)));
+    const bool bytes = format.integer_levels == 255;
+    std::vector<float> band;
+    std::vector<uint8_t> byte_band;
     try {
-        raw.values.data.reset(new float[raw.values.size]);
+        texels = destination(format.width, format.height);
+        if (bytes)
+            byte_band.resize(size_t(band_rows) * row_values);
+        else
+            band.resize(size_t(band_rows) * row_values);
     } catch (const std::bad_alloc&) {
-        fail("out of memory for " + std::to_string(raw.width) + "x" + std::to_string(raw.height) + " pixels");
+        fail("out of memory for " + std::to_string(format.width) + "x" + std::to_string(format.height) + " pixels");
     }
 
-    bool ok = false;
-    std::string oiio_error;
-    try {
-        ok = in->read_image(0, 0, 0, raw.channels, OIIO::TypeDesc::FLOAT, raw.values.data.get());
-    } catch (const std::exception& e) {
-        // Some format plugins report corrupt data by throwing; the contract is a tf::Error.
-        oiio_error = e.what();
+    for (int y0 = 0; y0 < format.height; y0 += band_rows) {
+        const int y1 = std::min(format.height, y0 + band_rows);
+        bool ok = false;
+        std::string oiio_error;
+        try {
+            ok = bytes ? in->read_scanlines(0, 0, y0, y1, 0, 0, format.channels, OIIO::TypeDesc::UINT8, byte_band.data())
+                       : in->read_scanlines(0, 0, y0, y1, 0, 0, format.channels, OIIO::TypeDesc::FLOAT, band.data());
+        } catch (const std::exception& e) {
+            // Some format plugins report corrupt data by throwing; the contract is a tf::Error.
+            oiio_error = e.what();
+        }
+        if (!ok) {
+            if (oiio_error.empty()) oiio_error = in->geterror();
+            fail("cannot read pixels (corrupt or truncated file?): " + oiio_message(oiio_error));
+        }
+        // OIIO 2.4 returns success for a JPEG cut short ("Premature end of JPEG file") or a TIFF strip that
+        // ends early, with the missing pixels zero, and only leaves the decoder's complaint in the error
+        // queue: any message there means pixels were not read.
+        if (const std::string pending = in->geterror(); !pending.empty())
+            fail("incomplete pixel data (truncated or corrupt file): " + first_line(pending));
+        const size_t pixels = size_t(y1 - y0) * size_t(format.width);
+        glm::vec4* out = texels + size_t(y0) * size_t(format.width);
+        bytes ? converter.convert(byte_band.data(), pixels, out) : converter.convert(band.data(), pixels, out);
     }
-    if (!ok) {
-        if (oiio_error.empty()) oiio_error = in->geterror();
-        fail("cannot read pixels (corrupt or truncated file?): " + oiio_message(oiio_error));
-    }
-    // OIIO 2.4 returns success for a JPEG cut short ("Premature end of JPEG file") or a TIFF strip that
-    // ends early, with the missing pixels zero, and only leaves the decoder's complaint in the error
-    // queue: any message there means pixels were not read.
-    if (const std::string pending = in->geterror(); !pending.empty())
-        fail("incomplete pixel data (truncated or corrupt file): " + first_line(pending));
     if (!in->close()) fail("cannot read: " + oiio_message(in->geterror()));
     // A successful read can still have warnings of the library's own (libpng: "iCCP: known incorrect sRGB
     // profile"): pass them on, named, one line each.
@@ -238,49 +331,15 @@ RawPixels read_pixels(const std::string& path, int max_dimension) {
                                       printed.substr(start, std::min<size_t>(end - start, 200)).c_str());
         start = end + 1;
     }
-    return raw;
 }
 
-// Lookup table from stored integer code to linear value, so a large 8/16-bit texture costs no
-// pow() per texel.
-std::vector<float> srgb_decode_table(int levels) {
-    std::vector<float> table(size_t(levels) + 1);
-    for (int i = 0; i <= levels; ++i) table[size_t(i)] = float(srgb_to_linear(double(i) / levels));
-    return table;
-}
-
-Image to_rgba(const RawPixels& raw, bool decode_srgb) {
-    std::vector<float> table;
-    if (decode_srgb && raw.integer_levels > 0) table = srgb_decode_table(raw.integer_levels);
-    auto decode = [&](float v) -> float {
-        if (!decode_srgb) return v;
-        if (!table.empty()) {
-            const long code = std::lround(std::clamp(v, 0.0f, 1.0f) * float(raw.integer_levels));
-            return table[size_t(code)];
-        }
-        return float(srgb_to_linear(double(v)));
-    };
-
-    Image image = make_image(raw.width, raw.height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-    const size_t n = raw.channels;
-    for (size_t i = 0; i < image.texels.size(); ++i) {
-        const float* p = &raw.values[i * n];
-        glm::vec4& t = image.texels[i];
-        switch (n) {
-        case 1: {
-            const float g = decode(p[0]);
-            t = glm::vec4(g, g, g, 1.0f);
-            break;
-        }
-        case 2: {  // grey + alpha
-            const float g = decode(p[0]);
-            t = glm::vec4(g, g, g, p[1]);
-            break;
-        }
-        case 3: t = glm::vec4(decode(p[0]), decode(p[1]), decode(p[2]), 1.0f); break;
-        default: t = glm::vec4(decode(p[0]), decode(p[1]), decode(p[2]), p[3]); break;  // alpha as stored
-        }
-    }
+// read_rgba into a new Image.
+Image read_rgba_image(const std::string& path, int max_dimension, bool raw, ColorSpace space) {
+    Image image;
+    read_rgba(path, max_dimension, raw, space, [&](int width, int height) {
+        image = make_image(width, height);
+        return image.texels.data();
+    });
     return image;
 }
 
@@ -307,13 +366,21 @@ ImageHeader read_image_header(const std::string& path, int max_dimension) {
 }
 
 Image read_image(const std::string& path, ColorSpace space, int max_dimension) {
-    const RawPixels raw = read_pixels(path, max_dimension);
-    const bool decode = space == ColorSpace::srgb || (space == ColorSpace::automatic && raw.srgb);
-    return to_rgba(raw, decode);
+    return read_rgba_image(path, max_dimension, false, space);
+}
+
+void read_image_into(const std::string& path, ColorSpace space, int max_dimension, int width, int height,
+                     glm::vec4* texels) {
+    read_rgba(path, max_dimension, false, space, [&](int w, int h) {
+        if (w != width || h != height) // the file changed since its header was read
+            throw Error(path + ": now " + std::to_string(w) + "x" + std::to_string(h) + ", was " +
+                        std::to_string(width) + "x" + std::to_string(height) + " when its header was read");
+        return texels;
+    });
 }
 
 Image read_image_raw(const std::string& path) {
-    return to_rgba(read_pixels(path, raw_image_max_dimension), false);
+    return read_rgba_image(path, raw_image_max_dimension, true, ColorSpace::automatic);
 }
 
 void write_image(const std::string& path, const Image& image) {

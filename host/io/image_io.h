@@ -28,6 +28,11 @@ ImageHeader read_image_header(const std::string& path, int max_dimension);
 // image libraries print on their own (libpng) are caught and become part of the one error message.
 Image read_image(const std::string& path, ColorSpace space, int max_dimension);
 
+// As read_image, into the caller's width x height texels (the size read_image_header gave; a file that
+// changed meanwhile is an error): a GPU upload decodes straight into its staging memory this way.
+void read_image_into(const std::string& path, ColorSpace space, int max_dimension, int width, int height,
+                     glm::vec4* texels);
+
 // Writes a linear image. .png: 8-bit sRGB-encoded RGBA; .exr: half-float linear RGBA (zip, no DateTime, so
 // the same image always gives the same bytes); .pfm:
 // float RGB, linear (built in, so also in builds without image I/O).

@@ -17,6 +17,7 @@ namespace {
 bool image_io_available() { return false; }
 
 Image read_image(const std::string& path, ColorSpace, int) { left_out(path); }
+void read_image_into(const std::string& path, ColorSpace, int, int, int, glm::vec4*) { left_out(path); }
 
 ImageHeader read_image_header(const std::string& path, int) { left_out(path); }
 

@@ -6,7 +6,7 @@
 
 namespace tf {
 
-MipChain load_texture(const TextureSource& source, const TextureUse& use)
+TextureSize check_texture(const TextureSource& source, const TextureUse& use)
 {
     const bool procedural = is_procedural(source.name_or_path);
     int width = source.procedural_size, height = source.procedural_size, channels = 4;
@@ -26,8 +26,24 @@ MipChain load_texture(const TextureSource& source, const TextureUse& use)
     check_memory_budget(what, width, height, need, budget);
     if (use.device)
         check_device_limits(what, width, height, need, *use.device);
-    MipChain chain = procedural ? make_procedural(source.name_or_path, source.procedural_size)
-                                : build_mip_chain(read_image(source.name_or_path, source.color, max_texture_dimension));
+    return {width, height};
+}
+
+bool streams_level0(const TextureSource& source) { return !is_procedural(source.name_or_path); }
+
+void read_level0(const TextureSource& source, TextureSize size, glm::vec4* texels)
+{
+    if (!streams_level0(source))
+        throw Error("texture " + source.name_or_path + " is procedural: load it whole with load_texture");
+    read_image_into(source.name_or_path, source.color, max_texture_dimension, size.width, size.height, texels);
+}
+
+MipChain load_texture(const TextureSource& source, const TextureUse& use)
+{
+    check_texture(source, use);
+    MipChain chain = is_procedural(source.name_or_path)
+                         ? make_procedural(source.name_or_path, source.procedural_size)
+                         : build_mip_chain(read_image(source.name_or_path, source.color, max_texture_dimension));
     if (use.sat) // NaN/Inf texels have no place in an integer table: refused here, naming the texture
         check_sat_texels(chain.levels[0], source.name_or_path);
     return chain;

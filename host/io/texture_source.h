@@ -30,4 +30,19 @@ constexpr int max_texture_dimension = 16384;
 // naming the texture.
 MipChain load_texture(const TextureSource& source, const TextureUse& use = {});
 
+// The checks of load_texture alone: the texture's level-0 size, nothing decoded.
+struct TextureSize {
+    int width = 0, height = 0;
+};
+TextureSize check_texture(const TextureSource& source, const TextureUse& use = {});
+
+// Image files: level 0 is all there is to load (the rest of the chain is built from it), so it can be decoded
+// straight into memory of the caller's, such as a device's staging buffer. Procedural textures (mipcolors
+// gives each level its own colour) come whole from load_texture.
+bool streams_level0(const TextureSource& source);
+
+// Decodes the file's level 0 (linear RGBA, as load_texture) into size.width x size.height texels, the size
+// check_texture gave. Throws tf::Error as load_texture; for a procedural source, says to use load_texture.
+void read_level0(const TextureSource& source, TextureSize size, glm::vec4* texels);
+
 } // namespace tf

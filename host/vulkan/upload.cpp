@@ -7,22 +7,93 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <thread>
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 namespace tf {
 
 namespace {
 
-// A device-local sampled image with `levels` levels, filled from tightly packed level data.
-GpuImage upload_image(const VulkanContext& context, VkFormat format, const std::vector<VkExtent2D>& extents,
-                      const std::vector<const void*>& data, const std::vector<size_t>& bytes)
+// A staging buffer of a GiB on a CPU device (lavapipe) is fresh anonymous memory: 262144 page faults of 4 KiB,
+// or 512 with transparent huge pages, which the kernel here grants only on request. Advice only: where the
+// mapping is not ordinary memory (a discrete GPU's) madvise refuses and nothing changes.
+void advise_huge_pages(void* mapped, size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    const uintptr_t page = uintptr_t(sysconf(_SC_PAGESIZE));
+    const uintptr_t begin = (uintptr_t(mapped) + page - 1) / page * page;
+    const uintptr_t end = (uintptr_t(mapped) + bytes) / page * page;
+    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+    (void)mapped;
+    (void)bytes;
+#endif
+}
+
+// Faults memory in ahead of its first use on another thread (MADV_POPULATE_WRITE: page tables filled, the
+// contents left alone, so the caller may write the same memory meanwhile). Zeroing a fresh GiB is a large part
+// of loading a texture on a CPU device; done beside a single-threaded image decode, it costs no wall time.
+void populate_pages(void* mapped, size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+    const uintptr_t page = uintptr_t(sysconf(_SC_PAGESIZE));
+    const uintptr_t begin = (uintptr_t(mapped) + page - 1) / page * page;
+    const uintptr_t end = (uintptr_t(mapped) + bytes) / page * page;
+    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
+#else
+    (void)mapped;
+    (void)bytes;
+#endif
+}
+
+// The memory of an image, mapped where its type is host-visible (a CPU or unified-memory device), so that
+// the host can advise the kernel about it; nothing is read or written through the mapping.
+struct HostMapping {
+    const VulkanContext& context;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    void* mapped = nullptr;
+    size_t bytes = 0;
+    HostMapping(const VulkanContext& c, VkDeviceMemory m, uint32_t type, VkDeviceSize size) : context(c)
+    {
+        VkPhysicalDeviceMemoryProperties properties{};
+        vkGetPhysicalDeviceMemoryProperties(context.physical, &properties);
+        if (!(properties.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)) return;
+        if (vkMapMemory(context.device, m, 0, VK_WHOLE_SIZE, 0, &mapped) != VK_SUCCESS) {
+            mapped = nullptr;
+            return;
+        }
+        memory = m;
+        bytes = size_t(size);
+    }
+    HostMapping(const HostMapping&) = delete;
+    HostMapping& operator=(const HostMapping&) = delete;
+    ~HostMapping()
+    {
+        if (mapped) vkUnmapMemory(context.device, memory);
+    }
+};
+
+// A sampled image and what the streaming upload needs to know of its memory.
+struct SampledImage {
+    GpuImage image;
+    uint32_t memory_type = 0;
+    VkDeviceSize memory_size = 0;
+};
+
+// A device-local sampled image with `levels` levels (contents undefined until copied) and its view.
+SampledImage create_sampled_image(const VulkanContext& context, VkFormat format, VkExtent2D extent, uint32_t levels)
 {
     VkDevice device = context.device;
-    GpuImage g;
+    SampledImage sampled;
+    GpuImage& g = sampled.image;
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = format;
-    info.extent = {extents[0].width, extents[0].height, 1};
-    info.mipLevels = uint32_t(extents.size());
+    info.extent = {extent.width, extent.height, 1};
+    info.mipLevels = levels;
     info.arrayLayers = 1;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -37,39 +108,13 @@ GpuImage upload_image(const VulkanContext& context, VkFormat format, const std::
         allocate.memoryTypeIndex =
             find_memory_type(context, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
         if (vkAllocateMemory(device, &allocate, nullptr, &g.memory) != VK_SUCCESS)
-            throw Error("out of device memory for a " + std::to_string(extents[0].width) + "x" +
-                        std::to_string(extents[0].height) + " texture on " + context.info.name);
+            throw Error("out of device memory for a " + std::to_string(extent.width) + "x" +
+                        std::to_string(extent.height) + " texture on " + context.info.name);
         TF_VK(vkBindImageMemory(device, g.image, g.memory, 0));
-
-        VkDeviceSize total = 0;
-        for (size_t b : bytes)
-            total += b;
-        Buffer staging = create_host_buffer(context, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-        Cleanup cleanup;
-        cleanup.add([&] { destroy_buffer(context, staging); });
-        std::vector<VkBufferImageCopy> copies;
-        VkDeviceSize offset = 0;
-        for (size_t l = 0; l < extents.size(); ++l) {
-            std::memcpy(static_cast<char*>(staging.mapped) + offset, data[l], bytes[l]);
-            VkBufferImageCopy copy{};
-            copy.bufferOffset = offset;
-            copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, uint32_t(l), 0, 1};
-            copy.imageExtent = {extents[l].width, extents[l].height, 1};
-            copies.push_back(copy);
-            offset += bytes[l];
-        }
-        uint32_t levels = uint32_t(extents.size());
-        submit_and_wait(context, [&](VkCommandBuffer cb) {
-            image_barrier(cb, g.image, levels, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                          VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                          VK_PIPELINE_STAGE_TRANSFER_BIT);
-            vkCmdCopyBufferToImage(cb, staging.buffer, g.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                   uint32_t(copies.size()), copies.data());
-            image_barrier(cb, g.image, levels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                          VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-        });
+        sampled.memory_type = allocate.memoryTypeIndex;
+        sampled.memory_size = allocate.allocationSize;
+        const HostMapping host(context, g.memory, sampled.memory_type, sampled.memory_size);
+        advise_huge_pages(host.mapped, host.bytes);
 
         VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         view.image = g.image;
@@ -81,9 +126,85 @@ GpuImage upload_image(const VulkanContext& context, VkFormat format, const std::
         destroy_image(context, g);
         throw;
     }
+    return sampled;
+}
+
+// Where a copy stands in the image's life: the first copy moves every level from UNDEFINED to
+// TRANSFER_DST, the last moves them all on to SHADER_READ_ONLY (a single copy does both).
+struct CopyStep {
+    bool first = true, last = true;
+};
+
+// Copies one level from the start of `staging` into the image and waits, so the staging memory may be
+// rewritten at once (the fence wait orders the transfer's reads before the host's next writes).
+void copy_level(const VulkanContext& context, const GpuImage& g, uint32_t levels, const Buffer& staging,
+                uint32_t level, VkExtent2D extent, CopyStep step)
+{
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
+    copy.imageExtent = {extent.width, extent.height, 1};
+    submit_and_wait(context, [&](VkCommandBuffer cb) {
+        if (step.first)
+            image_barrier(cb, g.image, levels, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+                          VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT);
+        vkCmdCopyBufferToImage(cb, staging.buffer, g.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+        if (step.last)
+            image_barrier(cb, g.image, levels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                          VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+    });
+}
+
+// A one-level image filled from `bytes` of tightly packed texels.
+GpuImage upload_single_level(const VulkanContext& context, VkFormat format, VkExtent2D extent, const void* data,
+                             size_t bytes)
+{
+    GpuImage g = create_sampled_image(context, format, extent, 1).image;
+    try {
+        Buffer staging = create_host_buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        Cleanup cleanup;
+        cleanup.add([&] { destroy_buffer(context, staging); });
+        std::memcpy(staging.mapped, data, bytes);
+        copy_level(context, g, 1, staging, 0, extent, {});
+    } catch (...) {
+        destroy_image(context, g);
+        throw;
+    }
     return g;
 }
 
+void check_texture_size(const VulkanContext& context, int width, int height, bool with_sat)
+{
+    const uint32_t limit = context.info.max_image_dimension_2d;
+    if (uint32_t(width) > limit || uint32_t(height) > limit)
+        throw Error("texture " + std::to_string(width) + "x" + std::to_string(height) +
+                    " exceeds the device limit maxImageDimension2D = " + std::to_string(limit));
+    if (with_sat && (uint32_t(width) + 1 > limit || uint32_t(height) + 1 > limit))
+        throw Error("the summed-area table of a " + std::to_string(width) + "x" + std::to_string(height) +
+                    " texture needs one more texel a side than maxImageDimension2D = " + std::to_string(limit));
+}
+
+// The summed-area table images, or 1x1 zeros (which keep the descriptor set valid for every filter).
+void upload_sat(const VulkanContext& context, const Image* level0, GpuTexture& t)
+{
+    SatTable sat;
+    VkExtent2D extent{1, 1};
+    if (level0) {
+        sat = build_sat(*level0);
+        extent = {uint32_t(sat.width + 1), uint32_t(sat.height + 1)};
+    } else {
+        sat.low.assign(4, 0u);
+        sat.high.assign(1, 0u);
+    }
+    t.sat_offset = sat.offset;
+    t.sat_scale = sat.scale;
+    t.sat_low = upload_single_level(context, VK_FORMAT_R32G32B32A32_UINT, extent, sat.low.data(),
+                                    sat.low.size() * sizeof(uint32_t));
+    t.sat_high = upload_single_level(context, VK_FORMAT_R32_UINT, extent, sat.high.data(),
+                                     sat.high.size() * sizeof(uint32_t));
+}
 
 } // namespace
 
@@ -93,44 +214,79 @@ bool needs_sat(Filter filter) { return filter == Filter::sat || filter == Filter
 GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat)
 {
     const Image& base = chain.levels.at(0);
-    uint32_t limit = context.info.max_image_dimension_2d;
-    if (uint32_t(base.width) > limit || uint32_t(base.height) > limit)
-        throw Error("texture " + std::to_string(base.width) + "x" + std::to_string(base.height) +
-                    " exceeds the device limit maxImageDimension2D = " + std::to_string(limit));
-    if (with_sat && (uint32_t(base.width) + 1 > limit || uint32_t(base.height) + 1 > limit))
-        throw Error("the summed-area table of a " + std::to_string(base.width) + "x" + std::to_string(base.height) +
-                    " texture needs one more texel a side than maxImageDimension2D = " + std::to_string(limit));
+    check_texture_size(context, base.width, base.height, with_sat);
     GpuTexture t;
     t.width = base.width;
     t.height = base.height;
     t.levels = int(chain.levels.size());
     try {
-        std::vector<VkExtent2D> extents;
-        std::vector<const void*> data;
-        std::vector<size_t> bytes;
-        for (const Image& level : chain.levels) {
-            extents.push_back({uint32_t(level.width), uint32_t(level.height)});
-            data.push_back(level.texels.data());
-            bytes.push_back(level.texels.size() * sizeof(glm::vec4));
+        const uint32_t levels = uint32_t(t.levels);
+        t.chain = create_sampled_image(context, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                       {uint32_t(base.width), uint32_t(base.height)}, levels).image;
+        // One staging level at a time (the largest, level 0), reused for every level below it.
+        Buffer staging = create_host_buffer(context, base.texels.size() * sizeof(glm::vec4),
+                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        Cleanup cleanup;
+        cleanup.add([&] { destroy_buffer(context, staging); });
+        advise_huge_pages(staging.mapped, base.texels.size() * sizeof(glm::vec4));
+        for (uint32_t l = 0; l < levels; ++l) {
+            const Image& level = chain.levels[l];
+            std::memcpy(staging.mapped, level.texels.data(), level.texels.size() * sizeof(glm::vec4));
+            copy_level(context, t.chain, levels, staging, l, {uint32_t(level.width), uint32_t(level.height)},
+                       {l == 0, l + 1 == levels});
         }
-        t.chain = upload_image(context, VK_FORMAT_R32G32B32A32_SFLOAT, extents, data, bytes);
+        upload_sat(context, with_sat ? &base : nullptr, t);
+    } catch (...) {
+        destroy_texture(context, t);
+        throw;
+    }
+    return t;
+}
 
-        SatTable sat;
-        if (with_sat) {
-            sat = build_sat(base);
-        } else { // a 1x1 zero table keeps the descriptor set valid for every filter
-            sat.low.assign(4, 0u);
-            sat.high.assign(1, 0u);
+GpuTexture upload_streamed_texture(const VulkanContext& context, int width, int height,
+                                   const std::function<void(glm::vec4* texels)>& fill_level0)
+{
+    if (width < 1 || height < 1)
+        throw Error("texture " + std::to_string(width) + "x" + std::to_string(height) + " is empty");
+    check_texture_size(context, width, height, false);
+    GpuTexture t;
+    t.width = width;
+    t.height = height;
+    t.levels = mip_level_count(width, height);
+    try {
+        const uint32_t levels = uint32_t(t.levels);
+        const SampledImage sampled = create_sampled_image(context, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                                          {uint32_t(width), uint32_t(height)}, levels);
+        t.chain = sampled.image;
+        const size_t level0_bytes = size_t(width) * size_t(height) * sizeof(glm::vec4);
+        Buffer staging = create_host_buffer(context, level0_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        Cleanup cleanup;
+        cleanup.add([&] { destroy_buffer(context, staging); });
+        glm::vec4* texels = static_cast<glm::vec4*>(staging.mapped);
+        advise_huge_pages(texels, level0_bytes);
+        {
+            // While level 0 is decoded (one thread), another faults in the staging and the image's memory.
+            const HostMapping image_memory(context, t.chain.memory, sampled.memory_type, sampled.memory_size);
+            std::thread prefault([&] {
+                populate_pages(texels, level0_bytes);
+                populate_pages(image_memory.mapped, image_memory.bytes);
+            });
+            struct Join {
+                std::thread& thread;
+                ~Join() { thread.join(); }
+            } join{prefault};
+            fill_level0(texels);
         }
-        VkExtent2D sat_extent{uint32_t(sat.width + 1), uint32_t(sat.height + 1)};
-        if (!with_sat)
-            sat_extent = {1, 1};
-        t.sat_offset = sat.offset;
-        t.sat_scale = sat.scale;
-        t.sat_low = upload_image(context, VK_FORMAT_R32G32B32A32_UINT, {sat_extent}, {sat.low.data()},
-                                 {sat.low.size() * sizeof(uint32_t)});
-        t.sat_high = upload_image(context, VK_FORMAT_R32_UINT, {sat_extent}, {sat.high.data()},
-                                  {sat.high.size() * sizeof(uint32_t)});
+        int w = width, h = height;
+        for (uint32_t l = 0; l < levels; ++l) {
+            if (l > 0) { // the level below, built over the one just copied
+                downsample_into(texels, w, h, texels);
+                w = std::max(1, w >> 1);
+                h = std::max(1, h >> 1);
+            }
+            copy_level(context, t.chain, levels, staging, l, {uint32_t(w), uint32_t(h)}, {l == 0, l + 1 == levels});
+        }
+        upload_sat(context, nullptr, t);
     } catch (...) {
         destroy_texture(context, t);
         throw;

@@ -5,6 +5,7 @@
 #include "texture/mip.h"
 #include "vulkan/context.h"
 #include <glm/vec4.hpp>
+#include <functional>
 
 namespace tf {
 
@@ -21,8 +22,17 @@ struct GpuTexture {
     int width = 0, height = 0, levels = 0;
 };
 
-// with_sat: also build and upload the summed-area table (sat, sat-assembly filters).
+// with_sat: also build and upload the summed-area table (sat, sat-assembly filters). The levels go through
+// one staging buffer of level 0's size, one level at a time.
 GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat);
+
+// The same chain without a MipChain on the host (no summed-area table): fill_level0 writes level 0, width x
+// height linear RGBA texels, straight into the staging buffer (an image decoder, say); after each level is
+// copied, the next is built over it in place (downsample_into). So the host holds one level's bytes beside
+// the device's images, and the levels equal build_mip_chain's to the bit.
+GpuTexture upload_streamed_texture(const VulkanContext& context, int width, int height,
+                                   const std::function<void(glm::vec4* texels)>& fill_level0);
+
 void destroy_texture(const VulkanContext& context, GpuTexture& texture);
 
 // Uploads the texture, runs body(texture) and destroys it again, also when body throws.
@@ -30,6 +40,20 @@ template <typename Body>
 auto with_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, Body&& body)
 {
     GpuTexture texture = upload_texture(context, chain, with_sat);
+    struct Release {
+        const VulkanContext& context;
+        GpuTexture& texture;
+        ~Release() { destroy_texture(context, texture); }
+    } release{context, texture};
+    return body(texture);
+}
+
+// upload_streamed_texture, then body(texture), then destroy, also when body throws.
+template <typename Body>
+auto with_streamed_texture(const VulkanContext& context, int width, int height,
+                           const std::function<void(glm::vec4* texels)>& fill_level0, Body&& body)
+{
+    GpuTexture texture = upload_streamed_texture(context, width, height, fill_level0);
     struct Release {
         const VulkanContext& context;
         GpuTexture& texture;

@@ -1,0 +1,134 @@
+#pragma once
+// texfilter::host: the tables texfilter's GLSL includes sample, built on the CPU. No Vulkan, no image files.
+//
+//   find_package(texfilter 0.3 REQUIRED)
+//   target_link_libraries(app PRIVATE texfilter::host)    // C++20, links glm and Threads
+//   #include <texfilter/host.h>
+//
+// What it builds:
+//   - MIP chains in linear light, level sizes by Vulkan's floor rule (max(1, w >> l)), every texel of a level
+//     the exact box average of the texels it covers (odd sizes: 3 texels with fractional weights), for
+//     texture(), textureLod() and every tf_ filter (upload each level as RGBA32F, level 0 first).
+//   - Summed-area tables for tf_sat / tf_sat_assembly (docs/API.md, "sat.glsl"): two integer images
+//     (RGBA32UI low words, R32UI high bytes) plus a per-channel offset and scale for the shader.
+//   - The sRGB decode of 8-bit texels: filter in linear light, so decode before building anything.
+//
+// Conventions for every function here:
+//   - Images are linear-light RGBA float, row-major, row 0 first (v = 0 is row 0, as Vulkan stores images).
+//   - Sizes are in texels; a texel (x, y) covers texture space [x, x+1) x [y, y+1).
+//   - Bad input (empty or oversize images, NaN where a table needs finite values, boxes outside the texture)
+//     throws tf::Error with a message saying what and why; nothing else is thrown except std::bad_alloc.
+//   - Functions are thread-safe on distinct arguments; large MIP levels are built on every core.
+#include <glm/vec4.hpp>
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tf {
+
+// ---- Errors -------------------------------------------------------------------------------------------------
+
+// Every user-facing failure. what() is one line naming the input and the problem.
+struct Error : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// ---- Images and colour --------------------------------------------------------------------------------------
+
+// width x height texels, row-major. Invariant: texels.size() == width * height.
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<glm::vec4> texels;
+
+    glm::vec4& at(int x, int y) { return texels[size_t(y) * size_t(width) + size_t(x)]; }
+    const glm::vec4& at(int x, int y) const { return texels[size_t(y) * size_t(width) + size_t(x)]; }
+};
+
+// A width x height image, every texel `fill`. Throws tf::Error for a negative side (0 gives an empty image).
+Image make_image(int width, int height, glm::vec4 fill = glm::vec4(0.0f));
+
+// IEC 61966-2-1 transfer functions on [0, 1], exact piecewise form (not a gamma approximation), in double.
+double srgb_to_linear(double encoded);
+double linear_to_srgb(double linear);
+
+// Linear image -> sRGB-encoded values in float (clamped to [0,1] first, no quantisation), alpha unchanged:
+// the display values goldens and benchmark errors are measured in.
+Image encode_srgb(const Image& linear);
+
+// 8-bit code (0..255) -> linear value of that sRGB code, rounded to float: a table of 256 entries.
+const std::array<float, 256>& srgb8_decode_table();
+
+// 8-bit texels (what a PNG or JPEG decoder gives) to linear RGBA. Input: width x height pixels of `channels`
+// bytes each (1 grey, 2 grey + alpha, 3 RGB, 4 RGBA), tightly packed rows. Colour channels are decoded from
+// sRGB (srgb8_decode_table), alpha is linear (code / 255); grey is replicated to RGB and a missing alpha is 1.
+// Throws tf::Error for channels outside 1..4 or a negative side.
+Image decode_srgb8(const uint8_t* pixels, int width, int height, int channels);
+
+// ---- MIP chains ---------------------------------------------------------------------------------------------
+
+struct MipChain {
+    std::vector<Image> levels; // levels[0] is the full-resolution texture, the last is 1x1
+};
+
+// 1 + floor(log2(max(width, height))): the full chain down to 1x1 (0 for an empty size).
+int mip_level_count(int width, int height);
+
+// The level below a width x height level: max(1, width >> 1) x max(1, height >> 1) (Vulkan's floor rule).
+// Destination texel i covers source [i*W/W', (i+1)*W/W') on each axis and is its overlap-weighted average:
+// 2 texels per axis for even sizes, 3 for odd ones, so no source texel is dropped. Separable; the sums
+// are formed in double and rounded to float once, so results do not depend on the thread count.
+//
+// downsample_into: src holds width x height texels, dst receives the smaller level's texels; dst may be src
+// itself (the level is then built in place, overwriting the start of src: what a streaming upload uses to
+// need one level's memory) but must not otherwise overlap it. Throws tf::Error for a side below 1.
+void downsample_into(const glm::vec4* src, int width, int height, glm::vec4* dst);
+Image downsample(const Image& source);
+
+// Level 0 plus every level down to 1x1, each built from the one above by downsample.
+// Throws tf::Error for an empty image or one whose texels do not match its size.
+MipChain build_mip_chain(Image level0);
+
+// ---- Summed-area tables (tf_sat, tf_sat_assembly) -----------------------------------------------------------
+
+// Input quantisation, per channel c, over the texture's own range: offset_c = the smallest texel value,
+// scale_c = largest − smallest, rounded up to float (0 for a constant channel). A texel value v becomes
+// q = round((v − offset_c) / scale_c · 65535) in [0, 65535] (in double; 0 where scale_c = 0), i.e. the value
+// offset_c + q · scale_c / 65535. So a box mean from the table is within 0.5/65535 · scale_c of the float
+// texels' mean (plus float32 rounding in the shader); texels equal to the channel's minimum are exact.
+// Every texel must be finite (NaN and ±Inf are refused) and each channel's span must fit a float.
+constexpr uint32_t sat_quantisation_levels = 65535;
+// Bit budget: table entries are running sums kept modulo 2^40 per channel, and box sums A - B - C + D are
+// formed modulo 2^40 (host and shader alike), which is exact whenever the box's true sum is below 2^40:
+// every box of up to 2^24 texels of 16-bit values (24 + 16 = 40 bits), i.e. up to 4096x4096. The shader
+// clamps its boxes to the texture's size, so sides up to 4096 keep every lookup exact.
+constexpr int sat_max_dimension = 4096;
+
+// Upload low as a (width+1) x (height+1) VK_FORMAT_R32G32B32A32_UINT image (satLow) and high as the same
+// size in VK_FORMAT_R32_UINT (satHigh); pass offset and scale to tf_sat.
+struct SatTable {
+    int width = 0, height = 0; // the texture's size; the table is (width + 1) x (height + 1), row 0 and column 0 zero
+    glm::vec4 offset{0.0f};    // per channel: the value of quantisation level 0 (the smallest texel value)
+    glm::vec4 scale{0.0f};     // per channel: level 65535 minus level 0 (largest − smallest, rounded up)
+    std::vector<uint32_t> low; // 4 words a table entry (RGBA), bits 0..31 of each channel's running sum mod 2^40
+    std::vector<uint32_t> high; // 1 word a table entry: bits 32..39 of R, G, B, A in bytes 0..3
+};
+
+// Throws tf::Error "texture NAME: texel (i, j) is NaN: sat needs finite texels" (or +Inf, -Inf; the first
+// such texel in row order) or, where a channel's span max − min overflows float, says so. An empty name
+// says "summed-area table" instead.
+void check_sat_texels(const Image& level0, const std::string& texture_name = "");
+
+// The table of level 0 (the full-resolution texture, linear values; build it after any sRGB decode).
+// Throws tf::Error for a texture larger than sat_max_dimension on a side, and as check_sat_texels.
+SatTable build_sat(const Image& level0);
+
+// Exact sum of the quantised texels (levels 0..65535) in [x0, x1) x [y0, y1), per channel RGBA, computed from
+// the table with the same modular arithmetic the shader uses. Divide by the box's texel count and by 65535,
+// multiply by scale and add offset for the box mean in texel units. Throws tf::Error for a box that is
+// inverted or not inside the texture.
+std::array<uint64_t, 4> sat_box_sum(const SatTable& table, int x0, int y0, int x1, int y1);
+
+} // namespace tf
