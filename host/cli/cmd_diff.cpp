@@ -47,7 +47,7 @@ int run_diff(const std::vector<std::string>& argv)
         uint64_t need = 0;
         for (const std::string& path : args.positional) {
             const ImageHeader h = read_image_header(path, raw_image_max_dimension);
-            need += estimate_texture_memory(h.width, h.height, h.channels, false, false).decode;
+            need += estimate_texture_memory(h.width, h.height, false, TextureLoad::host).decode;
             if (need > budget)
                 throw Error(path + ": a " + std::to_string(h.width) + "x" + std::to_string(h.height) +
                             " image; the two decoded images need " + format_bytes(need) + " or more, over the memory "

@@ -46,7 +46,10 @@ int run_render(const std::vector<std::string>& argv)
                           ".pfm output is built in)");
     CommandDevice device = open_command_device(backend, args);
     const bool sat = needs_sat(options.filter);
-    const TextureSize size = check_texture(source, device.texture_use(sat));
+    const bool streamed = device.gpu && streams_level0(source) && !sat; // no MipChain on the host
+    TextureUse use = device.texture_use(sat);
+    use.streamed = streamed;
+    const TextureSize size = check_texture(source, use);
     GpuSession* gpu = device.gpu.get();
     SceneParams scene = make_scene(kind, width, height, size.width);
     auto draw = [&](const GpuTexture& t) { return gpu_render(gpu->context, t, scene, options, render); };
@@ -54,7 +57,7 @@ int run_render(const std::vector<std::string>& argv)
     Image image;
     if (!gpu) {
         image = reference_render(scene, load_texture(source, device.texture_use(sat)), options, render);
-    } else if (streams_level0(source) && !sat) { // decoded into the staging buffer: no MipChain on the host
+    } else if (streamed) { // decoded into the staging buffer
         image = with_streamed_texture(gpu->context, size.width, size.height,
                                       [&](glm::vec4* texels) { read_level0(source, size, texels); }, draw);
         gpu->finish();

@@ -8,12 +8,11 @@
 
 namespace tf {
 
-TextureMemory estimate_texture_memory(int width, int height, int file_channels, bool with_sat, bool on_device)
+TextureMemory estimate_texture_memory(int width, int height, bool with_sat, TextureLoad load)
 {
     const uint64_t texel = 4 * sizeof(float);
-    const uint64_t texels = uint64_t(width) * uint64_t(height);
     TextureMemory m;
-    m.decode = texels * uint64_t(std::clamp(file_channels, 1, 4)) * sizeof(float) + texels * texel;
+    m.decode = uint64_t(width) * uint64_t(height) * texel;
     for (uint64_t w = uint64_t(width), h = uint64_t(height);; w = std::max<uint64_t>(1, w / 2),
                   h = std::max<uint64_t>(1, h / 2)) {
         m.chain += w * h * texel;
@@ -22,9 +21,19 @@ TextureMemory estimate_texture_memory(int width, int height, int file_channels, 
     }
     if (with_sat)
         m.sat = (uint64_t(width) + 1) * (uint64_t(height) + 1) * (4 + 1) * sizeof(uint32_t);
-    const uint64_t staging = on_device ? std::max(m.chain, m.sat) : 0;
-    m.host_peak = std::max(m.decode, m.chain + m.sat + staging);
-    m.device = on_device ? m.chain + m.sat : 0;
+    switch (load) {
+    case TextureLoad::host: m.host_peak = m.chain + m.sat; break;
+    case TextureLoad::device: // the chain and table stay until the upload ends; one image is staged at a time
+        m.staging = std::max(m.decode, m.sat);
+        m.host_peak = m.chain + m.sat + m.staging;
+        break;
+    case TextureLoad::device_streamed: // level 0 decoded into the staging buffer; each level built over it
+        m.staging = m.decode;
+        m.chain_on_host = false;
+        m.host_peak = m.staging;
+        break;
+    }
+    m.device = load == TextureLoad::host ? 0 : m.chain + m.sat;
     return m;
 }
 
@@ -84,8 +93,10 @@ void check_memory_budget(const std::string& what, int width, int height, const T
     if (need.host_peak <= budget)
         return;
     throw Error(what + ": a " + std::to_string(width) + "x" + std::to_string(height) + " texture needs " +
-                format_bytes(need.host_peak) + " of memory (decode " + format_bytes(need.decode) + ", MIP chain " +
-                format_bytes(need.chain) + (need.sat ? ", summed-area table " + format_bytes(need.sat) : "") +
+                format_bytes(need.host_peak) + " of memory (" +
+                (need.chain_on_host ? "MIP chain " + format_bytes(need.chain) : std::string("level 0 only")) +
+                (need.sat ? ", summed-area table " + format_bytes(need.sat) : "") +
+                (need.staging ? ", staging " + format_bytes(need.staging) : "") +
                 (need.device ? ", staging for the device" : "") + "), over the memory budget of " +
                 format_bytes(budget) + " (half of physical memory by default; --memory-budget SIZE raises it)");
 }

@@ -6,17 +6,25 @@
 
 namespace tf {
 
-// Bytes the host needs at the peak of loading a width x height texture: the decode (the file's channels
-// as float, then RGBA float), then the MIP chain (RGBA float, every level), the summed-area table when
-// asked for, and a staging copy of the largest image when it goes to a Vulkan device.
+// How a texture is loaded, which decides what the host holds at once.
+enum class TextureLoad {
+    host,            // the CPU reference: the MIP chain (and the table) in host memory
+    device,          // a MipChain built on the host, then staged to a Vulkan device one image at a time
+    device_streamed, // an image file decoded straight into the staging buffer, its levels built there in place
+};
+
+// Bytes the host needs at the peak of loading a width x height texture. Files decode a band of rows at a
+// time (about 1 MiB) straight into level 0's RGBA floats, so there is no whole-file float copy.
 struct TextureMemory {
-    uint64_t decode = 0;  // file pixels as float + the RGBA level 0
+    uint64_t decode = 0;  // level 0, RGBA32F: what decoding the file fills
     uint64_t chain = 0;   // every MIP level, RGBA32F
     uint64_t sat = 0;     // RGBA32UI + R32UI table of (w+1) x (h+1) entries, 0 unless asked for
+    uint64_t staging = 0; // the largest one image staged to the device (0 for the CPU reference)
+    bool chain_on_host = true; // false when streamed: the host never holds the chain
     uint64_t host_peak = 0;
     uint64_t device = 0;  // what a Vulkan device holds: chain + sat (0 for the CPU reference)
 };
-TextureMemory estimate_texture_memory(int width, int height, int file_channels, bool with_sat, bool on_device);
+TextureMemory estimate_texture_memory(int width, int height, bool with_sat, TextureLoad load);
 
 // The default host budget: half of physical memory (the rest is the system's, the driver's and the scene's).
 uint64_t default_memory_budget();

@@ -9,12 +9,11 @@ namespace tf {
 TextureSize check_texture(const TextureSource& source, const TextureUse& use)
 {
     const bool procedural = is_procedural(source.name_or_path);
-    int width = source.procedural_size, height = source.procedural_size, channels = 4;
+    int width = source.procedural_size, height = source.procedural_size;
     if (!procedural) {
         const ImageHeader header = read_image_header(source.name_or_path, max_texture_dimension);
         width = header.width;
         height = header.height;
-        channels = header.channels;
     }
     const std::string what = procedural ? "texture " + source.name_or_path : source.name_or_path;
     if (use.sat && (width > sat_max_dimension || height > sat_max_dimension))
@@ -22,7 +21,10 @@ TextureSize check_texture(const TextureSource& source, const TextureUse& use)
                     " is larger than the summed-area table allows (" + std::to_string(sat_max_dimension) +
                     " a side: its 40-bit sums are exact only up to 4096x4096 texels of 16 bits)");
     const uint64_t budget = source.memory_budget ? source.memory_budget : default_memory_budget();
-    const TextureMemory need = estimate_texture_memory(width, height, channels, use.sat, use.device != nullptr);
+    const TextureLoad load = !use.device ? TextureLoad::host
+                             : use.streamed && !procedural ? TextureLoad::device_streamed
+                                                           : TextureLoad::device;
+    const TextureMemory need = estimate_texture_memory(width, height, use.sat, load);
     check_memory_budget(what, width, height, need, budget);
     if (use.device)
         check_device_limits(what, width, height, need, *use.device);

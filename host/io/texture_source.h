@@ -19,6 +19,7 @@ struct TextureSource {
 struct TextureUse {
     bool sat = false;                      // a summed-area table is built (sat, sat-assembly): at most 4096 a side
     const DeviceLimits* device = nullptr;  // uploaded to this Vulkan device (and a staging copy on the host)
+    bool streamed = false;                 // with a device: level 0 decoded into staging (read_level0), no MipChain
 };
 
 // The largest texture side accepted from a file before any device is asked (Vulkan guarantees 4096;
