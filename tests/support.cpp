@@ -20,18 +20,41 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int g_checks = 0;
+// The running test case's failed checks, and how many more it may report (limit_failure_lines).
 int g_failures = 0;
-int g_lines_left = INT_MAX; // failure lines still to print
+int g_lines_left = INT_MAX;
+std::string g_case;         // the running test case's name
+bool g_listing_checks = false;
 
 // A hung shader fails its test instead of blocking it.
 constexpr int kSampleSeconds = 120;
 
-void print_failure(const std::string& line)
-{
-    std::fflush(stdout); // keep the failure next to the result lines around it
-    std::fprintf(stderr, "%s\n", line.c_str());
-}
+// Every test case starts with a clean count and no limit, and ends saying what it did not show.
+struct FailureLimitListener : doctest::IReporter {
+    explicit FailureLimitListener(const doctest::ContextOptions&) {}
+    void report_query(const doctest::QueryData&) override {}
+    void test_run_start() override {}
+    void test_run_end(const doctest::TestRunStats&) override {}
+    void test_case_start(const doctest::TestCaseData& data) override
+    {
+        g_case = data.m_name;
+        g_failures = 0;
+        g_lines_left = INT_MAX;
+    }
+    void test_case_reenter(const doctest::TestCaseData&) override {}
+    void test_case_end(const doctest::CurrentTestCaseStats&) override
+    {
+        if (g_lines_left < 0)
+            std::fprintf(stderr, "... and %d more failed checks not shown\n", -g_lines_left);
+    }
+    void test_case_exception(const doctest::TestCaseException&) override {}
+    void subcase_start(const doctest::SubcaseSignature&) override {}
+    void subcase_end() override {}
+    void log_assert(const doctest::AssertData&) override {}
+    void log_message(const doctest::MessageData&) override {}
+    void test_case_skipped(const doctest::TestCaseData&) override {}
+};
+DOCTEST_REGISTER_LISTENER("failure_limit", 1, FailureLimitListener);
 
 } // namespace
 
@@ -40,16 +63,20 @@ void print_failure(const std::string& line)
 
 bool check(bool ok, const char* file, int line, const std::string& what, const std::string& values)
 {
-    ++g_checks;
-    if (ok)
-        return true;
-    ++g_failures;
-    if (g_lines_left > 0) {
-        --g_lines_left;
-        print_failure(std::string(file) + ":" + std::to_string(line) + ": CHECK failed: " + what +
-                      (values.empty() ? "" : "  (" + values + ")"));
+    if (!ok) {
+        ++g_failures;
+        if (g_lines_left-- <= 0)
+            return false; // counted (the case has already failed on the ones shown), not reported
     }
-    return false;
+    // One doctest assertion at the caller's place: what was checked and, failed, the values compared.
+    doctest::detail::ResultBuilder result(doctest::assertType::DT_CHECK, file, line, what.c_str());
+    result.m_failed = !ok;
+    if (!ok)
+        result.m_decomp = values.c_str();
+    if (result.log())
+        DOCTEST_BREAK_INTO_DEBUGGER();
+    result.react();
+    return ok;
 }
 
 bool check_eq(double a, double b, const char* file, int line, const char* a_text, const char* b_text)
@@ -103,34 +130,67 @@ std::string show(const glm::dvec4& v)
     return "(" + show(v.x) + ", " + show(v.y) + ", " + show(v.z) + ", " + show(v.w) + ")";
 }
 
-void fail(const std::string& why)
-{
-    ++g_failures;
-    print_failure("FAIL: " + why);
-}
-
 void limit_failure_lines(int limit) { g_lines_left = limit; }
 
-int checks() { return g_checks; }
+std::string check_id(const std::string& name)
+{
+    std::string id;
+    for (char c : name) {
+        const bool keep = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+        if (c >= 'A' && c <= 'Z')
+            id += char(c - 'A' + 'a');
+        else if (keep)
+            id += c;
+        else if (!id.empty() && id.back() != '-')
+            id += '-';
+    }
+    while (!id.empty() && id.back() == '-')
+        id.pop_back();
+    return id;
+}
+
+void set_listing_checks() { g_listing_checks = true; }
+
+bool listing_checks() { return g_listing_checks; }
+
+void list_check(const std::string& id) { std::printf("tf-check\t%s\t%s\n", g_case.c_str(), id.c_str()); }
 
 int failures() { return g_failures; }
 
-int finish()
+// ---------------------------------------------------------------------------------------------------
+// The device and the `texfilter` command.
+
+std::string texfilter_path()
 {
-    std::printf("%s\n", g_failures ? "FAILED" : "all passed");
-    return g_failures ? 1 : 0;
+    const char* env = std::getenv("TEXFILTER_EXE");
+    return env && *env ? env : TF_TEXFILTER_EXE;
 }
 
-// ---------------------------------------------------------------------------------------------------
-// The `texfilter` command.
-
-std::string texfilter_path_from_args(int argc, char** argv, const char* usage)
+std::string test_device()
 {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: %s\n", usage);
-        std::exit(2);
-    }
-    return argv[1];
+    const char* env = std::getenv("TEXFILTER_TEST_DEVICE");
+    return env ? env : "";
+}
+
+ContextOptions test_context_options()
+{
+    ContextOptions options;
+    options.device = test_device();
+    options.validate = true;
+    return options;
+}
+
+const DeviceInfo& test_device_info()
+{
+    static const DeviceInfo info = [] {
+        VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+        VkInstance instance = create_instance(false, &messenger);
+        const std::vector<DeviceInfo> devices = list_devices(instance);
+        const DeviceInfo chosen = devices[size_t(select_device(devices, test_device()))];
+        vkDestroyInstance(instance, nullptr);
+        return chosen;
+    }();
+    return info;
 }
 
 fs::path make_work_dir(const std::string& name)
@@ -164,17 +224,25 @@ double round_to_float(double x)
 
 } // namespace
 
-std::vector<Lookup> random_footprint_lookups(int count, unsigned seed, double max_octave, double max_stretch)
+std::vector<Lookup> random_footprint_lookups(int count, unsigned seed, const FootprintRanges& r)
 {
     std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> uv(-1.0, 2.0), angle(0.0, 6.283185307179586), octaves(-4.0, max_octave),
-        stretch(0.0, max_stretch);
+    std::uniform_real_distribution<double> uv(r.uv_min, r.uv_max), angle(0.0, 6.283185307179586),
+        octaves(r.octave_min, r.octave_max), stretch(0.0, r.max_stretch), shear(-r.max_shear, r.max_shear);
     std::vector<Lookup> lookups;
     for (int i = 0; i < count; ++i) {
-        const double size = std::exp2(octaves(rng)) / 256.0;
-        const double a = angle(rng), ratio = std::exp2(stretch(rng));
-        lookups.push_back({uv(rng), uv(rng), size * std::cos(a), size * std::sin(a), -size / ratio * std::sin(a),
-                           size / ratio * std::cos(a)});
+        const double size = std::exp2(octaves(rng)) / r.texture_size;
+        const double a = angle(rng);
+        const double ratio = r.max_stretch > 0 ? std::exp2(stretch(rng)) : 1.0;
+        const double minor = size / ratio;
+        double minor_u = -minor * std::sin(a), minor_v = minor * std::cos(a); // a right angle from the major
+        if (r.max_shear > 0) {
+            const double b = a + 1.5707963267948966 + shear(rng);
+            minor_u = minor * std::cos(b);
+            minor_v = minor * std::sin(b);
+        }
+        const double u = uv(rng), v = uv(rng);
+        lookups.push_back({u, v, size * std::cos(a), size * std::sin(a), minor_u, minor_v});
     }
     return lookups;
 }
@@ -245,8 +313,9 @@ SampleResult run_sample(const std::string& texfilter, const fs::path& work, cons
 {
     static int runs = 0; // one output file a run, kept until the work dir goes
     const std::string out = (work / ("sample-" + std::to_string(runs++) + ".csv")).string();
+    const std::string device = test_device().empty() ? "" : "--device '" + test_device() + "' ";
     const std::string command = "timeout " + std::to_string(kSampleSeconds) + " '" + texfilter +
-                                "' sample --validate " + (stats ? "--stats " : "") + flags + " --lookups '" +
+                                "' sample --validate " + device + (stats ? "--stats " : "") + flags + " --lookups '" +
                                 lookups_csv + "' -o '" + out + "' > /dev/null";
     if (const int status = std::system(command.c_str()); status != 0)
         throw Error("command failed (" + exit_text(status) + "): " + command);

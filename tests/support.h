@@ -1,9 +1,17 @@
 #pragma once
-// What the tests in this folder share: CHECK macros with one failure count, a scratch directory, and
-// `texfilter sample` runs (a lookups CSV in, colours and per-lookup stats out).
+// What the tests in this folder share: CHECK macros reported through doctest (tests/README.md), a
+// scratch directory, the device the suite runs on, and `texfilter sample` runs (a lookups CSV in,
+// colours and per-lookup stats out).
+//
+// doctest's own short macro names are off (DOCTEST_CONFIG_NO_SHORT_MACRO_NAMES, set by CMake): CHECK and
+// its family below keep this suite's meaning (a values string, CHECK_NEAR, tf::Error for throws), and
+// TEST_CASE / TEST_SUITE_BEGIN / MESSAGE are doctest's.
+#include <doctest/doctest.h>
+
 #include "texture/error.h"
 #include "core/lookup_stats.h"
 #include "reference/reference.h"
+#include "vulkan/context.h"
 
 #include <exception>
 #include <filesystem>
@@ -15,8 +23,8 @@
 namespace tf::test {
 
 // ---------------------------------------------------------------------------------------------------
-// Checks. Each CHECK* counts one check; a failed one counts a failure and prints
-// "file:line: CHECK failed: <expression>  (<values>)" on stderr.
+// Checks. Each CHECK* is one doctest assertion at the caller's file and line: a failed one fails the
+// running test case and prints the expression and <values> (what was compared).
 
 bool check(bool ok, const char* file, int line, const std::string& what, const std::string& values = "");
 bool check_eq(double a, double b, const char* file, int line, const char* a_text, const char* b_text);
@@ -37,28 +45,54 @@ void texel_contrast(const Image& level, double u, double v, Wrap wrap, double& a
 std::string show(double x); // every digit (%.17g)
 std::string show(const glm::dvec4& v);
 
-// Counts a failure that is no CHECK (an exception, say) and prints "FAIL: why" on stderr.
-void fail(const std::string& why);
-// From here on print at most `limit` failure lines, counting the rest: one bad GPU run can fail
-// thousands of lookups, and the first few say what went wrong.
+// For the rest of the running test case report at most `limit` failed checks, counting the rest (the
+// case still fails; its end says how many were not shown): one bad GPU run can fail thousands of
+// lookups, and the first few say what went wrong. Every test case starts unlimited.
 void limit_failure_lines(int limit);
-int checks();
+// Failed checks of the running test case (shown or not).
 int failures();
-// Prints "all passed" or "FAILED"; returns the exit status.
-int finish();
+
+// Named checks inside one test case, each its own ctest test: the case runs each as the doctest SUBCASE
+// check_id(name) (ctest runs one with --test-case=CASE --subcase=ID). Under --tf-list-checks
+// (tests/list_doctest_cases.cmake, at build time) the case calls list_check(ID) instead, which prints
+// "tf-check<TAB>CASE<TAB>ID", and runs nothing.
+std::string check_id(const std::string& name); // lower case, a-z 0-9 and '-' only
+void set_listing_checks();
+bool listing_checks();
+void list_check(const std::string& id);
 
 // ---------------------------------------------------------------------------------------------------
-// The `texfilter` command.
+// The device and the `texfilter` command.
 
-// argv[1], the texfilter executable; anything else prints "usage: <usage>" and exits 2.
-std::string texfilter_path_from_args(int argc, char** argv, const char* usage);
+// $TEXFILTER_EXE, else the texfilter this build made (tests/CMakeLists.txt compiles its path in).
+std::string texfilter_path();
+
+// $TEXFILTER_TEST_DEVICE (an index or part of a name, as `--device`), "" for texfilter's default
+// (lavapipe first): the one device every test of the suite runs on, in process and through `sample`.
+std::string test_device();
+// Context options for that device, with the validation layers on (any message fails the test).
+ContextOptions test_context_options();
+// The device's properties (tolerances come from its precision bits); read once a process.
+const DeviceInfo& test_device_info();
 
 // A fresh directory texfilter-<name>-<pid> in the system's temp dir, removed when the process exits.
 std::filesystem::path make_work_dir(const std::string& name);
 
-// Random lookups: uv in [-1, 2], footprints 2^o / 256 with o in [-4, max_octave] (1/16 texel and up on a
-// 256 texture), a random angle, the minor column shorter by 2^s, s in [0, max_stretch].
-std::vector<Lookup> random_footprint_lookups(int count, unsigned seed, double max_octave, double max_stretch);
+// Where random_footprint_lookups draws from. Footprints are 2^o level-0 texels of a texture_size texture,
+// o in [octave_min, octave_max], at a random angle; the minor column is shorter by 2^s, s in
+// [0, max_stretch], and turned from the major one by a right angle plus a shear in [-max_shear,
+// max_shear] radians (columns not orthogonal). A range of zero width draws nothing (so adding one keeps
+// the other draws of the same seed).
+struct FootprintRanges {
+    double uv_min = -1.0, uv_max = 2.0;
+    double octave_min = -4.0, octave_max = 9.0;
+    double max_stretch = 0.0;
+    double max_shear = 0.0;
+    double texture_size = 256.0;
+};
+
+// Random lookups (as given, in double; as_float gives the GPU's view), the same for the same seed.
+std::vector<Lookup> random_footprint_lookups(int count, unsigned seed, const FootprintRanges& ranges);
 
 // The GPU reads lookups as float: the reference must see the same numbers.
 Lookup as_float(const Lookup& l);
@@ -74,13 +108,20 @@ struct SampleResult {
     std::vector<LookupStats> stats; // with stats only
 };
 
-// Runs `texfilter sample --validate [--stats] FLAGS --lookups LOOKUPS_CSV -o OUT` (OUT in work) under a
-// time limit and reads one row per lookup back. Throws tf::Error naming the command line if the command
+// Runs `texfilter sample --validate [--device D] [--stats] FLAGS --lookups LOOKUPS_CSV -o OUT` (OUT in
+// work; D the test device) under a time limit and reads one row per lookup back. Throws tf::Error naming the command line if the command
 // fails or its output is not that.
 SampleResult run_sample(const std::string& texfilter, const std::filesystem::path& work, const std::string& flags,
                         const std::string& lookups_csv, bool stats);
 
 } // namespace tf::test
+
+// doctest's test-case macros under their usual names (the short names are off, see the top).
+#define TEST_CASE(...) DOCTEST_TEST_CASE(__VA_ARGS__)
+#define TEST_SUITE_BEGIN(...) DOCTEST_TEST_SUITE_BEGIN(__VA_ARGS__)
+#define TEST_SUITE_END() DOCTEST_TEST_SUITE_END()
+#define MESSAGE(...) DOCTEST_MESSAGE(__VA_ARGS__)
+#define INFO(...) DOCTEST_INFO(__VA_ARGS__)
 
 // CHECK(expr) or CHECK(expr, values): values (a string) says what was compared.
 #define CHECK(expr, ...) ::tf::test::check(bool(expr), __FILE__, __LINE__, #expr __VA_OPT__(, __VA_ARGS__))

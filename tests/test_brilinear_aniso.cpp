@@ -42,8 +42,9 @@ std::string str(double x)
     return buf;
 }
 
-// Runs one named check and prints its line: name, an optional detail the body fills in, PASS/FAIL.
-void run_check(const std::string& name, const std::function<std::string()>& body)
+// Runs one named check (its own ctest test, brilinear_aniso.ID: support.h's TF_NAMED_CHECK) and prints its
+// line: name, an optional detail the body fills in, PASS/FAIL.
+void run_check_body(const std::string& name, const std::function<std::string()>& body)
 {
     const int failures_before = test::failures();
     test::limit_failure_lines(8); // the first few of a check are enough to see what went wrong
@@ -52,11 +53,21 @@ void run_check(const std::string& name, const std::function<std::string()>& body
         detail = body();
     } catch (const std::exception& e) {
         detail = std::string("exception: ") + e.what();
-        test::fail(name + ": " + detail);
+        CHECK(!"the check threw", name + ": " + detail);
     }
     const bool failed = test::failures() > failures_before;
     std::printf("%-58s %s%s%s\n", name.c_str(), failed ? "FAIL" : "PASS", detail.empty() ? "" : "  ", detail.c_str());
     std::fflush(stdout);
+}
+
+void run_check(const std::string& name, const std::function<std::string()>& body)
+{
+    const std::string id = test::check_id(name);
+    if (test::listing_checks()) {
+        test::list_check(id);
+        return;
+    }
+    DOCTEST_SUBCASE(id.c_str()) { run_check_body(name, body); }
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -106,17 +117,7 @@ MipChain noise_chain(int n, unsigned seed)
 // columns of J are not orthogonal, so the feline axis differs from the gpu one), uv beyond [0, 1] for wraps.
 std::vector<Lookup> random_lookups(int count, unsigned seed)
 {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> uv(-1.0, 2.0), angle(0.0, 6.283185307179586), octaves(-4.0, 9.0),
-        stretch(0.0, 3.0), shear(-1.0, 1.0);
-    std::vector<Lookup> lookups;
-    for (int i = 0; i < count; ++i) {
-        double size = std::exp2(octaves(rng)) / 256.0;
-        double a = angle(rng), ratio = std::exp2(stretch(rng)), b = a + 1.5707963267948966 + shear(rng);
-        lookups.push_back({uv(rng), uv(rng), size * std::cos(a), size * std::sin(a), size / ratio * std::cos(b),
-                           size / ratio * std::sin(b)});
-    }
-    return lookups;
+    return test::random_footprint_lookups(count, seed, {.max_stretch = 3.0, .max_shear = 1.0});
 }
 
 // Degenerate footprints the filters must survive: zero, NaN, ±Inf, one column zero, parallel columns.
@@ -269,15 +270,16 @@ double float_bound(const MipChain& chain, Wrap wrap, const Lookup& l, const Layo
 }
 
 // Bound on |hardware taps - manual taps| (as tests/test_hw_vs_manual.cpp derives it): each probe is one
-// textureLod at an explicit LOD, which the sampler may quantise to mipmapPrecisionBits (4 on lavapipe:
-// within 1/16), and whose bilinear weights it rounds to subTexelPrecisionBits (8: within 1/256 of a texel).
-// Trilinear is piecewise linear in lambda, so its extremes over [lambda - e, lambda + e] are at the ends
-// or at whole levels in between.
-const double kSubTexelStep = 1.0 / 256.0;
-const double kMipmapStep = 1.0 / 16.0;
-
+// textureLod at an explicit LOD (no scale factor to approximate), whose level blend delta the sampler
+// quantises to the device's mipmapPrecisionBits (Vulkan spec, "Image Level(s) Selection": "quantized to the
+// number of mipmap precision bits"; 4 on lavapipe: within 1/16), and whose bilinear weights it rounds to
+// subTexelPrecisionBits (8 on lavapipe: within 1/256 of a texel). Trilinear is piecewise linear in lambda,
+// so its extremes over [lambda - e, lambda + e] are at the ends or at whole levels in between.
 double hardware_bound(const MipChain& chain, Wrap wrap, const Lookup& l, const Layout& p)
 {
+    const DeviceInfo& device = test::test_device_info();
+    const double kSubTexelStep = std::ldexp(1.0, -int(device.sub_texel_precision_bits));
+    const double kMipmapStep = std::ldexp(1.0, -int(device.mipmap_precision_bits));
     const int top = int(chain.levels.size()) - 1;
     double bound = kFloatArithmetic;
     for (int k = 0; k < p.count; ++k) {
@@ -591,6 +593,8 @@ void gpu_checks()
             return tally.summary();
         });
         run_check("gpu brilinear 0.25 fetches: 4 outside the band, 8 inside (" + c.texture + ")", [&] {
+            if (gpu.colors.empty()) // run on its own (each check is its own ctest test)
+                gpu = sample(c.texture, flags("brilinear", c.wrap) + " --band 0.25", path);
             int outside = 0, inside = 0, skipped = 0;
             for (size_t i = 0; i < lookups.size(); ++i) {
                 double d = clamp_lod(chain, reference_lod(chain, lookups[i], o)), f = d - std::floor(d);
@@ -707,6 +711,8 @@ void gpu_checks()
                 return tally.summary();
             });
             run_check("gpu aniso " + s + " manual fetches = 8N (4N on a level) (" + c.texture + ")", [&] {
+                if (manual.colors.empty()) // run on its own (each check is its own ctest test)
+                    manual = sample(c.texture, f + " --taps manual", path);
                 double mean = 0;
                 int checked = 0;
                 for (size_t i = 0; i < lookups.size(); ++i) {
@@ -725,6 +731,8 @@ void gpu_checks()
             });
             run_check("gpu aniso " + s + " hardware vs manual taps (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
                 hardware = sample(c.texture, f + " --taps hardware", path);
+                if (manual.colors.empty())
+                    manual = sample(c.texture, f + " --taps manual", path);
                 Tally tally;
                 for (size_t i = 0; i < lookups.size(); ++i) {
                     if (edge[i]) { // the same shader code picks N on both sides, but the layout here may not
@@ -770,11 +778,15 @@ void gpu_checks()
 
 } // namespace
 
-int main(int argc, char** argv)
+TEST_SUITE_BEGIN("reference");
+TEST_CASE("reference") { reference_checks(); }
+TEST_SUITE_END();
+
+TEST_SUITE_BEGIN("gpu");
+TEST_CASE("gpu")
 {
-    g_texfilter = test::texfilter_path_from_args(argc, argv, "test_brilinear_aniso PATH/TO/texfilter");
+    g_texfilter = test::texfilter_path();
     g_work = test::make_work_dir("brilinear-aniso");
-    reference_checks();
     gpu_checks();
-    return test::finish();
 }
+TEST_SUITE_END();

@@ -77,7 +77,14 @@ bool oiio_write(const std::string& path, int w, int h, int channels, OIIO::TypeD
 // ---------------------------------------------------------------------------------------------
 // diff.h
 
-void test_identical() {
+// This executable is built with image I/O only; the lean stub would refuse every file below.
+TEST_CASE("image-io-available")
+{
+    CHECK(tf::image_io_available());
+}
+
+TEST_CASE("identical")
+{
     const tf::Image a = noise_image(16, 8, 1);
     const tf::DiffResult r = tf::diff_images(a, a, tf::DiffThresholds{});
     CHECK_EQ(r.max_error, 0.0);
@@ -93,7 +100,8 @@ void test_identical() {
     CHECK_STR_CONTAINS(text, "\nPASS");
 }
 
-void test_one_pixel_off() {
+TEST_CASE("one-pixel-off")
+{
     const int w = 8, h = 4;  // 32 pixels: one failing pixel is exactly 3.125 %
     const tf::Image a = noise_image(w, h, 2);
     tf::Image b = a;
@@ -153,7 +161,8 @@ void test_one_pixel_off() {
     CHECK_EQ(rc.max_y, 1);
 }
 
-void test_nan_fails() {
+TEST_CASE("nan-fails")
+{
     const tf::Image a = noise_image(4, 4, 3);
     tf::Image b = a;
     b.at(1, 3).r = std::numeric_limits<float>::quiet_NaN();
@@ -168,13 +177,15 @@ void test_nan_fails() {
     CHECK(tf::diff_images(b, b, t).pass);  // NaN in both at the same place is no difference
 }
 
-void test_size_mismatch() {
+TEST_CASE("size-mismatch")
+{
     const tf::Image a = tf::make_image(256, 256), b = tf::make_image(128, 128);
     CHECK_THROWS_WITH(tf::diff_images(a, b, tf::DiffThresholds{}), "image sizes differ: 256x256 vs 128x128");
     CHECK_THROWS_WITH(tf::diff_image(a, b, 1.0), "image sizes differ: 256x256 vs 128x128");
 }
 
-void test_diff_image() {
+TEST_CASE("diff-image")
+{
     tf::Image a = tf::make_image(2, 1, glm::vec4(0.5f, 0.5f, 0.5f, 0.5f));
     tf::Image b = a;
     b.at(0, 0) = glm::vec4(0.25f, 0.5f, 0.75f, 0.0f);
@@ -196,7 +207,9 @@ void test_diff_image() {
 // ---------------------------------------------------------------------------------------------
 // image_io.h
 
-void test_png_round_trip(const fs::path& dir) {
+TEST_CASE("png-round-trip")
+{
+    const fs::path dir = tf::test::make_work_dir("test-diff-png-round-trip");
     tf::Image img = noise_image(37, 23, 4);  // odd sizes catch stride mistakes
     img.at(0, 0) = glm::vec4(0.0f, 1.0f, 0.001f, 0.0f);
     img.at(1, 0) = glm::vec4(2.0f, -1.0f, std::numeric_limits<float>::quiet_NaN(), 1.5f);  // clamped
@@ -245,7 +258,9 @@ void test_png_round_trip(const fs::path& dir) {
     CHECK_EQ(entries_in(dir), 1u);  // no temp file left beside it
 }
 
-void test_exr_round_trip(const fs::path& dir) {
+TEST_CASE("exr-round-trip")
+{
+    const fs::path dir = tf::test::make_work_dir("test-diff-exr-round-trip");
     tf::Image img = noise_image(19, 11, 5);
     img.at(0, 0) = glm::vec4(1000.5f, 1e-3f, 0.0f, 2.0f);  // outside [0,1] is kept, linear
     img.at(1, 0) = glm::vec4(std::numeric_limits<float>::infinity(), -3.0f, 0.1f, 0.9f);
@@ -264,7 +279,9 @@ void test_exr_round_trip(const fs::path& dir) {
     CHECK_EQ(entries_in(dir), 1u);  // no temp file left beside it
 }
 
-void test_bad_inputs(const fs::path& dir) {
+TEST_CASE("bad-inputs")
+{
+    const fs::path dir = tf::test::make_work_dir("test-diff-bad-inputs");
     const std::string missing = file_in(dir, "missing.png");
     CHECK_THROWS_WITH(tf::read_image(missing, tf::ColorSpace::automatic, 16384), missing + ": no such file");
     CHECK_THROWS_WITH(tf::read_image_raw(missing), missing + ": no such file");
@@ -310,7 +327,9 @@ void test_bad_inputs(const fs::path& dir) {
                       "3x40 exceeds the maximum texture size 39");
 }
 
-void test_bad_outputs(const fs::path& dir) {
+TEST_CASE("bad-outputs")
+{
+    const fs::path dir = tf::test::make_work_dir("test-diff-bad-outputs");
     const fs::path sub = dir / "out";
     fs::create_directories(sub);
     const tf::Image img = noise_image(4, 4, 8);
@@ -335,7 +354,9 @@ void test_bad_outputs(const fs::path& dir) {
     CHECK_EQ(entries_in(sub), 1u);
 }
 
-void test_channel_layouts(const fs::path& dir) {
+TEST_CASE("channel-layouts")
+{
+    const fs::path dir = tf::test::make_work_dir("test-diff-channel-layouts");
     const double decoded128 = 0.2158605;  // sRGB code 128 in linear light
     const int w = 3, h = 2;
 
@@ -417,7 +438,9 @@ void test_channel_layouts(const fs::path& dir) {
 // ---------------------------------------------------------------------------------------------
 // report.h
 
-void test_report(const fs::path& dir) {
+TEST_CASE("report")
+{
+    const fs::path dir = tf::test::make_work_dir("test-diff-report");
     const fs::path sub = dir / "report";
     fs::create_directories(sub);
     const std::string path = (sub / "index.html").string();
@@ -452,34 +475,3 @@ void test_report(const fs::path& dir) {
 
 } // namespace
 
-int main() {
-    if (!tf::image_io_available()) {
-        std::printf("test_diff needs the OpenImageIO build of image_io\n");
-        return 1;
-    }
-    const fs::path dir = tf::test::make_work_dir("test-diff");
-    const std::vector<std::pair<const char*, std::function<void()>>> tests = {
-        {"identical", test_identical},
-        {"one_pixel_off", test_one_pixel_off},
-        {"nan_fails", test_nan_fails},
-        {"size_mismatch", test_size_mismatch},
-        {"diff_image", test_diff_image},
-        {"png_round_trip", [&] { test_png_round_trip(tf::test::make_work_dir("test-diff-png")); }},
-        {"exr_round_trip", [&] { test_exr_round_trip(tf::test::make_work_dir("test-diff-exr")); }},
-        {"bad_inputs", [&] { test_bad_inputs(dir); }},
-        {"bad_outputs", [&] { test_bad_outputs(dir); }},
-        {"channel_layouts", [&] { test_channel_layouts(dir); }},
-        {"report", [&] { test_report(dir); }},
-    };
-    for (const auto& [name, fn] : tests) {
-        const int before = tf::test::failures();
-        try {
-            fn();
-        } catch (const std::exception& e) {
-            tf::test::fail(std::string(name) + ": unexpected exception: " + e.what());
-        }
-        std::printf("%-16s %s\n", name, tf::test::failures() == before ? "ok" : "FAILED");
-    }
-    std::printf("%d checks, %d failed, %zu tests\n", tf::test::checks(), tf::test::failures(), tests.size());
-    return tf::test::failures() ? 1 : 0;
-}

@@ -62,29 +62,13 @@ bool finite(const glm::dvec4& c) { return std::isfinite(c.r) && std::isfinite(c.
 
 // Footprints from 1/16 texel to 512 texels, axis ratios 1..64 (past max_aniso 16), any angle, uv in [-1, 2].
 std::vector<Lookup> random_lookups(int count, unsigned seed, int size = 256) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> uv(-1.0, 2.0), angle(0.0, 2 * std::numbers::pi), octaves(-4.0, 9.0),
-        stretch(0.0, 6.0);
-    std::vector<Lookup> lookups;
-    for (int i = 0; i < count; ++i) {
-        const double major = std::exp2(octaves(rng)) / size, a = angle(rng), ratio = std::exp2(stretch(rng));
-        const double minor = major / ratio;
-        lookups.push_back(as_float({uv(rng), uv(rng), major * std::cos(a), major * std::sin(a), -minor * std::sin(a),
-                                    minor * std::cos(a)}));
-    }
-    return lookups;
+    return as_float(test::random_footprint_lookups(count, seed, {.max_stretch = 6.0, .texture_size = double(size)}));
 }
 
 // Isotropic footprints (a rotated square pixel) of 2^lo .. 2^hi texels.
 std::vector<Lookup> isotropic_lookups(int count, unsigned seed, double lo, double hi, int size = 256) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> uv(0.0, 1.0), angle(0.0, 2 * std::numbers::pi), octaves(lo, hi);
-    std::vector<Lookup> lookups;
-    for (int i = 0; i < count; ++i) {
-        const double r = std::exp2(octaves(rng)) / size, a = angle(rng);
-        lookups.push_back(as_float({uv(rng), uv(rng), r * std::cos(a), r * std::sin(a), -r * std::sin(a), r * std::cos(a)}));
-    }
-    return lookups;
+    return as_float(test::random_footprint_lookups(
+        count, seed, {.uv_min = 0.0, .uv_max = 1.0, .octave_min = lo, .octave_max = hi, .texture_size = double(size)}));
 }
 
 // ---------------------------------------------------------------- textures
@@ -130,8 +114,13 @@ void texture_differences(const MipChain& chain, Wrap wrap, double& adjacent, dou
 
 struct Gpu {
     VulkanContext context;
-    explicit Gpu(bool validate) : context(create_context({"", validate})) {}
-    ~Gpu() { destroy_context(context); }
+    // The test device, validation on; no validation message by the end.
+    Gpu() : context(create_context(test::test_context_options())) {}
+    ~Gpu()
+    {
+        destroy_context(context);
+        CHECK_LE("Vulkan validation messages (in-process)", double(validation_message_count()), 0.0);
+    }
     std::vector<glm::dvec4> sample(const MipChain& chain, const std::vector<Lookup>& lookups,
                                    const SamplerOptions& options, std::vector<LookupStats>* stats = nullptr) {
         GpuTexture texture = upload_texture(context, chain, false);
@@ -147,7 +136,28 @@ struct Gpu {
     }
 };
 Gpu* g_gpu = nullptr;
-int g_bits = 8; // the device's subTexelPrecisionBits
+
+// What a GPU test case holds: the device (g_gpu while it lives), texfilter and a work dir.
+struct GpuCase {
+    Gpu gpu;
+    int bits = int(gpu.context.info.sub_texel_precision_bits); // the device's subTexelPrecisionBits
+    GpuCase()
+    {
+        g_gpu = &gpu;
+        g_texfilter = test::texfilter_path();
+        g_work = test::make_work_dir("ewa");
+        std::printf("     device: %s, subTexelPrecisionBits %d\n", gpu.context.info.name.c_str(), bits);
+    }
+    ~GpuCase() { g_gpu = nullptr; }
+};
+
+// The texfilter command's cases (no in-process device): texfilter, a work dir, the device's bits.
+int command_case()
+{
+    g_texfilter = test::texfilter_path();
+    g_work = test::make_work_dir("ewa");
+    return int(test::test_device_info().sub_texel_precision_bits);
+}
 
 std::vector<glm::dvec4> reference(const MipChain& chain, const std::vector<Lookup>& lookups,
                                   const SamplerOptions& options) {
@@ -750,44 +760,54 @@ void check_degenerate_all_families(int bits) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    g_texfilter = test::texfilter_path_from_args(argc, argv, "test_ewa PATH/TO/texfilter");
-    g_work = test::make_work_dir("ewa");
-    const char* env = std::getenv("TEXFILTER_VALIDATE");
-    try {
-        Gpu gpu(env && std::string(env) == "1");
-        g_gpu = &gpu;
-        const int bits = int(gpu.context.info.sub_texel_precision_bits);
-        g_bits = bits;
-        std::printf("     device: %s, subTexelPrecisionBits %d\n", gpu.context.info.name.c_str(), bits);
-        check_ramp(bits);
-        check_constant();
-        check_mipcolors();
-        check_isotropic_vs_trilinear(bits);
-        check_alpha_blurs();
-        for (Taps taps : {Taps::manual, Taps::hardware}) {
-            const std::string name = to_string(taps);
-            check_gpu_vs_reference("noise", ewa_options(Wrap::repeat, taps), name, bits);
-            check_gpu_vs_reference("checker", ewa_options(Wrap::clamp, taps), name, bits);
-            check_gpu_vs_reference("zoneplate", ewa_options(Wrap::mirror, taps), name, bits);
-            check_gpu_vs_reference("noise", ewa_options(Wrap::repeat, taps, 8.0f), name + ", alpha 8", bits);
-            // Bias, LOD clamp (the loop cap shrinks footprints past level 3), eccentricity clamp 4.
-            SamplerOptions o = ewa_options(Wrap::repeat, taps, 0.5f, 4.0f);
-            o.lod_bias = -0.5f;
-            o.lod_max = 3.0f;
-            check_gpu_vs_reference("grid", o, name + ", alpha 0.5, max-aniso 4, bias -0.5, lod-max 3", bits);
-        }
-        report_hw_vs_manual("noise", make_procedural("noise", 256), Wrap::repeat);
-        report_hw_vs_manual("checker", make_procedural("checker", 256), Wrap::clamp);
-        report_hw_vs_manual("zoneplate", make_procedural("zoneplate", 256), Wrap::mirror);
-        check_overshoot();
-        check_counts();
-        g_gpu = nullptr;
-    } catch (const std::exception& e) {
-        test::fail(e.what());
-    }
-    check_non_finite();
-    check_degenerate_all_families(g_bits);
-    CHECK_LE("Vulkan validation messages (in-process)", double(validation_message_count()), 0.0);
-    return test::finish();
+TEST_SUITE_BEGIN("gpu");
+
+TEST_CASE("ramp") { GpuCase c; check_ramp(c.bits); }
+TEST_CASE("constant") { GpuCase c; check_constant(); }
+TEST_CASE("mipcolors") { GpuCase c; check_mipcolors(); }
+TEST_CASE("isotropic-vs-trilinear") { GpuCase c; check_isotropic_vs_trilinear(c.bits); }
+TEST_CASE("alpha-blurs") { GpuCase c; check_alpha_blurs(); }
+
+// GPU vs reference on random footprints, each texture and option set with manual and hardware taps.
+void gpu_vs_reference(const std::string& texture, Wrap wrap, Taps taps, float alpha = 2.0f)
+{
+    GpuCase c;
+    const std::string name = to_string(taps);
+    check_gpu_vs_reference(texture, ewa_options(wrap, taps, alpha), alpha == 2.0f ? name : name + ", alpha 8", c.bits);
 }
+// Bias, LOD clamp (the loop cap shrinks footprints past level 3), eccentricity clamp 4.
+void gpu_vs_reference_clamps(Taps taps)
+{
+    GpuCase c;
+    SamplerOptions o = ewa_options(Wrap::repeat, taps, 0.5f, 4.0f);
+    o.lod_bias = -0.5f;
+    o.lod_max = 3.0f;
+    check_gpu_vs_reference("grid", o, to_string(taps) + ", alpha 0.5, max-aniso 4, bias -0.5, lod-max 3", c.bits);
+}
+TEST_CASE("gpu-vs-reference-noise-manual") { gpu_vs_reference("noise", Wrap::repeat, Taps::manual); }
+TEST_CASE("gpu-vs-reference-checker-manual") { gpu_vs_reference("checker", Wrap::clamp, Taps::manual); }
+TEST_CASE("gpu-vs-reference-zoneplate-manual") { gpu_vs_reference("zoneplate", Wrap::mirror, Taps::manual); }
+TEST_CASE("gpu-vs-reference-noise-alpha-8-manual") { gpu_vs_reference("noise", Wrap::repeat, Taps::manual, 8.0f); }
+TEST_CASE("gpu-vs-reference-grid-clamps-manual") { gpu_vs_reference_clamps(Taps::manual); }
+TEST_CASE("gpu-vs-reference-noise-hardware") { gpu_vs_reference("noise", Wrap::repeat, Taps::hardware); }
+TEST_CASE("gpu-vs-reference-checker-hardware") { gpu_vs_reference("checker", Wrap::clamp, Taps::hardware); }
+TEST_CASE("gpu-vs-reference-zoneplate-hardware") { gpu_vs_reference("zoneplate", Wrap::mirror, Taps::hardware); }
+TEST_CASE("gpu-vs-reference-noise-alpha-8-hardware") { gpu_vs_reference("noise", Wrap::repeat, Taps::hardware, 8.0f); }
+TEST_CASE("gpu-vs-reference-grid-clamps-hardware") { gpu_vs_reference_clamps(Taps::hardware); }
+
+// Reported, not asserted beyond what report_hw_vs_manual checks.
+TEST_CASE("hw-vs-manual-noise") { GpuCase c; report_hw_vs_manual("noise", make_procedural("noise", 256), Wrap::repeat); }
+TEST_CASE("hw-vs-manual-checker") { GpuCase c; report_hw_vs_manual("checker", make_procedural("checker", 256), Wrap::clamp); }
+TEST_CASE("hw-vs-manual-zoneplate")
+{
+    GpuCase c;
+    report_hw_vs_manual("zoneplate", make_procedural("zoneplate", 256), Wrap::mirror);
+}
+TEST_CASE("overshoot") { GpuCase c; check_overshoot(); }
+TEST_CASE("counts") { GpuCase c; check_counts(); }
+TEST_CASE("non-finite") { command_case(); check_non_finite(); }
+TEST_SUITE_END();
+
+TEST_SUITE_BEGIN("gpu slow");
+TEST_CASE("degenerate-all-families") { check_degenerate_all_families(command_case()); }
+TEST_SUITE_END();

@@ -128,7 +128,7 @@ tf::Image checker(int size)
 // ---------------------------------------------------------------------------------------------------
 // 1. Box samples: inside the pixel, one per stratum of the side x side grid, the same on every call.
 
-void test_box_samples()
+TEST_CASE("box-samples")
 {
     const int pixels[][2] = {{0, 0}, {5, 3}, {63, 17}, {1000, 2000}};
     for (const auto& p : pixels)
@@ -160,7 +160,7 @@ void test_box_samples()
 // ---------------------------------------------------------------------------------------------------
 // 2. Gaussian samples: the moments and the median radius of a 2D Gaussian of sigma 0.5 px.
 
-void test_gaussian_samples()
+TEST_CASE("gaussian-samples")
 {
     const int side = 64, n = side * side, x = 12, y = 34;
     const dvec2 centre(x + 0.5, y + 0.5);
@@ -213,7 +213,7 @@ void test_gaussian_samples()
 // through pixel middles, so a box pixel on an edge is covered exactly by the share of its corners that hit
 // (1/2 along an edge, 1/4 at a corner): side 16 is even, and the edge falls between two strata columns.
 
-void test_constant_texture()
+TEST_CASE("constant-texture")
 {
     const int w = 64, size = 64, side = 16;
     const glm::vec4 colour(0.25f, 0.5f, 0.75f, 1.0f);
@@ -272,7 +272,7 @@ void test_constant_texture()
 // 4. A linear ramp: any filter symmetric about the pixel centre reproduces a linear function exactly,
 // so both truths equal the ramp at the centre's uv, up to the sampling error of the mean sample position.
 
-void test_linear_ramp()
+TEST_CASE("linear-ramp")
 {
     const int w = 64, size = 64, side = 64;
     // Texel x holds its centre's u, (x + 0.5) / w (exact in float: a multiple of 1/128).
@@ -339,7 +339,7 @@ void test_linear_ramp()
 // by at most 1/8 within one, a sample strays from its stratum's mean with sd <= 1/16, and the pixel's sd
 // is <= (1/16) / sqrt(N) = 0.001: 0.01 (10 sd) per pixel for the box.
 
-void test_checker()
+TEST_CASE("checker")
 {
     const int w = 64, size = 64, side = 64;
     const tf::MipChain chain = tf::build_mip_chain(checker(w));
@@ -407,7 +407,7 @@ void write_bytes(const std::filesystem::path& path, const std::string& bytes)
     std::ofstream(path, std::ios::binary) << bytes;
 }
 
-void test_pfm()
+TEST_CASE("pfm")
 {
     const std::filesystem::path work = tf::test::make_work_dir("ground-truth");
     // 3x2 (not square: a transposition shows), values of every kind of float.
@@ -469,7 +469,7 @@ void test_pfm()
 
 tf::Image constant(int w, int h, glm::vec3 rgb) { return tf::make_image(w, h, glm::vec4(rgb, 1.0f)); }
 
-void test_bench_metrics()
+TEST_CASE("bench-metrics")
 {
     const tf::TimeSummary odd = tf::summarize_times({3, 1, 2});
     CHECK_EQ(odd.min, 1);
@@ -544,19 +544,3 @@ void test_bench_metrics()
 
 } // namespace
 
-int main()
-{
-    try {
-        test_box_samples();
-        test_gaussian_samples();
-        test_constant_texture();
-        test_linear_ramp();
-        test_checker();
-        test_pfm();
-        test_bench_metrics();
-    } catch (const std::exception& e) {
-        tf::test::fail(std::string("exception: ") + e.what());
-    }
-    std::printf("test_ground_truth: %d checks, %d failed\n", tf::test::checks(), tf::test::failures());
-    return tf::test::failures() == 0 ? 0 : 1;
-}

@@ -49,7 +49,7 @@ bool printable(const std::string& s)
 // ---------------------------------------------------------------------------------------------------
 // Lookups CSV.
 
-void test_csv_bom()
+TEST_CASE("csv-bom")
 {
     // A UTF-8 byte order mark (what Windows editors write) before the header was rejected with a message
     // whose quoted header looked exactly like the expected one.
@@ -60,7 +60,7 @@ void test_csv_bom()
     try {
         lookups = tf::read_lookups_csv(path.string());
     } catch (const tf::Error& e) {
-        tf::test::fail(std::string("a BOM before the header is refused: ") + e.what());
+        CHECK(!"a BOM before the header is refused", e.what());
     }
     CHECK_EQ(lookups.size(), 1);
     if (lookups.size() == 1) {
@@ -74,7 +74,7 @@ void test_csv_bom()
     CHECK_THROWS_WITH(tf::read_lookups_csv(path.string()), path.string() + ":2: '\\xef\\xbb\\xbf0.25' is not a number");
 }
 
-void test_csv_long_lines()
+TEST_CASE("csv-long-lines")
 {
     // An 8 MB garbage line (the was 50 MB) was echoed whole into the message, so to stderr.
     const fs::path work = tf::test::make_work_dir("readers-long");
@@ -99,7 +99,7 @@ void test_csv_long_lines()
     CHECK_EQ(csv_error(path) == path.string() + ":2: 'abc' is not a number", 1);
 }
 
-void test_csv_numbers()
+TEST_CASE("csv-numbers")
 {
     const fs::path work = tf::test::make_work_dir("readers-numbers");
     const fs::path path = work / "numbers.csv";
@@ -119,7 +119,7 @@ void test_csv_numbers()
 // ---------------------------------------------------------------------------------------------------
 // Manifest, PFM and flags through their stream entry points and the parsing fixes they share.
 
-void test_manifest_stream()
+TEST_CASE("manifest-stream")
 {
     std::istringstream in("# comment\nplane-a plane checker trilinear lod-bias=1 size=64x32\n\n"
                           "zoom-b zoom noise bilinear texture-size=16 fail=0.01\n");
@@ -140,7 +140,7 @@ void test_manifest_stream()
     CHECK_THROWS_WITH(tf::parse_manifest(size_nul, "m.txt"), "m.txt:1: bad value for size");
 }
 
-void test_pfm_stream()
+TEST_CASE("pfm-stream")
 {
     const std::string pixels(12, '\0');
     std::istringstream good("PF\n1 1\n-1.0\n" + pixels, std::ios::binary);
@@ -156,7 +156,7 @@ void test_pfm_stream()
     CHECK_THROWS_WITH(tf::read_pfm(header_only, "p.pfm"), "p.pfm: ");
 }
 
-void test_flags()
+TEST_CASE("flags")
 {
     const std::vector<tf::FlagSpec> specs = {{"--n", "N", ""}, {"--x", "X", ""}, {"--size", "WxH", ""}};
     const tf::Args args =
@@ -169,18 +169,3 @@ void test_flags()
 
 } // namespace
 
-int main()
-{
-    try {
-        test_csv_bom();
-        test_csv_long_lines();
-        test_csv_numbers();
-        test_manifest_stream();
-        test_pfm_stream();
-        test_flags();
-    } catch (const std::exception& e) {
-        tf::test::fail(std::string("exception: ") + e.what());
-    }
-    std::printf("test_readers: %d checks, %d failed\n", tf::test::checks(), tf::test::failures());
-    return tf::test::failures() == 0 ? 0 : 1;
-}

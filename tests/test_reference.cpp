@@ -40,7 +40,8 @@ tf::MipChain single_level(tf::Image image) {
     return chain;
 }
 
-void test_wrap_tables() {
+TEST_CASE("wrap-tables")
+{
     // n = 3, i = -7..7, worked out by hand.
     const int repeat[15] = {2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1};
     const int clamp[15] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 2, 2, 2, 2, 2};
@@ -64,7 +65,8 @@ void test_wrap_tables() {
     CHECK_EQ(tf::wrap_texel(-1000000000000000LL, 3, Wrap::clamp), 0);
 }
 
-void test_nearest() {
+TEST_CASE("nearest")
+{
     const tf::Image row = image_from(4, 1, {1, 2, 4, 8});
     CHECK_NEAR(tf::reference_nearest(row, 0.3, 0.5, Wrap::repeat), expect(2), 0.0);   // 1.2 -> 1
     CHECK_NEAR(tf::reference_nearest(row, 0.999, 0.5, Wrap::repeat), expect(8), 0.0); // 3.996 -> 3
@@ -79,7 +81,8 @@ void test_nearest() {
     CHECK_NEAR(tf::reference_nearest(row, 1.0, 0.5, Wrap::mirror), expect(8), 0.0);
 }
 
-void test_bilinear_2x2() {
+TEST_CASE("bilinear-2x2")
+{
     // Texels (0,0)=0, (1,0)=1, (0,1)=2, (1,1)=4. Centres at u,v = 0.25, 0.75.
     const tf::Image img = image_from(2, 2, {0, 1, 2, 4});
     CHECK_NEAR(tf::reference_bilinear(img, 0.25, 0.25, Wrap::clamp), expect(0), kEps);
@@ -97,7 +100,8 @@ void test_bilinear_2x2() {
     CHECK_NEAR(tf::reference_bilinear(img, 0.0, 0.25, Wrap::mirror), expect(0), kEps);
 }
 
-void test_bilinear_borders() {
+TEST_CASE("bilinear-borders")
+{
     const tf::Image row = image_from(4, 1, {1, 2, 4, 8});
     // u = -0.25: x = -1.5, texels -2, -1 at 1/2 each.
     //   clamp 0,0 -> 1; repeat 2,3 -> (4+8)/2 = 6; mirror 1,0 -> (2+1)/2 = 1.5
@@ -118,7 +122,8 @@ void test_bilinear_borders() {
     CHECK_NEAR(tf::reference_bilinear(row, 0.1875, 0.9, Wrap::clamp), expect(1.25), kEps);
 }
 
-void test_huge_and_nonfinite_uv() {
+TEST_CASE("huge-and-nonfinite-uv")
+{
     const tf::Image row = image_from(4, 1, {1, 2, 4, 8});
     const tf::MipChain chain = single_level(row);
     // Clamped to the last / first texel; must not be UB for 1e30.
@@ -151,7 +156,8 @@ void test_huge_and_nonfinite_uv() {
 //   nearest, bilinear ignore gradients;
 // - uv 1e37, 1e38, 3e38, -3e38: what uv reduced by the wrap gives (repeat 0, clamp 2 or -1);
 // - uv or v 1e100, ±Inf, NaN: (0, 0, 0, 0).
-void test_degenerate_table() {
+TEST_CASE("degenerate-table")
+{
     const tf::MipChain chain = tf::make_procedural("checker", 512);
     const dvec4 mean(chain.levels.back().at(0, 0));
     const double nan = NAN, inf = INFINITY, t = 1.0 / 512;
@@ -227,7 +233,8 @@ void test_degenerate_table() {
 
 tf::MipChain square_chain(int size) { return single_level(tf::make_image(size, size)); }
 
-void test_lod() {
+TEST_CASE("lod")
+{
     const tf::MipChain c256 = square_chain(256);
     tf::SamplerOptions opt;
     auto lod = [&](const tf::MipChain& c, double dudx, double dvdx, double dudy, double dvdy) {
@@ -263,7 +270,8 @@ void test_lod() {
 
 tf::Lookup lookup_at(double u, double v, double grad) { return {u, v, grad, 0, 0, grad}; }
 
-void test_level_selection() {
+TEST_CASE("level-selection")
+{
     // mipcolors 16: 5 levels, each flat. rho = 1 texel (grad 1/16) -> lambda 0; the bias picks d.
     const tf::MipChain chain = tf::make_procedural("mipcolors", 16);
     CHECK_EQ(int(chain.levels.size()), 5);
@@ -337,7 +345,8 @@ void test_level_selection() {
     CHECK_THROWS(tf::reference_sample(chain, opt, one));
 }
 
-void test_mip_level_count() {
+TEST_CASE("mip-level-count")
+{
     CHECK_EQ(tf::mip_level_count(1, 1), 1);
     CHECK_EQ(tf::mip_level_count(2, 1), 2);
     CHECK_EQ(tf::mip_level_count(3, 3), 2);
@@ -349,7 +358,8 @@ void test_mip_level_count() {
     CHECK_EQ(tf::mip_level_count(16384, 16384), 15);
 }
 
-void test_downsample() {
+TEST_CASE("downsample")
+{
     // 3x1 [a,b,c] -> 1x1 = (a+b+c)/3, per channel including alpha.
     tf::Image three = tf::make_image(3, 1);
     three.texels = {{0.3f, 0.0f, 1.0f, 1.0f}, {0.6f, 0.5f, 0.0f, 1.0f}, {0.9f, 1.0f, 0.5f, 0.0f}};
@@ -408,7 +418,8 @@ void test_downsample() {
     CHECK_NEAR(dvec4(tall.at(0, 1)), expect(7), 1e-6);
 }
 
-void test_mip_chain() {
+TEST_CASE("mip-chain")
+{
     const tf::MipChain c = tf::build_mip_chain(tf::make_image(7, 5, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f)));
     CHECK_EQ(int(c.levels.size()), 3);
     CHECK_EQ(c.levels[0].width, 7);
@@ -429,7 +440,8 @@ void test_mip_chain() {
     CHECK_EQ(wide.levels[8].height, 1);
 }
 
-void test_srgb() {
+TEST_CASE("srgb")
+{
     CHECK_EQ(tf::srgb_to_linear(0.0), 0.0);
     CHECK_NEAR(tf::srgb_to_linear(1.0), 1.0, 1e-15);
     CHECK_NEAR(tf::srgb_to_linear(0.04045), 0.04045 / 12.92, 1e-15); // 0.0031308049...
@@ -458,7 +470,8 @@ struct Rng {
     double range(double lo, double hi) { return lo + (hi - lo) * next(); }
 };
 
-void test_constant_texture() {
+TEST_CASE("constant-texture")
+{
     const glm::vec4 c(0.25f, 0.5f, 0.75f, 1.0f);
     const dvec4 expected(0.25, 0.5, 0.75, 1.0);
     const tf::MipChain chain = tf::build_mip_chain(tf::make_image(13, 6, c));
@@ -486,7 +499,8 @@ void test_constant_texture() {
     CHECK_EQ(bad, 0);
 }
 
-void test_procedural() {
+TEST_CASE("procedural")
+{
     // mipcolors: first 12 levels pairwise distinct, flat, floor-rule sizes.
     const tf::MipChain mc = tf::make_procedural("mipcolors", 4096);
     CHECK_EQ(int(mc.levels.size()), 13);
@@ -581,7 +595,8 @@ void test_procedural() {
     }
 }
 
-void test_names() {
+TEST_CASE("names")
+{
     const char* names[] = {"nearest",    "bilinear",    "trilinear",    "nearest-mip", "bilinear-mip",
                            "hw-nearest", "hw-bilinear", "hw-trilinear", "hw-aniso",    "brilinear",
                            "aniso",      "ewa",         "sat",          "sat-assembly"};
@@ -611,22 +626,3 @@ void test_names() {
 
 } // namespace
 
-int main() {
-    test_wrap_tables();
-    test_nearest();
-    test_bilinear_2x2();
-    test_bilinear_borders();
-    test_huge_and_nonfinite_uv();
-    test_degenerate_table();
-    test_lod();
-    test_level_selection();
-    test_mip_level_count();
-    test_downsample();
-    test_mip_chain();
-    test_srgb();
-    test_constant_texture();
-    test_procedural();
-    test_names();
-    std::printf("test_reference: %d checks, %d failed\n", tf::test::checks(), tf::test::failures());
-    return tf::test::failures() == 0 ? 0 : 1;
-}

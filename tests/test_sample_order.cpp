@@ -36,7 +36,7 @@ std::filesystem::path work;
 // [0, 1]; then the degenerate ones.
 std::vector<Lookup> probe_lookups(int count, unsigned seed)
 {
-    return test::as_float(test::random_footprint_lookups(count, seed, 8.0, 4.0));
+    return test::as_float(test::random_footprint_lookups(count, seed, {.octave_max = 8.0, .max_stretch = 4.0}));
 }
 
 const double nan_ = std::numeric_limits<double>::quiet_NaN(), inf_ = INFINITY;
@@ -127,26 +127,25 @@ struct Case {
     bool hardware_sampler; // an hw-* filter: degenerate gradients are the harness's to define
 };
 
-void check_orders(const std::vector<Lookup>& probes, const MipChain& chain)
+// One filter form on the random probes plus the degenerate ones, in every placement.
+void check_orders(const Case& c)
 {
+    texfilter = test::texfilter_path();
+    work = test::make_work_dir("sample-order");
+    setenv("UBSAN_OPTIONS", "halt_on_error=1:print_stacktrace=1", 0); // sanitizer builds: UB fails the run
+    test::limit_failure_lines(40);
+    std::vector<Lookup> probes = probe_lookups(96, 2026);
+    for (const Degenerate& d : degenerate)
+        probes.push_back(test::as_float(d.l));
+    const MipChain chain = make_procedural("noise", 256);
+
     std::vector<std::vector<size_t>> where;
     const std::vector<Lookup> rows = arrange(probes, where);
     const std::string csv = (work / "orders.csv").string();
     test::write_lookups_csv(csv, rows);
     const glm::dvec4 coarsest(chain.levels.back().texels.at(0));
     const size_t first_degenerate = probes.size() - degenerate.size();
-
-    const std::vector<Case> cases = {
-        {"hw-nearest", true, true},
-        {"hw-bilinear", true, true},
-        {"hw-trilinear", false, true},
-        {"hw-aniso --aniso 16", false, true},
-        {"hw-aniso --aniso 4", false, true},
-        {"aniso --taps hardware --aniso-shape gpu", false, false},
-        {"aniso --taps hardware --aniso-shape feline", false, false},
-        {"ewa --taps hardware", false, false},
-    };
-    for (const Case& c : cases) {
+    {
         test::SampleResult r =
             test::run_sample(texfilter, work, "--texture noise --wrap repeat --filter " + c.filter, csv, true);
         int differ = 0, wrong = 0;
@@ -192,6 +191,9 @@ void check_orders(const std::vector<Lookup>& probes, const MipChain& chain)
 // Vulkan pass used to memcpy from a null pointer there: UBSan, which this test makes fatal for its runs).
 void check_empty()
 {
+    texfilter = test::texfilter_path();
+    work = test::make_work_dir("sample-order-empty");
+    setenv("UBSAN_OPTIONS", "halt_on_error=1:print_stacktrace=1", 0);
     const std::string csv = (work / "empty.csv").string();
     test::write_lookups_csv(csv, {});
     int ok = 0, total = 0;
@@ -215,20 +217,15 @@ void check_empty()
 
 } // namespace
 
-int main(int argc, char** argv)
-{
-    texfilter = test::texfilter_path_from_args(argc, argv, "test_sample_order PATH/TO/texfilter");
-    work = test::make_work_dir("sample-order");
-    setenv("UBSAN_OPTIONS", "halt_on_error=1:print_stacktrace=1", 0); // sanitizer builds: UB fails the run
-    test::limit_failure_lines(40);
-    try {
-        std::vector<Lookup> probes = probe_lookups(96, 2026);
-        for (const Degenerate& d : degenerate)
-            probes.push_back(test::as_float(d.l));
-        check_orders(probes, make_procedural("noise", 256));
-        check_empty();
-    } catch (const std::exception& e) {
-        test::fail(e.what());
-    }
-    return test::finish();
-}
+TEST_SUITE_BEGIN("gpu");
+// Case: the --filter flags, reads level 0 only, is an hw-* filter (see Case).
+TEST_CASE("hw-nearest") { check_orders({"hw-nearest", true, true}); }
+TEST_CASE("hw-bilinear") { check_orders({"hw-bilinear", true, true}); }
+TEST_CASE("hw-trilinear") { check_orders({"hw-trilinear", false, true}); }
+TEST_CASE("hw-aniso-16") { check_orders({"hw-aniso --aniso 16", false, true}); }
+TEST_CASE("hw-aniso-4") { check_orders({"hw-aniso --aniso 4", false, true}); }
+TEST_CASE("aniso-gpu-hardware-taps") { check_orders({"aniso --taps hardware --aniso-shape gpu", false, false}); }
+TEST_CASE("aniso-feline-hardware-taps") { check_orders({"aniso --taps hardware --aniso-shape feline", false, false}); }
+TEST_CASE("ewa-hardware-taps") { check_orders({"ewa --taps hardware", false, false}); }
+TEST_CASE("no-lookups") { check_empty(); }
+TEST_SUITE_END();

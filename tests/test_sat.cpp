@@ -2,7 +2,7 @@
 // includes (shaders/texfilter/sat.glsl) through `texfilter sample` against the CPU reference
 // (host/reference/sat.cpp) and against facts worked out here from the texels themselves.
 //
-// usage: test_sat PATH/TO/texfilter      (one line per check with the measured numbers)
+// One test case a check (ctest: sat.CASE), each printing a line with the measured numbers.
 //
 // Tolerances, GPU vs exact. The table holds 16-bit texels quantised over each channel's own range,
 // q = round((v − lo)/span·65535) (lo the channel's smallest value, span its largest − lo rounded up to
@@ -313,26 +313,24 @@ void check_aligned_boxes()
 // ---------------------------------------------------------------------------------------------------
 // (3) Wrap modes: random lookups, many across the border, GPU vs the reference.
 
+// Random footprints from 1/8 texel to 512 texels (256 texture) around [0, 1]^2 (the shared generator),
+// then a quarter moved right onto an edge (the box straddles it) and one in 16 many periods out.
 std::vector<Lookup> random_lookups(int count, unsigned seed)
 {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> uv(-0.3, 1.3), angle(0.0, 6.283185307179586), octaves(-3.0, 9.0),
-        stretch(0.0, 3.0), unit(0.0, 1.0);
-    std::vector<Lookup> lookups;
+    std::vector<Lookup> lookups = test::random_footprint_lookups(
+        count, seed, {.uv_min = -0.3, .uv_max = 1.3, .octave_min = -3.0, .octave_max = 9.0, .max_stretch = 3.0});
+    std::mt19937 rng(seed + 1);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int i = 0; i < count; ++i) {
-        double size = std::exp2(octaves(rng)) / 256.0; // footprint from 1/8 texel to 512 texels (256 texture)
-        double a = angle(rng), ratio = std::exp2(stretch(rng));
-        double u = uv(rng), v = uv(rng);
+        Lookup& l = lookups[size_t(i)];
         if (i % 4 == 0) // right at an edge: the box straddles it
-            u = std::round(u) + (unit(rng) - 0.5) * 0.02;
+            l.u = std::round(l.u) + (unit(rng) - 0.5) * 0.02;
         if (i % 4 == 1)
-            v = std::round(v) + (unit(rng) - 0.5) * 0.02;
+            l.v = std::round(l.v) + (unit(rng) - 0.5) * 0.02;
         if (i % 16 == 2) { // far away: many periods out
-            u += 1000.0 * (unit(rng) - 0.5);
-            v -= 100.0 * unit(rng);
+            l.u += 1000.0 * (unit(rng) - 0.5);
+            l.v -= 100.0 * unit(rng);
         }
-        lookups.push_back({u, v, size * std::cos(a), size * std::sin(a), -size / ratio * std::sin(a),
-                           size / ratio * std::cos(a)});
     }
     return as_float(lookups);
 }
@@ -347,20 +345,28 @@ bool crosses_border(const Lookup& l, double lod_bias)
 
 double g_worst_gpu_error = 0; // over every GPU-vs-reference comparison, for the summary line
 
-void check_wrap_modes(std::vector<SampleResult>& sat_runs, std::vector<Lookup>& lookups_out)
+struct WrapCase { std::string texture; int size; Wrap wrap; float bias = 0; };
+
+// (3)'s lookups and its GPU run of one case (what (5a) compares sat-assembly --boxes 1 with).
+const std::vector<Lookup>& wrap_mode_lookups()
 {
-    const std::vector<Lookup> lookups = random_lookups(2000, 2026);
-    lookups_out = lookups;
-    struct Case { std::string texture; int size; Wrap wrap; float bias = 0; };
-    const std::vector<Case> cases = {{"noise", 256, Wrap::repeat},    {"noise", 256, Wrap::clamp},
-                                     {"noise", 256, Wrap::mirror},    {"zoneplate", 100, Wrap::repeat},
-                                     {"zoneplate", 100, Wrap::clamp}, {"zoneplate", 100, Wrap::mirror},
-                                     {"grid", 64, Wrap::repeat, 1.5f}, {"checker", 96, Wrap::clamp, -1.0f}};
-    for (const Case& c : cases) {
+    static const std::vector<Lookup> lookups = random_lookups(2000, 2026);
+    return lookups;
+}
+
+SampleResult wrap_mode_run(const WrapCase& c)
+{
+    return sample(c.texture, c.size, "sat", c.wrap, wrap_mode_lookups(), "--lod-bias " + std::to_string(c.bias));
+}
+
+void check_wrap_mode(const WrapCase& c)
+{
+    const std::vector<Lookup>& lookups = wrap_mode_lookups();
+    {
         MipChain chain = make_procedural(c.texture, c.size);
         const Image& image = chain.levels[0];
         const double float_error = Levels(image).float_error(), range = channel_range(image);
-        SampleResult gpu = sample(c.texture, c.size, "sat", c.wrap, lookups, "--lod-bias " + std::to_string(c.bias));
+        SampleResult gpu = wrap_mode_run(c);
         SamplerOptions options = sat_options(Filter::sat, c.wrap);
         options.lod_bias = c.bias;
         Tally inside, border;
@@ -389,7 +395,6 @@ void check_wrap_modes(std::vector<SampleResult>& sat_runs, std::vector<Lookup>& 
                     c.texture.c_str(), c.size, to_string(c.wrap).c_str(), c.bias, lookups.size(), border_count,
                     inside.worst_error, border.worst_error, worst_large, std::max(inside.worst_ratio, border.worst_ratio),
                     most_fetches, ok ? "PASS" : "FAIL");
-        sat_runs.push_back(std::move(gpu));
     }
 }
 
@@ -441,15 +446,16 @@ glm::dvec4 parallelogram_mean(const Image& image, const Lookup& l, Wrap wrap, in
     return sum / double(m * m);
 }
 
-void check_assembly(const std::vector<SampleResult>& sat_runs, const std::vector<Lookup>& lookups)
+void check_assembly()
 {
     // K = 1 against the sat runs of (3) (noise 256 repeat, clamp): bit for bit (CSV has 9 digits: a float).
+    const std::vector<Lookup>& lookups = wrap_mode_lookups();
     int differ = 0;
-    const Wrap wraps[] = {Wrap::repeat, Wrap::clamp};
-    for (int w = 0; w < 2; ++w) {
-        SampleResult k1 = sample("noise", 256, "sat-assembly", wraps[w], lookups, "--boxes 1");
+    for (Wrap wrap : {Wrap::repeat, Wrap::clamp}) {
+        const SampleResult sat = wrap_mode_run({"noise", 256, wrap});
+        SampleResult k1 = sample("noise", 256, "sat-assembly", wrap, lookups, "--boxes 1");
         for (size_t i = 0; i < lookups.size(); ++i)
-            differ += k1.colors[i] != sat_runs[size_t(w)].colors[i];
+            differ += k1.colors[i] != sat.colors[i];
     }
     CHECK(differ == 0, fmt("%g lookups differ", differ));
     std::printf("(5a) sat-assembly --boxes 1 vs sat: %zu lookups x 2 wrap modes, %d differ -> %s\n", lookups.size(),
@@ -733,26 +739,43 @@ void check_non_finite_texels()
 
 } // namespace
 
-int main(int argc, char** argv)
-{
-    texfilter = test::texfilter_path_from_args(argc, argv, "test_sat PATH/TO/texfilter");
-    work = test::make_work_dir("sat");
-    try {
-        auto start = std::chrono::steady_clock::now();
-        check_exact_box_sums();
-        check_aligned_boxes();
-        std::vector<SampleResult> sat_runs;
-        std::vector<Lookup> lookups;
-        check_wrap_modes(sat_runs, lookups);
-        check_constant_time();
-        check_assembly(sat_runs, lookups);
-        check_degenerate();
-        check_hdr();
-        check_non_finite_texels();
-        std::printf("max GPU-vs-reference error over (3) and (5b): %.3g; total %.1f s\n", g_worst_gpu_error,
-                    seconds_since(start));
-    } catch (const std::exception& e) {
-        test::fail(e.what());
+// texfilter and a work dir for the case; its summary line: the worst GPU-vs-reference error it saw.
+struct SatCase {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    SatCase()
+    {
+        texfilter = test::texfilter_path();
+        work = test::make_work_dir("sat");
     }
-    return test::finish();
-}
+    ~SatCase()
+    {
+        std::printf("max GPU-vs-reference error: %.3g; total %.1f s\n", g_worst_gpu_error, seconds_since(start));
+    }
+};
+
+TEST_SUITE_BEGIN("reference");
+TEST_CASE("exact-box-sums") { SatCase c; check_exact_box_sums(); }
+TEST_SUITE_END();
+
+TEST_SUITE_BEGIN("gpu");
+TEST_CASE("aligned-boxes") { SatCase c; check_aligned_boxes(); }
+TEST_CASE("wrap-noise-256-repeat") { SatCase c; check_wrap_mode({"noise", 256, Wrap::repeat}); }
+TEST_CASE("wrap-noise-256-clamp") { SatCase c; check_wrap_mode({"noise", 256, Wrap::clamp}); }
+TEST_CASE("wrap-noise-256-mirror") { SatCase c; check_wrap_mode({"noise", 256, Wrap::mirror}); }
+TEST_CASE("wrap-zoneplate-100-repeat") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::repeat}); }
+TEST_CASE("wrap-zoneplate-100-clamp") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::clamp}); }
+TEST_CASE("wrap-zoneplate-100-mirror") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::mirror}); }
+TEST_CASE("wrap-grid-64-repeat-bias-1.5") { SatCase c; check_wrap_mode({"grid", 64, Wrap::repeat, 1.5f}); }
+TEST_CASE("wrap-checker-96-clamp-bias-minus-1") { SatCase c; check_wrap_mode({"checker", 96, Wrap::clamp, -1.0f}); }
+TEST_CASE("constant-time") { SatCase c; check_constant_time(); }
+TEST_SUITE_END();
+
+TEST_SUITE_BEGIN("gpu slow");
+TEST_CASE("assembly") { SatCase c; check_assembly(); }
+TEST_SUITE_END();
+
+TEST_SUITE_BEGIN("gpu");
+TEST_CASE("degenerate") { SatCase c; check_degenerate(); }
+TEST_CASE("hdr") { SatCase c; check_hdr(); }
+TEST_CASE("non-finite-texels") { SatCase c; check_non_finite_texels(); }
+TEST_SUITE_END();

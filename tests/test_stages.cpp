@@ -31,19 +31,35 @@ Comparison compare(const Image& a, const Image& b, double limit)
     return c;
 }
 
+// The test device with validation on and the checker uploaded; at the end, no validation message.
+struct Stages {
+    VulkanContext context = create_context(test::test_context_options());
+    MipChain checker = make_procedural("checker", 256);
+    GpuTexture texture = upload_texture(context, checker, false);
+    SamplerOptions trilinear = [] {
+        SamplerOptions o;
+        o.filter = Filter::trilinear;
+        return o;
+    }();
+    ~Stages()
+    {
+        destroy_texture(context, texture);
+        destroy_context(context);
+        CHECK_EQ(validation_message_count(), 0);
+    }
+};
+
 } // namespace
 
-int main()
-{
-    try {
-        ContextOptions context_options;
-        context_options.validate = true;
-        VulkanContext context = create_context(context_options);
-        MipChain checker = make_procedural("checker", 256);
-        GpuTexture texture = upload_texture(context, checker, false);
-        SamplerOptions trilinear;
-        trilinear.filter = Filter::trilinear;
+TEST_SUITE_BEGIN("gpu");
 
+TEST_CASE("fragment-vs-compute")
+{
+    Stages st;
+    VulkanContext& context = st.context;
+    GpuTexture& texture = st.texture;
+    const SamplerOptions& trilinear = st.trilinear;
+    {
         // 1. Fragment vs compute, every ray-cast scene, quad (fine) and ray-differential gradients: the same
         //    float operations in the same order, so the same bits (measured: identical on lavapipe).
         for (SceneKind kind : all_scenes()) {
@@ -60,6 +76,17 @@ int main()
             }
         }
 
+    }
+}
+
+TEST_CASE("gradients-vs-reference")
+{
+    Stages st;
+    VulkanContext& context = st.context;
+    GpuTexture& texture = st.texture;
+    const MipChain& checker = st.checker;
+    const SamplerOptions& trilinear = st.trilinear;
+    {
         // 2. Each gradient form vs the CPU reference (double; its own quads, coarse quads and central
         //    differences for ray differentials). Bound 1e-3: uv reaches ~16 (tunnel, floor), where a float32
         //    ulp is 1e-6 uv = 2.5e-4 texel of a 256 texture, times the checker's contrast 0.85, plus the
@@ -81,6 +108,17 @@ int main()
             }
         }
 
+    }
+}
+
+TEST_CASE("mesh-raster-vs-reference")
+{
+    Stages st;
+    VulkanContext& context = st.context;
+    GpuTexture& texture = st.texture;
+    const MipChain& checker = st.checker;
+    const SamplerOptions& trilinear = st.trilinear;
+    {
         // 3. The mesh scene (raster pipeline, perspective-correct uv, helper invocations past triangle edges)
         //    vs the reference's ray-cast triangles with helper-style extrapolation. Coverage at shared edges
         //    follows the rasterizer's top-left rule there and a float32 edge test here: a few edge pixels.
@@ -95,6 +133,16 @@ int main()
             CHECK(percent <= 0.1, test::show(percent));
         }
 
+    }
+}
+
+TEST_SUITE_END();
+
+TEST_SUITE_BEGIN("reference");
+
+TEST_CASE("coarse-gradients-per-quad")
+{
+    {
         // 4. Coarse gradients are one pair for the whole quad (the reference's lookups, which the compute
         //    render matched in 2), and on the plane they differ from fine ones (else 2 would prove nothing).
         {
@@ -116,12 +164,7 @@ int main()
                 changed += fine[i].lookup.dudy != coarse[i].lookup.dudy || fine[i].lookup.dvdy != coarse[i].lookup.dvdy;
             CHECK(changed > int(fine.size()) / 4, std::to_string(changed));
         }
-
-        destroy_texture(context, texture);
-        destroy_context(context);
-        CHECK_EQ(validation_message_count(), 0);
-    } catch (const std::exception& e) {
-        test::fail(e.what());
     }
-    return test::finish();
 }
+
+TEST_SUITE_END();

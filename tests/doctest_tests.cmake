@@ -1,0 +1,31 @@
+# tf_add_doctest(NAME [NAMED_CHECKS] LABELS label...): the test executable test_NAME from test_NAME.cpp
+# (doctest, one main in the support library), each of its TEST_CASEs its own ctest test NAME.CASE, or with
+# NAMED_CHECKS (every case made of named checks, tests/support.h) each check NAME.CHECK, labelled with the
+# LABELS given here plus the words of the case's TEST_SUITE. The cases are listed when the executable
+# is built (its --list-test-cases, tests/list_doctest_cases.cmake), so a new case needs no re-configure.
+# Every test runs with the validation layers on (TEXFILTER_VALIDATE=1): any message fails it.
+function(tf_add_doctest name)
+  cmake_parse_arguments(arg "NAMED_CHECKS" "" "LABELS" ${ARGN})
+  set(target test_${name})
+  add_executable(${target} ${target}.cpp)
+  target_link_libraries(${target} PRIVATE texfilter_test_support)
+  target_compile_options(${target} PRIVATE ${TF_WARNINGS})
+
+  set(tests_file ${CMAKE_CURRENT_BINARY_DIR}/${target}_tests.cmake)
+  add_custom_command(
+    TARGET ${target} POST_BUILD
+    BYPRODUCTS ${tests_file}
+    COMMAND ${CMAKE_COMMAND} -D "EXECUTABLE=$<TARGET_FILE:${target}>" -D "PREFIX=${name}."
+            -D "LABELS=${arg_LABELS}" -D "ENVIRONMENT=TEXFILTER_VALIDATE=1" -D "NAMED_CHECKS=${arg_NAMED_CHECKS}"
+            -D "OUTPUT=${tests_file}"
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/list_doctest_cases.cmake
+    VERBATIM)
+  set(include_file ${CMAKE_CURRENT_BINARY_DIR}/${target}_include.cmake)
+  file(WRITE ${include_file}
+       "if(EXISTS \"${tests_file}\")\n"
+       "  include(\"${tests_file}\")\n"
+       "else()\n"
+       "  add_test(${name}.NOT_BUILT ${name}.NOT_BUILT)\n"
+       "endif()\n")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${include_file})
+endfunction()
