@@ -6,7 +6,7 @@
 // plots and an HTML page. The goals of docs/BENCHMARKS.md are checked and reported, never asserted.
 #include "bench/metrics.h"
 #include "core/filter.h"
-#include "vulkan/render.h"
+#include "vulkan/frame_timer.h"
 #include "scene/scene.h"
 #include "io/texture_source.h"
 #include "vulkan/context.h"
@@ -35,7 +35,7 @@ struct BenchConfig {
     int truth_side = 16; // 256 samples a pixel
     bool truth_on_cpu = false; // the CPU reference's ground truth instead of the device's
     int warmup = 5, frames = 20, flicker_frames = 8;
-    FrameTimer timer = FrameTimer::timestamps; // the wall clock on CPU devices (see vulkan/render.h)
+    FrameTimer timer = FrameTimer::timestamps; // the wall clock on CPU devices (see vulkan/frame_timer.h)
     std::vector<SceneKind> scenes;
     std::vector<BenchFilter> filters;
 };

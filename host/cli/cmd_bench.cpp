@@ -4,7 +4,7 @@
 #include "cli/commands.h"
 #include "vulkan/device_memory_check.h"
 #include "texture/error.h"
-#include "vulkan/render.h"
+#include "vulkan/frame_timer.h"
 #include "core/memory_budget.h"
 #include "io/output_path.h"
 #include <cstdio>

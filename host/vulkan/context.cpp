@@ -1,92 +1,9 @@
+// The context: one device with one graphics-and-compute queue and a command pool.
 #include "vulkan/context.h"
 #include "texture/error.h"
-#include <algorithm>
-#include <cstdio>
-#include <cstring>
+#include "vulkan/cleanup.h"
 
 namespace tf {
-
-namespace {
-
-int validation_messages = 0;
-
-VKAPI_ATTR VkBool32 VKAPI_CALL on_validation_message(VkDebugUtilsMessageSeverityFlagBitsEXT,
-                                                     VkDebugUtilsMessageTypeFlagsEXT,
-                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void*)
-{
-    ++validation_messages;
-    std::fprintf(stderr, "validation: %s\n", data->pMessage);
-    return VK_FALSE;
-}
-
-const char* validation_layer = "VK_LAYER_KHRONOS_validation";
-
-bool has_validation_layer()
-{
-    uint32_t count = 0;
-    vkEnumerateInstanceLayerProperties(&count, nullptr);
-    std::vector<VkLayerProperties> layers(count);
-    vkEnumerateInstanceLayerProperties(&count, layers.data());
-    return std::any_of(layers.begin(), layers.end(),
-                       [](const VkLayerProperties& l) { return std::strcmp(l.layerName, validation_layer) == 0; });
-}
-
-std::string lower(std::string s)
-{
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return s;
-}
-
-std::string type_name(VkPhysicalDeviceType type)
-{
-    switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
-    default: return "other";
-    }
-}
-
-// A queue family that does graphics and compute (every Vulkan GPU has one), or -1.
-int find_queue_family(VkPhysicalDevice physical)
-{
-    uint32_t count = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
-    std::vector<VkQueueFamilyProperties> families(count);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
-    for (uint32_t i = 0; i < count; ++i)
-        if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT))
-            return int(i);
-    return -1;
-}
-
-uint32_t queue_family_timestamp_bits(VkPhysicalDevice physical, uint32_t family)
-{
-    uint32_t count = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
-    std::vector<VkQueueFamilyProperties> families(count);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
-    return family < count ? families[family].timestampValidBits : 0;
-}
-
-std::string usability_problem(VkPhysicalDevice physical, const DeviceInfo& info)
-{
-    if (VK_API_VERSION_MINOR(info.api_version) < 3 && VK_API_VERSION_MAJOR(info.api_version) == 1)
-        return "supports Vulkan " + version_string(info.api_version) + ", texfilter needs 1.3 (dynamic rendering)";
-    if (find_queue_family(physical) < 0)
-        return "has no queue family with both graphics and compute";
-    VkFormatProperties format{};
-    vkGetPhysicalDeviceFormatProperties(physical, VK_FORMAT_R32G32B32A32_SFLOAT, &format);
-    VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
-                                  VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT |
-                                  VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
-    if ((format.optimalTilingFeatures & needed) != needed)
-        return "cannot sample RGBA32F with linear filtering and render to it";
-    return "";
-}
-
-} // namespace
 
 void vk_check(VkResult result, const char* what)
 {
@@ -100,183 +17,45 @@ std::string version_string(uint32_t version)
            "." + std::to_string(VK_API_VERSION_PATCH(version));
 }
 
-int validation_message_count() { return validation_messages; }
-
-VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger)
-{
-    load_vulkan();
-    uint32_t loader_version = 0;
-    vkEnumerateInstanceVersion(&loader_version);
-    if (VK_API_VERSION_MINOR(loader_version) < 3 && VK_API_VERSION_MAJOR(loader_version) == 1)
-        throw Error("the Vulkan loader supports Vulkan " + version_string(loader_version) + "; texfilter needs 1.3");
-    if (validate && !has_validation_layer())
-        throw Error("validation was requested but VK_LAYER_KHRONOS_validation is not installed "
-                    "(Debian: vulkan-validationlayers)");
-
-    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-    app.pApplicationName = "texfilter";
-    app.apiVersion = VK_API_VERSION_1_3;
-    const char* debug_extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
-    VkDebugUtilsMessengerCreateInfoEXT messenger_info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    messenger_info.messageSeverity =
-        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                                 VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                                 VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    messenger_info.pfnUserCallback = on_validation_message;
-
-    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-    info.pApplicationInfo = &app;
-    if (validate) {
-        info.enabledLayerCount = 1;
-        info.ppEnabledLayerNames = &validation_layer;
-        info.enabledExtensionCount = 1;
-        info.ppEnabledExtensionNames = &debug_extension;
-        info.pNext = &messenger_info; // also catches messages from instance creation itself
-    }
-    VkInstance instance = VK_NULL_HANDLE;
-    VkResult result = vkCreateInstance(&info, nullptr, &instance);
-    if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
-        throw Error("no Vulkan driver found: the loader is installed but no ICD answered "
-                    "(install mesa-vulkan-drivers for lavapipe, or a GPU driver)");
-    TF_VK(result);
-    load_instance_functions(instance);
-    if (validate)
-        TF_VK(vkCreateDebugUtilsMessengerEXT(instance, &messenger_info, nullptr, messenger));
-    return instance;
-}
-
-std::vector<DeviceInfo> list_devices(VkInstance instance)
-{
-    uint32_t count = 0;
-    TF_VK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
-    std::vector<VkPhysicalDevice> physicals(count);
-    TF_VK(vkEnumeratePhysicalDevices(instance, &count, physicals.data()));
-    std::vector<DeviceInfo> devices;
-    for (uint32_t i = 0; i < count; ++i) {
-        VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
-        VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-        driver.pNext = &maintenance3;
-        VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
-        subgroup.pNext = &driver;
-        VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
-        properties.pNext = &subgroup;
-        vkGetPhysicalDeviceProperties2(physicals[i], &properties);
-        VkPhysicalDeviceFeatures features{};
-        vkGetPhysicalDeviceFeatures(physicals[i], &features);
-        const VkPhysicalDeviceLimits& limits = properties.properties.limits;
-
-        DeviceInfo d;
-        d.index = int(i);
-        d.name = properties.properties.deviceName;
-        d.type = type_name(properties.properties.deviceType);
-        d.driver_name = driver.driverName;
-        d.driver_info = driver.driverInfo;
-        d.driver_id = driver.driverID;
-        d.api_version = properties.properties.apiVersion;
-        d.driver_version = properties.properties.driverVersion;
-        d.sub_texel_precision_bits = limits.subTexelPrecisionBits;
-        d.mipmap_precision_bits = limits.mipmapPrecisionBits;
-        d.max_sampler_anisotropy = limits.maxSamplerAnisotropy;
-        d.max_sampler_lod_bias = limits.maxSamplerLodBias;
-        d.max_image_dimension_2d = limits.maxImageDimension2D;
-        d.subgroup_size = subgroup.subgroupSize;
-        bool quad = (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_QUAD_BIT) != 0;
-        d.quad_ops_fragment = quad && (subgroup.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT);
-        d.quad_ops_compute = quad && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
-        d.sampler_anisotropy = features.samplerAnisotropy == VK_TRUE;
-        d.timestamp_period_ns = limits.timestampPeriod;
-        d.max_memory_allocation_size = maintenance3.maxMemoryAllocationSize;
-        VkPhysicalDeviceMemoryProperties memory{};
-        vkGetPhysicalDeviceMemoryProperties(physicals[i], &memory);
-        for (uint32_t h = 0; h < memory.memoryHeapCount; ++h)
-            if ((memory.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) &&
-                memory.memoryHeaps[h].size > d.device_local_heap_size) {
-                d.device_local_heap_size = memory.memoryHeaps[h].size;
-                d.device_local_heap_index = h;
-            }
-        if (int family = find_queue_family(physicals[i]); family >= 0)
-            d.timestamp_valid_bits = queue_family_timestamp_bits(physicals[i], uint32_t(family));
-        d.why_not_usable = usability_problem(physicals[i], d);
-        d.usable = d.why_not_usable.empty();
-        devices.push_back(d);
-    }
-    return devices;
-}
-
-int select_device(const std::vector<DeviceInfo>& devices, const std::string& request)
-{
-    auto account = [&]() {
-        std::string s;
-        for (const DeviceInfo& d : devices)
-            s += "\n  [" + std::to_string(d.index) + "] " + d.name + ": " +
-                 (d.usable ? "usable" : d.why_not_usable);
-        return s;
-    };
-    if (devices.empty())
-        throw Error("no Vulkan device found: the loader and driver answered but listed no physical device");
-    if (request.empty()) {
-        for (const DeviceInfo& d : devices)
-            if (d.usable && d.driver_id == VK_DRIVER_ID_MESA_LLVMPIPE)
-                return d.index;
-        for (const DeviceInfo& d : devices)
-            if (d.usable)
-                return d.index;
-        throw Error("no usable Vulkan device:" + account());
-    }
-    bool numeric = !request.empty() && std::all_of(request.begin(), request.end(), ::isdigit);
-    for (const DeviceInfo& d : devices) {
-        bool match = numeric ? std::to_string(d.index) == request
-                             : lower(d.name).find(lower(request)) != std::string::npos;
-        if (!match)
-            continue;
-        if (!d.usable)
-            throw Error("--device '" + request + "' names " + d.name + ", which " + d.why_not_usable);
-        return d.index;
-    }
-    throw Error("--device '" + request + "' matches no Vulkan device; devices are:" + account());
-}
-
 VulkanContext create_context(const ContextOptions& options)
 {
     VulkanContext context;
     context.instance = create_instance(options.validate, &context.messenger);
-    try {
-        std::vector<DeviceInfo> devices = list_devices(context.instance);
-        context.info = devices[size_t(select_device(devices, options.device))];
-        uint32_t count = 0;
-        vkEnumeratePhysicalDevices(context.instance, &count, nullptr);
-        std::vector<VkPhysicalDevice> physicals(count);
-        vkEnumeratePhysicalDevices(context.instance, &count, physicals.data());
-        context.physical = physicals[size_t(context.info.index)];
-        context.queue_family = uint32_t(find_queue_family(context.physical));
+    Cleanup on_failure; // destroy_context undoes a half-made context
+    on_failure.add([&] { destroy_context(context); });
 
-        float priority = 1.0f;
-        VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-        queue.queueFamilyIndex = context.queue_family;
-        queue.queueCount = 1;
-        queue.pQueuePriorities = &priority;
-        VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-        features13.dynamicRendering = VK_TRUE;
-        VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-        features.pNext = &features13;
-        features.features.samplerAnisotropy = context.info.sampler_anisotropy ? VK_TRUE : VK_FALSE;
-        VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-        info.pNext = &features;
-        info.queueCreateInfoCount = 1;
-        info.pQueueCreateInfos = &queue;
-        TF_VK(vkCreateDevice(context.physical, &info, nullptr, &context.device));
-        load_device_functions(context.device);
-        vkGetDeviceQueue(context.device, context.queue_family, 0, &context.queue);
+    std::vector<DeviceInfo> devices = list_devices(context.instance);
+    context.info = devices[size_t(select_device(devices, options.device))];
+    uint32_t count = 0;
+    vkEnumeratePhysicalDevices(context.instance, &count, nullptr);
+    std::vector<VkPhysicalDevice> physicals(count);
+    vkEnumeratePhysicalDevices(context.instance, &count, physicals.data());
+    context.physical = physicals[size_t(context.info.index)];
+    context.queue_family = uint32_t(find_queue_family(context.physical));
 
-        VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-        pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-        pool.queueFamilyIndex = context.queue_family;
-        TF_VK(vkCreateCommandPool(context.device, &pool, nullptr, &context.command_pool));
-    } catch (...) {
-        destroy_context(context);
-        throw;
-    }
+    float priority = 1.0f;
+    VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queue.queueFamilyIndex = context.queue_family;
+    queue.queueCount = 1;
+    queue.pQueuePriorities = &priority;
+    VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    features13.dynamicRendering = VK_TRUE;
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    features.pNext = &features13;
+    features.features.samplerAnisotropy = context.info.sampler_anisotropy ? VK_TRUE : VK_FALSE;
+    VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    info.pNext = &features;
+    info.queueCreateInfoCount = 1;
+    info.pQueueCreateInfos = &queue;
+    TF_VK(vkCreateDevice(context.physical, &info, nullptr, &context.device));
+    load_device_functions(context.device);
+    vkGetDeviceQueue(context.device, context.queue_family, 0, &context.queue);
+
+    VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    pool.queueFamilyIndex = context.queue_family;
+    TF_VK(vkCreateCommandPool(context.device, &pool, nullptr, &context.command_pool));
+    on_failure.dismiss();
     return context;
 }
 
@@ -293,36 +72,6 @@ void destroy_context(VulkanContext& context)
     if (context.instance)
         vkDestroyInstance(context.instance, nullptr);
     context = VulkanContext{};
-}
-
-VkCommandBuffer begin_one_shot(const VulkanContext& context)
-{
-    VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    allocate.commandPool = context.command_pool;
-    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocate.commandBufferCount = 1;
-    VkCommandBuffer command_buffer = VK_NULL_HANDLE;
-    TF_VK(vkAllocateCommandBuffers(context.device, &allocate, &command_buffer));
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    TF_VK(vkBeginCommandBuffer(command_buffer, &begin));
-    return command_buffer;
-}
-
-void end_one_shot(const VulkanContext& context, VkCommandBuffer command_buffer)
-{
-    TF_VK(vkEndCommandBuffer(command_buffer));
-    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VkFence fence = VK_NULL_HANDLE;
-    TF_VK(vkCreateFence(context.device, &fence_info, nullptr, &fence));
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &command_buffer;
-    VkResult result = vkQueueSubmit(context.queue, 1, &submit, fence);
-    if (result == VK_SUCCESS)
-        result = vkWaitForFences(context.device, 1, &fence, VK_TRUE, UINT64_MAX);
-    vkDestroyFence(context.device, fence, nullptr);
-    TF_VK(result); // the pool is transient and reset at destruction; one-shot buffers are few
 }
 
 } // namespace tf

@@ -1,5 +1,8 @@
 #pragma once
 // Headless Vulkan: instance (optionally with validation), device listing and selection, one queue.
+// Implemented a concern a file: instance.cpp, devices.cpp, context.cpp (the device) and submit.cpp
+// (one-shot command buffers).
+#include "vulkan/cleanup.h"
 #include "vulkan/loader.h"
 #include <string>
 #include <vector>
@@ -59,6 +62,8 @@ std::vector<DeviceInfo> list_devices(VkInstance instance);
 // The device `request` names (see ContextOptions::device), or the default; throws with a per-device
 // account of why when nothing fits.
 int select_device(const std::vector<DeviceInfo>& devices, const std::string& request);
+// A queue family that does graphics and compute (every Vulkan GPU has one), or -1.
+int find_queue_family(VkPhysicalDevice physical);
 
 VulkanContext create_context(const ContextOptions& options);
 void destroy_context(VulkanContext& context);
@@ -66,16 +71,20 @@ void destroy_context(VulkanContext& context);
 // Validation messages reported so far (warnings and errors). Tests expect zero.
 int validation_message_count();
 
-// Records with `record`, submits, and waits.
+// Records with `record`, submits, and waits; the command buffer is freed again (the benchmark submits
+// thousands).
 template <typename Record>
 void submit_and_wait(const VulkanContext& context, Record&& record);
 VkCommandBuffer begin_one_shot(const VulkanContext& context);
-void end_one_shot(const VulkanContext& context, VkCommandBuffer command_buffer);
+void end_one_shot(const VulkanContext& context, VkCommandBuffer command_buffer); // submits and waits
+void free_one_shot(const VulkanContext& context, VkCommandBuffer command_buffer);
 
 template <typename Record>
 void submit_and_wait(const VulkanContext& context, Record&& record)
 {
     VkCommandBuffer command_buffer = begin_one_shot(context);
+    Cleanup cleanup;
+    cleanup.add([&] { free_one_shot(context, command_buffer); });
     record(command_buffer);
     end_one_shot(context, command_buffer);
 }

@@ -1,44 +1,26 @@
 #include "vulkan/pass.h"
 #include "harness/config.h"
+#include <map>
 
 namespace tf {
 
-VkDescriptorSetLayout create_set_layout(const VulkanContext& context, const std::vector<VkDescriptorSetLayoutBinding>& bindings)
+namespace {
+
+VkDescriptorSetLayout create_set_layout(const VulkanContext& context,
+                                        const std::vector<VkDescriptorSetLayoutBinding>& bindings, Cleanup& cleanup)
 {
     VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     info.bindingCount = uint32_t(bindings.size());
     info.pBindings = bindings.data();
+    VkDevice device = context.device;
     VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-    TF_VK(vkCreateDescriptorSetLayout(context.device, &info, nullptr, &layout));
+    TF_VK(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout));
+    cleanup.add([=] { vkDestroyDescriptorSetLayout(device, layout, nullptr); });
     return layout;
 }
 
-std::vector<VkDescriptorSetLayoutBinding> texture_bindings(VkShaderStageFlags stage)
-{
-    return {{HARNESS_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr},
-            {HARNESS_BINDING_SAT_LOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr},
-            {HARNESS_BINDING_SAT_HIGH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stage, nullptr}};
-}
-
-void create_pass_samplers(const VulkanContext& context, const GpuTexture& texture, const SamplerOptions& options,
-                          PassSamplers& samplers, Cleanup& cleanup)
-{
-    VkDevice device = context.device;
-    samplers.texture = create_sampler(context, options, texture.levels);
-    VkSampler texture_sampler = samplers.texture;
-    cleanup.add([=] { vkDestroySampler(device, texture_sampler, nullptr); });
-    SamplerOptions nearest;
-    nearest.filter = Filter::hw_nearest;
-    samplers.table = create_sampler(context, nearest, 1);
-    VkSampler table_sampler = samplers.table;
-    cleanup.add([=] { vkDestroySampler(device, table_sampler, nullptr); });
-    samplers.infos[0] = {samplers.texture, texture.chain.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    samplers.infos[1] = {samplers.table, texture.sat_low.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    samplers.infos[2] = {samplers.table, texture.sat_high.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-}
-
 VkPipelineLayout create_pipeline_layout(const VulkanContext& context, VkDescriptorSetLayout set_layout,
-                                        VkShaderStageFlags push_stages)
+                                        VkShaderStageFlags push_stages, Cleanup& cleanup)
 {
     VkPushConstantRange range{push_stages, 0, sizeof(PushConstants)};
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -46,70 +28,104 @@ VkPipelineLayout create_pipeline_layout(const VulkanContext& context, VkDescript
     info.pSetLayouts = &set_layout;
     info.pushConstantRangeCount = 1;
     info.pPushConstantRanges = &range;
+    VkDevice device = context.device;
     VkPipelineLayout layout = VK_NULL_HANDLE;
-    TF_VK(vkCreatePipelineLayout(context.device, &info, nullptr, &layout));
+    TF_VK(vkCreatePipelineLayout(device, &info, nullptr, &layout));
+    cleanup.add([=] { vkDestroyPipelineLayout(device, layout, nullptr); });
     return layout;
 }
 
-VkWriteDescriptorSet write_texture(VkDescriptorSet set, uint32_t binding, const VkDescriptorImageInfo* image)
+// A pool sized for exactly one set of `bindings`, and that set.
+VkDescriptorSet allocate_set(const VulkanContext& context, VkDescriptorSetLayout layout,
+                             const std::vector<VkDescriptorSetLayoutBinding>& bindings, VkDescriptorPool& pool,
+                             Cleanup& cleanup)
 {
-    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w.dstSet = set;
-    w.dstBinding = binding;
-    w.descriptorCount = 1;
-    w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    w.pImageInfo = image;
-    return w;
+    std::map<VkDescriptorType, uint32_t> counts;
+    for (const VkDescriptorSetLayoutBinding& b : bindings)
+        counts[b.descriptorType] += b.descriptorCount;
+    std::vector<VkDescriptorPoolSize> sizes;
+    for (auto [type, count] : counts)
+        sizes.push_back({type, count});
+    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool_info.maxSets = 1;
+    pool_info.poolSizeCount = uint32_t(sizes.size());
+    pool_info.pPoolSizes = sizes.data();
+    VkDevice device = context.device;
+    TF_VK(vkCreateDescriptorPool(device, &pool_info, nullptr, &pool));
+    VkDescriptorPool created = pool;
+    cleanup.add([=] { vkDestroyDescriptorPool(device, created, nullptr); }); // frees the set too
+    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocate.descriptorPool = pool;
+    allocate.descriptorSetCount = 1;
+    allocate.pSetLayouts = &layout;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    TF_VK(vkAllocateDescriptorSets(device, &allocate, &set));
+    return set;
 }
 
-void destroy_image(const VulkanContext& context, GpuImage& image)
-{
-    if (image.view)
-        vkDestroyImageView(context.device, image.view, nullptr);
-    if (image.image)
-        vkDestroyImage(context.device, image.image, nullptr);
-    if (image.memory)
-        vkFreeMemory(context.device, image.memory, nullptr);
-    image = GpuImage{};
-}
-
-VkWriteDescriptorSet write_buffer(VkDescriptorSet set, uint32_t binding, VkDescriptorType type,
-                                  const VkDescriptorBufferInfo* buffer)
+VkWriteDescriptorSet write_descriptor(VkDescriptorSet set, uint32_t binding, VkDescriptorType type)
 {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstSet = set;
     w.dstBinding = binding;
     w.descriptorCount = 1;
     w.descriptorType = type;
-    w.pBufferInfo = buffer;
     return w;
 }
 
-VkPipeline create_compute_pipeline(const VulkanContext& context, const uint32_t* code, size_t size_bytes,
-                                   VkPipelineLayout layout, Filter filter, Cleanup& cleanup)
+} // namespace
+
+Pass create_pass(const VulkanContext& context, const GpuTexture& texture, const SamplerOptions& options,
+                 VkShaderStageFlags stages, VkShaderStageFlags push_stages, const std::vector<PassBuffer>& buffers,
+                 Cleanup& cleanup)
 {
-    VkDevice device = context.device;
-    VkShaderModule module = create_shader_module(context, code, size_bytes);
-    cleanup.add([=] { vkDestroyShaderModule(device, module, nullptr); });
-    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    info.stage.module = module;
-    info.stage.pName = "main";
-    FilterSpecialization specialization;
-    info.stage.pSpecializationInfo = filter_specialization(filter, specialization);
-    info.layout = layout;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    TF_VK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-    cleanup.add([=] { vkDestroyPipeline(device, pipeline, nullptr); });
-    return pipeline;
+    Pass pass;
+    pass.push_stages = push_stages;
+    pass.samplers = create_pass_samplers(context, texture, options, cleanup);
+
+    const uint32_t texture_bindings[3] = {HARNESS_BINDING_TEXTURE, HARNESS_BINDING_SAT_LOW, HARNESS_BINDING_SAT_HIGH};
+    std::vector<VkDescriptorSetLayoutBinding> bindings;
+    for (uint32_t binding : texture_bindings)
+        bindings.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr});
+    for (const PassBuffer& b : buffers)
+        bindings.push_back({b.binding, b.type, 1, stages, nullptr});
+    pass.set_layout = create_set_layout(context, bindings, cleanup);
+    pass.pipeline_layout = create_pipeline_layout(context, pass.set_layout, push_stages, cleanup);
+    pass.set = allocate_set(context, pass.set_layout, bindings, pass.pool, cleanup);
+
+    std::vector<VkDescriptorBufferInfo> buffer_infos;
+    for (const PassBuffer& b : buffers)
+        buffer_infos.push_back({b.buffer, 0, b.range});
+    std::vector<VkWriteDescriptorSet> writes;
+    for (int i = 0; i < 3; ++i) {
+        writes.push_back(write_descriptor(pass.set, texture_bindings[i], VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER));
+        writes.back().pImageInfo = &pass.samplers.infos[i];
+    }
+    for (size_t i = 0; i < buffers.size(); ++i) {
+        writes.push_back(write_descriptor(pass.set, buffers[i].binding, buffers[i].type));
+        writes.back().pBufferInfo = &buffer_infos[i];
+    }
+    vkUpdateDescriptorSets(context.device, uint32_t(writes.size()), writes.data(), 0, nullptr);
+    return pass;
 }
 
-void write_textures(std::vector<VkWriteDescriptorSet>& writes, VkDescriptorSet set, const PassSamplers& samplers)
+void bind_pass(VkCommandBuffer command_buffer, VkPipelineBindPoint bind_point, VkPipeline pipeline, const Pass& pass,
+               const PushConstants& push)
 {
-    writes.push_back(write_texture(set, HARNESS_BINDING_TEXTURE, &samplers.infos[0]));
-    writes.push_back(write_texture(set, HARNESS_BINDING_SAT_LOW, &samplers.infos[1]));
-    writes.push_back(write_texture(set, HARNESS_BINDING_SAT_HIGH, &samplers.infos[2]));
+    vkCmdBindPipeline(command_buffer, bind_point, pipeline);
+    vkCmdBindDescriptorSets(command_buffer, bind_point, pass.pipeline_layout, 0, 1, &pass.set, 0, nullptr);
+    vkCmdPushConstants(command_buffer, pass.pipeline_layout, pass.push_stages, 0, sizeof(push), &push);
+}
+
+PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, glm::vec4 sat_offset,
+                                  glm::vec4 sat_scale, int gradients)
+{
+    return {int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max,
+            count, options.band, options.probes, int32_t(options.aniso_shape), int32_t(options.taps),
+            options.alpha, options.max_aniso, options.boxes, gradients,
+            options.truth_side, int32_t(options.pixel_filter), 0,
+            {sat_offset.x, sat_offset.y, sat_offset.z, sat_offset.w},
+            {sat_scale.x, sat_scale.y, sat_scale.z, sat_scale.w}};
 }
 
 } // namespace tf

@@ -1,50 +1,43 @@
 #pragma once
-// The pieces every harness pass (render, sample) shares: scoped cleanup, descriptor layouts with the
-// three texture bindings, samplers, descriptor writes.
-#include "vulkan/backend.h"
-#include "vulkan/resources.h"
-#include <functional>
+// What every harness pass (render in each stage, sample) creates the same way: one descriptor set with
+// the three textures and the pass's own buffers, its layout, the pipeline layout with the push constants,
+// and the commands that bind them. Only the pipeline and the buffers differ from pass to pass.
+#include "core/filter.h"
+#include "scene/shader_interface.h"
+#include "vulkan/cleanup.h"
+#include "vulkan/samplers.h"
+#include <glm/vec4.hpp>
 #include <vector>
 
 namespace tf {
 
-// Destroys what a function created, in reverse order, however it leaves (return or exception).
-struct Cleanup {
-    std::vector<std::function<void()>> steps;
-    ~Cleanup()
-    {
-        for (auto it = steps.rbegin(); it != steps.rend(); ++it)
-            (*it)();
-    }
-    void add(std::function<void()> step) { steps.push_back(std::move(step)); }
+// One buffer the pass's shaders read or write, at a binding of shaders/harness/config.h.
+struct PassBuffer {
+    uint32_t binding;
+    VkDescriptorType type; // uniform or storage
+    VkBuffer buffer;
+    VkDeviceSize range = VK_WHOLE_SIZE;
 };
 
-VkDescriptorSetLayout create_set_layout(const VulkanContext& context, const std::vector<VkDescriptorSetLayoutBinding>& bindings);
-
-// The three textures every harness shader declares: the MIP chain and the two SAT words.
-std::vector<VkDescriptorSetLayoutBinding> texture_bindings(VkShaderStageFlags stage);
-
-// Samplers for one pass: the filter's (see create_sampler) and a nearest one for the integer SAT.
-struct PassSamplers {
-    VkSampler texture = VK_NULL_HANDLE, table = VK_NULL_HANDLE;
-    VkDescriptorImageInfo infos[3];
+struct Pass {
+    PassSamplers samplers;
+    VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+    VkPipelineLayout pipeline_layout = VK_NULL_HANDLE;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE; // written: textures and buffers bound
+    VkShaderStageFlags push_stages = 0;
 };
-void create_pass_samplers(const VulkanContext& context, const GpuTexture& texture, const SamplerOptions& options,
-                          PassSamplers& samplers, Cleanup& cleanup);
 
-VkPipelineLayout create_pipeline_layout(const VulkanContext& context, VkDescriptorSetLayout set_layout,
-                                        VkShaderStageFlags push_stages);
+// `stages` see the bindings, `push_stages` the push constants. Everything made is destroyed by `cleanup`.
+Pass create_pass(const VulkanContext& context, const GpuTexture& texture, const SamplerOptions& options,
+                 VkShaderStageFlags stages, VkShaderStageFlags push_stages, const std::vector<PassBuffer>& buffers,
+                 Cleanup& cleanup);
 
-VkWriteDescriptorSet write_texture(VkDescriptorSet set, uint32_t binding, const VkDescriptorImageInfo* image);
-VkWriteDescriptorSet write_buffer(VkDescriptorSet set, uint32_t binding, VkDescriptorType type,
-                                  const VkDescriptorBufferInfo* buffer);
-// The writes for the three texture bindings of texture_bindings().
-void write_textures(std::vector<VkWriteDescriptorSet>& writes, VkDescriptorSet set, const PassSamplers& samplers);
+// Binds `pipeline` (made with pass.pipeline_layout), the pass's descriptor set and `push`.
+void bind_pass(VkCommandBuffer command_buffer, VkPipelineBindPoint bind_point, VkPipeline pipeline, const Pass& pass,
+               const PushConstants& push);
 
-void destroy_image(const VulkanContext& context, GpuImage& image);
-
-// A compute pipeline from embedded SPIR-V, specialised to `filter`; destroyed (with its module) by cleanup.
-VkPipeline create_compute_pipeline(const VulkanContext& context, const uint32_t* code, size_t size_bytes,
-                                   VkPipelineLayout layout, Filter filter, Cleanup& cleanup);
+PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, glm::vec4 sat_offset,
+                                  glm::vec4 sat_scale, int gradients);
 
 } // namespace tf

@@ -4,6 +4,8 @@
 #include "harness/config.h"
 #include "texture/error.h"
 #include "vulkan/pass.h"
+#include "vulkan/pipeline.h"
+#include "vulkan/readback.h"
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -34,56 +36,35 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
     const uint64_t groups_y = (groups + groups_x - 1) / groups_x;
     if (groups_y > 65535 || groups * HARNESS_SAMPLE_LOCAL_SIZE > UINT32_MAX) // invocation indices are 32-bit
         throw Error(std::to_string(lookups.size()) + " lookups are more than one sample pass can run");
-    VkDevice device = context.device;
     Cleanup cleanup;
     const uint32_t count = uint32_t(lookups.size());
-    Buffer input = create_host_buffer(context, VkDeviceSize(count) * sizeof(LookupRecord), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    cleanup.add([&] { destroy_buffer(context, input); });
-    Buffer output = create_host_buffer(context, VkDeviceSize(count) * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    cleanup.add([&] { destroy_buffer(context, output); });
-    Buffer counts = create_host_buffer(context, VkDeviceSize(count) * sizeof(LookupStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    cleanup.add([&] { destroy_buffer(context, counts); });
+    auto storage = [&](VkDeviceSize bytes) {
+        Buffer buffer = create_host_buffer(context, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        cleanup.add([&context, buffer]() mutable { destroy_buffer(context, buffer); });
+        return buffer;
+    };
+    const Buffer input = storage(VkDeviceSize(count) * sizeof(LookupRecord));
+    const Buffer output = storage(VkDeviceSize(count) * sizeof(glm::vec4));
+    const Buffer counts = storage(VkDeviceSize(count) * sizeof(LookupStats));
     LookupRecord* in = static_cast<LookupRecord*>(input.mapped);
     for (uint32_t i = 0; i < count; ++i) {
         const Lookup& l = lookups[i];
         in[i] = {float(l.u), float(l.v), float(l.dudx), float(l.dvdx), float(l.dudy), float(l.dvdy)};
     }
 
-    PassSamplers samplers;
-    create_pass_samplers(context, texture, options, samplers, cleanup);
-    std::vector<VkDescriptorSetLayoutBinding> bindings = texture_bindings(VK_SHADER_STAGE_COMPUTE_BIT);
-    for (uint32_t binding : {HARNESS_BINDING_LOOKUPS, HARNESS_BINDING_RESULTS, HARNESS_BINDING_STATS})
-        bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
-    VkDescriptorSetLayout set_layout = create_set_layout(context, bindings);
-    cleanup.add([=] { vkDestroyDescriptorSetLayout(device, set_layout, nullptr); });
-    VkPipelineLayout pipeline_layout = create_pipeline_layout(context, set_layout, VK_SHADER_STAGE_COMPUTE_BIT);
-    cleanup.add([=] { vkDestroyPipelineLayout(device, pipeline_layout, nullptr); });
-    VkPipeline pipeline = create_compute_pipeline(context, sample_comp, sizeof(sample_comp),
-                                                  pipeline_layout, options.filter, cleanup);
-
-    DescriptorSet descriptors = allocate_descriptor_set(context, set_layout);
-    cleanup.add([=] { vkDestroyDescriptorPool(device, descriptors.pool, nullptr); });
-    VkDescriptorBufferInfo in_info{input.buffer, 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo out_info{output.buffer, 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo stats_info{counts.buffer, 0, VK_WHOLE_SIZE};
-    std::vector<VkWriteDescriptorSet> writes;
-    write_textures(writes, descriptors.set, samplers);
-    writes.push_back(write_buffer(descriptors.set, HARNESS_BINDING_LOOKUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &in_info));
-    writes.push_back(write_buffer(descriptors.set, HARNESS_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &out_info));
-    writes.push_back(write_buffer(descriptors.set, HARNESS_BINDING_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &stats_info));
-    vkUpdateDescriptorSets(device, uint32_t(writes.size()), writes.data(), 0, nullptr);
-
-    PushConstants push = make_push_constants(options, count, texture.sat_offset, texture.sat_scale, HARNESS_GRADIENTS_FINE);
+    const Pass pass = create_pass(context, texture, options, VK_SHADER_STAGE_COMPUTE_BIT, VK_SHADER_STAGE_COMPUTE_BIT,
+                                  {{HARNESS_BINDING_LOOKUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, input.buffer},
+                                   {HARNESS_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, output.buffer},
+                                   {HARNESS_BINDING_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counts.buffer}},
+                                  cleanup);
+    const VkPipeline pipeline = create_compute_pipeline(context, {sample_comp, sizeof(sample_comp)},
+                                                        pass.pipeline_layout, options.filter, cleanup);
+    const PushConstants push =
+        make_push_constants(options, count, texture.sat_offset, texture.sat_scale, HARNESS_GRADIENTS_FINE);
     submit_and_wait(context, [&](VkCommandBuffer cb) {
-        vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-        vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout, 0, 1, &descriptors.set, 0, nullptr);
-        vkCmdPushConstants(cb, pipeline_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+        bind_pass(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline, pass, push);
         vkCmdDispatch(cb, groups_x, uint32_t(groups_y), 1);
-        VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-        host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host, 0,
-                             nullptr, 0, nullptr);
+        record_host_read(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
     });
     std::vector<glm::vec4> results(count);
     std::memcpy(results.data(), output.mapped, results.size() * sizeof(glm::vec4));

@@ -3,7 +3,10 @@
 #include "harness/config.h"
 #include "texture/error.h"
 #include "texture/sat.h"
-#include "vulkan/pass.h"
+#include "vulkan/barriers.h"
+#include "vulkan/cleanup.h"
+#include "vulkan/image.h"
+#include "vulkan/resources.h"
 #include <algorithm>
 #include <cstdint>
 #include <cstring>

@@ -4,16 +4,11 @@
 #include "core/filter.h"
 #include "texture/mip.h"
 #include "vulkan/context.h"
+#include "vulkan/image.h"
 #include <glm/vec4.hpp>
 #include <functional>
 
 namespace tf {
-
-struct GpuImage {
-    VkImage image = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;
-};
 
 struct GpuTexture {
     GpuImage chain;              // RGBA32F, every MIP level

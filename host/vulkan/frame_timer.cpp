@@ -1,0 +1,84 @@
+#include "vulkan/frame_timer.h"
+#include "texture/error.h"
+#include "vulkan/frame.h"
+#include <algorithm>
+#include <chrono>
+
+namespace tf {
+
+namespace {
+
+// One submit and wait a frame, timed on the host. A frame slower than `slow_ms` ends the warm-up and cuts
+// the timed frames to three: a pathological case (lavapipe's hw-aniso on some scenes takes seconds a frame)
+// must not hold the whole benchmark up.
+std::vector<double> time_on_host(const GpuRenderer& r, int warmup, int frames)
+{
+    const double slow_ms = 250.0;
+    std::vector<double> ms;
+    for (int f = 0; f < warmup + frames && int(ms.size()) < frames; ++f) {
+        auto start = std::chrono::steady_clock::now();
+        submit_and_wait(*r.context, [&](VkCommandBuffer cb) { record_frame(r, cb, VK_NULL_HANDLE, 0); });
+        double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        if (f >= warmup)
+            ms.push_back(elapsed);
+        if (elapsed > slow_ms) {
+            warmup = std::min(warmup, f + 1);
+            frames = std::min(frames, 3);
+        }
+    }
+    return ms;
+}
+
+// All frames in one submit, each bracketed by two timestamps.
+std::vector<double> time_with_timestamps(const GpuRenderer& r, int warmup, int frames)
+{
+    const VulkanContext& context = *r.context;
+    if (context.info.timestamp_valid_bits == 0 || context.info.timestamp_period_ns <= 0.0f)
+        throw Error(context.info.name + " has no timestamps on its graphics and compute queue: use the wall-clock timer");
+    VkDevice device = context.device;
+    Cleanup cleanup;
+    VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    info.queryCount = uint32_t(2 * frames);
+    VkQueryPool pool = VK_NULL_HANDLE;
+    TF_VK(vkCreateQueryPool(device, &info, nullptr, &pool));
+    cleanup.add([=] { vkDestroyQueryPool(device, pool, nullptr); });
+
+    submit_and_wait(context, [&](VkCommandBuffer cb) {
+        vkCmdResetQueryPool(cb, pool, 0, info.queryCount);
+        for (int f = 0; f < warmup + frames; ++f)
+            record_frame(r, cb, f < warmup ? VK_NULL_HANDLE : pool, uint32_t(2 * (f - warmup)));
+    });
+    std::vector<uint64_t> ticks(info.queryCount);
+    TF_VK(vkGetQueryPoolResults(device, pool, 0, info.queryCount, ticks.size() * sizeof(uint64_t), ticks.data(),
+                                sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    const uint64_t mask = context.info.timestamp_valid_bits >= 64 ? ~0ull : (1ull << context.info.timestamp_valid_bits) - 1;
+    std::vector<double> ms(static_cast<size_t>(frames));
+    for (int f = 0; f < frames; ++f) {
+        uint64_t elapsed = (ticks[size_t(2 * f + 1)] - ticks[size_t(2 * f)]) & mask; // wraps within valid bits
+        ms[size_t(f)] = double(elapsed) * double(context.info.timestamp_period_ns) * 1e-6;
+    }
+    return ms;
+}
+
+} // namespace
+
+std::vector<double> time_frames(GpuRenderer& r, int warmup, int frames, FrameTimer timer)
+{
+    if (warmup < 0 || frames < 1)
+        throw Error("time_frames: need at least one timed frame");
+    return timer == FrameTimer::wall_clock ? time_on_host(r, warmup, frames) : time_with_timestamps(r, warmup, frames);
+}
+
+FrameTimer parse_frame_timer(const std::string& name)
+{
+    if (name == "timestamps")
+        return FrameTimer::timestamps;
+    if (name == "wall-clock")
+        return FrameTimer::wall_clock;
+    throw Error("unknown timer '" + name + "' (expected timestamps or wall-clock)");
+}
+
+std::string to_string(FrameTimer timer) { return timer == FrameTimer::timestamps ? "timestamps" : "wall-clock"; }
+
+} // namespace tf

@@ -1,0 +1,20 @@
+#pragma once
+// Device-local images with their memory and a view: the uploaded textures and the render targets.
+#include "vulkan/context.h"
+#include <cstdint>
+
+namespace tf {
+
+struct GpuImage {
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+};
+
+// A 2D image of `levels` levels in device-local memory, in UNDEFINED layout, with a view of every level.
+// Throws a tf::Error naming the size and the device when there is no memory for it.
+GpuImage create_image(const VulkanContext& context, VkFormat format, uint32_t width, uint32_t height,
+                      uint32_t levels, VkImageUsageFlags usage, VkImageAspectFlags aspect);
+void destroy_image(const VulkanContext& context, GpuImage& image); // also a half-made or empty one
+
+} // namespace tf

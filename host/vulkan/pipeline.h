@@ -1,0 +1,34 @@
+#pragma once
+// Pipelines from embedded SPIR-V, each specialised to one filter (the harness shaders' specialization
+// constant HARNESS_SPEC_FILTER), so that a pipeline holds the code of one filter only.
+#include "core/filter.h"
+#include "vulkan/cleanup.h"
+#include "vulkan/context.h"
+#include <cstddef>
+#include <cstdint>
+
+namespace tf {
+
+struct ShaderCode {
+    const uint32_t* words;
+    size_t bytes;
+};
+
+// Destroyed by `cleanup`.
+VkPipeline create_compute_pipeline(const VulkanContext& context, ShaderCode code, VkPipelineLayout layout,
+                                   Filter filter, Cleanup& cleanup);
+
+// A triangle-list pipeline for dynamic rendering into one colour attachment of `color_format`, with a
+// fixed viewport; the filter specialises the fragment stage.
+struct GraphicsPipelineDesc {
+    ShaderCode vertex, fragment;
+    const VkPipelineVertexInputStateCreateInfo* vertex_input = nullptr; // null: no vertex buffers
+    VkFormat color_format = VK_FORMAT_UNDEFINED;
+    VkFormat depth_format = VK_FORMAT_UNDEFINED; // UNDEFINED: no depth test
+    uint32_t width = 0, height = 0;
+};
+// Destroyed by `cleanup`.
+VkPipeline create_graphics_pipeline(const VulkanContext& context, const GraphicsPipelineDesc& desc,
+                                    VkPipelineLayout layout, Filter filter, Cleanup& cleanup);
+
+} // namespace tf

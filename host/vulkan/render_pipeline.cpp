@@ -1,0 +1,59 @@
+#include "vulkan/render_pipeline.h"
+#include "harness/config.h"
+#include "texture/error.h"
+#include "vulkan/mesh.h"
+#include "vulkan/pipeline.h"
+#include "vulkan/render_targets.h"
+#include <cstddef>
+
+#include "mesh_frag.h"
+#include "mesh_vert.h"
+#include "render_comp.h"
+#include "render_frag.h"
+#include "render_vert.h"
+
+namespace tf {
+
+void check_render_kind(const VulkanContext& context, RenderKind kind)
+{
+    if (kind != RenderKind::compute)
+        return;
+    if (!context.info.quad_ops_compute)
+        throw Error(context.info.name + " has no subgroup quad operations in compute shaders: use --stage fragment");
+    if (context.info.subgroup_size % 4 != 0 || (HARNESS_RENDER_TILE * HARNESS_RENDER_TILE) % context.info.subgroup_size != 0)
+        throw Error("the compute render lays 2x2 quads over subgroups of " +
+                    std::to_string(context.info.subgroup_size) + " invocations, which it cannot do");
+}
+
+VkPipeline create_render_pipeline(const VulkanContext& context, RenderKind kind, VkPipelineLayout layout,
+                                  Filter filter, uint32_t width, uint32_t height, Cleanup& cleanup)
+{
+    if (kind == RenderKind::compute)
+        return create_compute_pipeline(context, {render_comp, sizeof(render_comp)}, layout, filter, cleanup);
+
+    GraphicsPipelineDesc desc;
+    desc.color_format = render_color_format;
+    desc.width = width;
+    desc.height = height;
+    if (kind == RenderKind::fragment) {
+        desc.vertex = {render_vert, sizeof(render_vert)};
+        desc.fragment = {render_frag, sizeof(render_frag)};
+        return create_graphics_pipeline(context, desc, layout, filter, cleanup);
+    }
+    VkVertexInputBindingDescription binding{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX};
+    VkVertexInputAttributeDescription attributes[2] = {
+        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, uint32_t(offsetof(MeshVertex, position))},
+        {1, 0, VK_FORMAT_R32G32_SFLOAT, uint32_t(offsetof(MeshVertex, uv))}};
+    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    vertex_input.vertexBindingDescriptionCount = 1;
+    vertex_input.pVertexBindingDescriptions = &binding;
+    vertex_input.vertexAttributeDescriptionCount = 2;
+    vertex_input.pVertexAttributeDescriptions = attributes;
+    desc.vertex = {mesh_vert, sizeof(mesh_vert)};
+    desc.fragment = {mesh_frag, sizeof(mesh_frag)};
+    desc.vertex_input = &vertex_input;
+    desc.depth_format = render_depth_format;
+    return create_graphics_pipeline(context, desc, layout, filter, cleanup);
+}
+
+} // namespace tf
