@@ -16,7 +16,7 @@ const std::vector<tf::FlagSpec>& specs()
 {
     static const std::vector<tf::FlagSpec> all =
         tf::join({{{"--scene", "S", ""}, {"--size", "WxH", ""}, {"-o", "OUT", ""}, {"--stats", "", ""}},
-                  tf::texture_flags(), tf::sampler_flags(), tf::device_flags()});
+                  tf::texture_flags(), tf::sampler_flags(tf::SamplerFlags::scenes), tf::device_flags()});
     return all;
 }
 

@@ -315,6 +315,13 @@ ground_truth_and_bench_errors() {
 golden_errors() {
     expect_error "golden --case nonexistent" nonexistent golden-out -- \
         "$TEXFILTER" golden --case nonexistent --out golden-out
+    # A texfilter that is not the build tree's (installed or copied) has no checkout to default to: golden
+    # --update from it must never rewrite the source tree it was built from.
+    mkdir -p copied && cp "$TEXFILTER" copied/texfilter
+    expect_error "golden from a copied binary without --golden-dir" "--golden-dir" golden-out -- \
+        copied/texfilter golden --update --case "$(awk '!/^#/ && NF { print $1; exit }' "$GOLDEN_DIR/manifest.txt")" \
+        --out golden-out
+    rm -rf copied
 }
 
 vulkan_errors() {
@@ -343,7 +350,8 @@ vulkan_errors() {
 # Issue 10, item 1: golden --out never deletes what it did not make.
 golden_output_directory() {
     local case_name
-    case_name=$(grep -v '^#' "$GOLDEN_DIR/manifest.txt" | awk 'NF { print $1; exit }')
+    # awk alone: under pipefail, grep | awk '...; exit' can kill grep with SIGPIPE and the script with it.
+    case_name=$(awk '!/^#/ && NF { print $1; exit }' "$GOLDEN_DIR/manifest.txt")
     # A directory of someone else's files, shaped like the repository's golden/: refused, untouched.
     mkdir -p theirs/golden theirs/actual && echo keep >theirs/golden/a.png && echo keep >theirs/actual/b.png
     echo keep >theirs/notes.txt
@@ -543,7 +551,7 @@ EOF
         "$TEXFILTER" render --scene zoom --filter sat "${REF[@]}" --texture oversize.png -o out.png
     # The device's own limits, where it reports one the 16384^2 texture's chain (5.3 GiB) exceeds.
     local limit
-    limit=$("$TEXFILTER" info 2>/dev/null | sed -n 's/.*maxMemoryAllocationSize \([0-9.]*\) GiB.*/\1/p' | head -1)
+    limit=$("$TEXFILTER" info 2>/dev/null | sed -n 's/.*maxMemoryAllocationSize \([0-9.]*\) GiB.*/\1/p' | awk 'NR == 1')
     if [[ -n $limit ]] && awk "BEGIN { exit !($limit < 5.3) }"; then
         write_constant_png huge16k.png 16384 16384
         # A generous host budget, so that the device's limit is what refuses it on any machine (nothing is
