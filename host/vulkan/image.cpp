@@ -33,6 +33,8 @@ GpuImage create_image(const VulkanContext& context, VkFormat format, uint32_t wi
         throw Error("out of device memory for a " + std::to_string(width) + "x" + std::to_string(height) +
                     " image on " + context.info.name);
     TF_VK(vkBindImageMemory(device, g.image, g.memory, 0));
+    g.memory_type = allocate.memoryTypeIndex;
+    g.memory_size = allocate.allocationSize;
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view.image = g.image;
     view.viewType = VK_IMAGE_VIEW_TYPE_2D;

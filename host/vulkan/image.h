@@ -9,6 +9,8 @@ struct GpuImage {
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     VkImageView view = VK_NULL_HANDLE;
+    uint32_t memory_type = 0;    // the memory type index it was allocated from
+    VkDeviceSize memory_size = 0; // its allocation's size
 };
 
 // A 2D image of `levels` levels in device-local memory, in UNDEFINED layout, with a view of every level.

@@ -5,131 +5,27 @@
 #include "texture/sat.h"
 #include "vulkan/barriers.h"
 #include "vulkan/cleanup.h"
+#include "vulkan/host_memory.h"
 #include "vulkan/image.h"
 #include "vulkan/resources.h"
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <thread>
-#if defined(__linux__)
-#include <sys/mman.h>
-#include <unistd.h>
-#endif
 
 namespace tf {
 
 namespace {
 
-// A staging buffer of a GiB on a CPU device (lavapipe) is fresh anonymous memory: 262144 page faults of 4 KiB,
-// or 512 with transparent huge pages, which the kernel here grants only on request. Advice only: where the
-// mapping is not ordinary memory (a discrete GPU's) madvise refuses and nothing changes.
-void advise_huge_pages(void* mapped, size_t bytes)
+// A device-local sampled image of `levels` levels (contents undefined until copied), its memory advised
+// to use huge pages where the host can see it (a CPU device: see host_memory.h).
+GpuImage create_sampled_image(const VulkanContext& context, VkFormat format, VkExtent2D extent, uint32_t levels)
 {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    const uintptr_t page = uintptr_t(sysconf(_SC_PAGESIZE));
-    const uintptr_t begin = (uintptr_t(mapped) + page - 1) / page * page;
-    const uintptr_t end = (uintptr_t(mapped) + bytes) / page * page;
-    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#else
-    (void)mapped;
-    (void)bytes;
-#endif
-}
-
-// Faults memory in ahead of its first use on another thread (MADV_POPULATE_WRITE: page tables filled, the
-// contents left alone, so the caller may write the same memory meanwhile). Zeroing a fresh GiB is a large part
-// of loading a texture on a CPU device; done beside a single-threaded image decode, it costs no wall time.
-void populate_pages(void* mapped, size_t bytes)
-{
-#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
-    const uintptr_t page = uintptr_t(sysconf(_SC_PAGESIZE));
-    const uintptr_t begin = (uintptr_t(mapped) + page - 1) / page * page;
-    const uintptr_t end = (uintptr_t(mapped) + bytes) / page * page;
-    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
-#else
-    (void)mapped;
-    (void)bytes;
-#endif
-}
-
-// The memory of an image, mapped where its type is host-visible (a CPU or unified-memory device), so that
-// the host can advise the kernel about it; nothing is read or written through the mapping.
-struct HostMapping {
-    const VulkanContext& context;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    void* mapped = nullptr;
-    size_t bytes = 0;
-    HostMapping(const VulkanContext& c, VkDeviceMemory m, uint32_t type, VkDeviceSize size) : context(c)
-    {
-        VkPhysicalDeviceMemoryProperties properties{};
-        vkGetPhysicalDeviceMemoryProperties(context.physical, &properties);
-        if (!(properties.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)) return;
-        if (vkMapMemory(context.device, m, 0, VK_WHOLE_SIZE, 0, &mapped) != VK_SUCCESS) {
-            mapped = nullptr;
-            return;
-        }
-        memory = m;
-        bytes = size_t(size);
-    }
-    HostMapping(const HostMapping&) = delete;
-    HostMapping& operator=(const HostMapping&) = delete;
-    ~HostMapping()
-    {
-        if (mapped) vkUnmapMemory(context.device, memory);
-    }
-};
-
-// A sampled image and what the streaming upload needs to know of its memory.
-struct SampledImage {
-    GpuImage image;
-    uint32_t memory_type = 0;
-    VkDeviceSize memory_size = 0;
-};
-
-// A device-local sampled image with `levels` levels (contents undefined until copied) and its view.
-SampledImage create_sampled_image(const VulkanContext& context, VkFormat format, VkExtent2D extent, uint32_t levels)
-{
-    VkDevice device = context.device;
-    SampledImage sampled;
-    GpuImage& g = sampled.image;
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = format;
-    info.extent = {extent.width, extent.height, 1};
-    info.mipLevels = levels;
-    info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    try {
-        TF_VK(vkCreateImage(device, &info, nullptr, &g.image));
-        VkMemoryRequirements requirements{};
-        vkGetImageMemoryRequirements(device, g.image, &requirements);
-        VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-        allocate.allocationSize = requirements.size;
-        allocate.memoryTypeIndex =
-            find_memory_type(context, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        if (vkAllocateMemory(device, &allocate, nullptr, &g.memory) != VK_SUCCESS)
-            throw Error("out of device memory for a " + std::to_string(extent.width) + "x" +
-                        std::to_string(extent.height) + " texture on " + context.info.name);
-        TF_VK(vkBindImageMemory(device, g.image, g.memory, 0));
-        sampled.memory_type = allocate.memoryTypeIndex;
-        sampled.memory_size = allocate.allocationSize;
-        const HostMapping host(context, g.memory, sampled.memory_type, sampled.memory_size);
-        advise_huge_pages(host.mapped, host.bytes);
-
-        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-        view.image = g.image;
-        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-        view.format = format;
-        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, 1};
-        TF_VK(vkCreateImageView(device, &view, nullptr, &g.view));
-    } catch (...) {
-        destroy_image(context, g);
-        throw;
-    }
-    return sampled;
+    GpuImage g = create_image(context, format, extent.width, extent.height, levels,
+                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+    const HostMapping host(context, g.memory, g.memory_type, g.memory_size);
+    advise_huge_pages(host.mapped, host.bytes);
+    return g;
 }
 
 // Where a copy stands in the image's life: the first copy moves every level from UNDEFINED to
@@ -164,17 +60,15 @@ void copy_level(const VulkanContext& context, const GpuImage& g, uint32_t levels
 GpuImage upload_single_level(const VulkanContext& context, VkFormat format, VkExtent2D extent, const void* data,
                              size_t bytes)
 {
-    GpuImage g = create_sampled_image(context, format, extent, 1).image;
-    try {
-        Buffer staging = create_host_buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-        Cleanup cleanup;
-        cleanup.add([&] { destroy_buffer(context, staging); });
-        std::memcpy(staging.mapped, data, bytes);
-        copy_level(context, g, 1, staging, 0, extent, {});
-    } catch (...) {
-        destroy_image(context, g);
-        throw;
-    }
+    GpuImage g = create_sampled_image(context, format, extent, 1);
+    Cleanup on_failure;
+    on_failure.add([&] { destroy_image(context, g); });
+    Buffer staging = create_host_buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    Cleanup cleanup;
+    cleanup.add([&] { destroy_buffer(context, staging); });
+    std::memcpy(staging.mapped, data, bytes);
+    copy_level(context, g, 1, staging, 0, extent, {});
+    on_failure.dismiss();
     return g;
 }
 
@@ -211,7 +105,6 @@ void upload_sat(const VulkanContext& context, const Image* level0, GpuTexture& t
 
 } // namespace
 
-
 bool needs_sat(Filter filter) { return filter == Filter::sat || filter == Filter::sat_assembly; }
 
 GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat)
@@ -222,10 +115,12 @@ GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, b
     t.width = base.width;
     t.height = base.height;
     t.levels = int(chain.levels.size());
-    try {
+    Cleanup on_failure;
+    on_failure.add([&] { destroy_texture(context, t); });
+    {
         const uint32_t levels = uint32_t(t.levels);
         t.chain = create_sampled_image(context, VK_FORMAT_R32G32B32A32_SFLOAT,
-                                       {uint32_t(base.width), uint32_t(base.height)}, levels).image;
+                                       {uint32_t(base.width), uint32_t(base.height)}, levels);
         // One staging level at a time (the largest, level 0), reused for every level below it.
         Buffer staging = create_host_buffer(context, base.texels.size() * sizeof(glm::vec4),
                                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
@@ -239,10 +134,8 @@ GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, b
                        {l == 0, l + 1 == levels});
         }
         upload_sat(context, with_sat ? &base : nullptr, t);
-    } catch (...) {
-        destroy_texture(context, t);
-        throw;
     }
+    on_failure.dismiss();
     return t;
 }
 
@@ -256,11 +149,12 @@ GpuTexture upload_streamed_texture(const VulkanContext& context, int width, int 
     t.width = width;
     t.height = height;
     t.levels = mip_level_count(width, height);
-    try {
+    Cleanup on_failure;
+    on_failure.add([&] { destroy_texture(context, t); });
+    {
         const uint32_t levels = uint32_t(t.levels);
-        const SampledImage sampled = create_sampled_image(context, VK_FORMAT_R32G32B32A32_SFLOAT,
-                                                          {uint32_t(width), uint32_t(height)}, levels);
-        t.chain = sampled.image;
+        t.chain = create_sampled_image(context, VK_FORMAT_R32G32B32A32_SFLOAT, {uint32_t(width), uint32_t(height)},
+                                       levels);
         const size_t level0_bytes = size_t(width) * size_t(height) * sizeof(glm::vec4);
         Buffer staging = create_host_buffer(context, level0_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         Cleanup cleanup;
@@ -269,7 +163,7 @@ GpuTexture upload_streamed_texture(const VulkanContext& context, int width, int 
         advise_huge_pages(texels, level0_bytes);
         {
             // While level 0 is decoded (one thread), another faults in the staging and the image's memory.
-            const HostMapping image_memory(context, t.chain.memory, sampled.memory_type, sampled.memory_size);
+            const HostMapping image_memory(context, t.chain.memory, t.chain.memory_type, t.chain.memory_size);
             std::thread prefault([&] {
                 populate_pages(texels, level0_bytes);
                 populate_pages(image_memory.mapped, image_memory.bytes);
@@ -290,10 +184,8 @@ GpuTexture upload_streamed_texture(const VulkanContext& context, int width, int 
             copy_level(context, t.chain, levels, staging, l, {uint32_t(w), uint32_t(h)}, {l == 0, l + 1 == levels});
         }
         upload_sat(context, nullptr, t);
-    } catch (...) {
-        destroy_texture(context, t);
-        throw;
     }
+    on_failure.dismiss();
     return t;
 }
 

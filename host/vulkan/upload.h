@@ -3,6 +3,7 @@
 // summed-area table images, each a sampled image in device-local memory.
 #include "core/filter.h"
 #include "texture/mip.h"
+#include "vulkan/cleanup.h"
 #include "vulkan/context.h"
 #include "vulkan/image.h"
 #include <glm/vec4.hpp>
@@ -35,11 +36,8 @@ template <typename Body>
 auto with_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, Body&& body)
 {
     GpuTexture texture = upload_texture(context, chain, with_sat);
-    struct Release {
-        const VulkanContext& context;
-        GpuTexture& texture;
-        ~Release() { destroy_texture(context, texture); }
-    } release{context, texture};
+    Cleanup cleanup;
+    cleanup.add([&] { destroy_texture(context, texture); });
     return body(texture);
 }
 
@@ -49,11 +47,8 @@ auto with_streamed_texture(const VulkanContext& context, int width, int height,
                            const std::function<void(glm::vec4* texels)>& fill_level0, Body&& body)
 {
     GpuTexture texture = upload_streamed_texture(context, width, height, fill_level0);
-    struct Release {
-        const VulkanContext& context;
-        GpuTexture& texture;
-        ~Release() { destroy_texture(context, texture); }
-    } release{context, texture};
+    Cleanup cleanup;
+    cleanup.add([&] { destroy_texture(context, texture); });
     return body(texture);
 }
 
