@@ -4,9 +4,9 @@
 # wall time and peak memory (GNU time), against the goal: peak <= 1.25 x (bytes on the device) + one staging
 # level. Prints figures; asserts nothing. The PNG is made in a temporary directory (oiiotool), never the repo.
 #
-# usage: tools/bench_big_texture.sh [TEXFILTER] [PNG]   (default build/host/cli/texfilter, a new 8192^2 PNG)
+# usage: tools/bench_big_texture.sh [TEXFILTER] [PNG]   (default build/texfilter, a new 8192^2 PNG)
 set -euo pipefail
-texfilter=${1:-build/host/cli/texfilter}
+texfilter=${1:-build/texfilter}
 png=${2:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
