@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Installs every Debian package texfilter needs to build, render and test.
-# clang and libclang-rt-14-dev (libFuzzer, ASan, UBSan runtimes) build the fuzz targets (docs/FUZZING.md).
+# Only what is used: volk (Vulkan loading), nlohmann-json (bench.json) and doctest (tests) are the host's
+# libraries; openimageio-tools gives oiiotool (the tests make truncated JPEG/TIFF files with it); clang and
+# libclang-rt-14-dev (libFuzzer, ASan, UBSan runtimes) build the fuzz targets (docs/FUZZING.md).
 # Idempotent; run as root (or with sudo available) on Debian bookworm.
 set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers vulkan-tools
-  glslang-tools glslc spirv-tools
+  libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers
+  glslang-tools glslc
   libglm-dev libopenimageio-dev openimageio-tools
   libvulkan-volk-dev nlohmann-json3-dev doctest-dev
   python3 python3-venv
