@@ -6,30 +6,42 @@
 
 namespace tf {
 
-// A GiB of 4 KiB pages is 262144 page faults, or 512 with transparent huge pages.
-void advise_huge_pages(void* mapped, size_t bytes)
+namespace {
+
+// madvise on the whole pages inside [mapped, mapped + bytes); advice only, so a refusal changes nothing.
+void advise(void* mapped, size_t bytes, [[maybe_unused]] int advice)
 {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
+#if defined(__linux__)
     const uintptr_t page = uintptr_t(sysconf(_SC_PAGESIZE));
     const uintptr_t begin = (uintptr_t(mapped) + page - 1) / page * page;
     const uintptr_t end = (uintptr_t(mapped) + bytes) / page * page;
-    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+    if (mapped && end > begin)
+        madvise(reinterpret_cast<void*>(begin), end - begin, advice);
 #else
     (void)mapped;
     (void)bytes;
 #endif
 }
 
-// Faults memory in ahead of its first use on another thread (MADV_POPULATE_WRITE: page tables filled, the
-// contents left alone, so the caller may write the same memory meanwhile). Zeroing a fresh GiB is a large part
-// of loading a texture on a CPU device; done beside a single-threaded image decode, it costs no wall time.
+} // namespace
+
+// A GiB of 4 KiB pages is 262144 page faults, or 512 with transparent huge pages.
+void advise_huge_pages(void* mapped, size_t bytes)
+{
+#if defined(MADV_HUGEPAGE)
+    advise(mapped, bytes, MADV_HUGEPAGE);
+#else
+    (void)mapped;
+    (void)bytes;
+#endif
+}
+
+// Zeroing a fresh GiB is a large part of loading a texture on a CPU device; done on another thread beside
+// a single-threaded image decode, it costs no wall time.
 void populate_pages(void* mapped, size_t bytes)
 {
-#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
-    const uintptr_t page = uintptr_t(sysconf(_SC_PAGESIZE));
-    const uintptr_t begin = (uintptr_t(mapped) + page - 1) / page * page;
-    const uintptr_t end = (uintptr_t(mapped) + bytes) / page * page;
-    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE);
+#if defined(MADV_POPULATE_WRITE)
+    advise(mapped, bytes, MADV_POPULATE_WRITE);
 #else
     (void)mapped;
     (void)bytes;
