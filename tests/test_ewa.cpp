@@ -342,7 +342,7 @@ glm::dvec4 reference_scaled(const MipChain& chain, const SamplerOptions& o, Look
 //     fit's and the blend's few operations (measured on lavapipe: below (8 + n) ulp at alpha 2). The
 //     weights' own error grows with alpha: the exponent is -alpha·r² with r² (< R² = 2) rounded by
 //     ~4 ulp relative, and Vulkan's exp() is good to 3 + 2|x| ulp, so a weight is off by up to
-//     (3 + 6·alpha·R²) ulp relative, 2.5x that after subtracting exp(-alpha R²) (tf_ewa_weight: the
+//     (3 + 6·alpha·R²) ulp relative, 2.5x that after subtracting exp(-alpha R²) (tfi_ewa_weight: the
 //     difference keeps at least 1 - e^-1/2 of the value); a relative weight error e moves a normalised
 //     result by at most e·max|t - result| <= e. In all (8 + 2n + 2.5·(3 + 6·alpha·R²)) ulp.
 // Hardware taps add the sampler's own rounding: the tap is a float uv, so its texel position (< 2·size
