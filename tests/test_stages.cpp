@@ -53,118 +53,93 @@ struct Stages {
 
 TEST_SUITE_BEGIN("gpu");
 
+// 1. Fragment vs compute, every ray-cast scene, quad (fine) and ray-differential gradients: the same float
+//    operations in the same order, so the same bits (measured: identical on lavapipe).
 TEST_CASE("fragment-vs-compute")
 {
     Stages st;
-    VulkanContext& context = st.context;
-    GpuTexture& texture = st.texture;
-    const SamplerOptions& trilinear = st.trilinear;
-    {
-        // 1. Fragment vs compute, every ray-cast scene, quad (fine) and ray-differential gradients: the same
-        //    float operations in the same order, so the same bits (measured: identical on lavapipe).
-        for (SceneKind kind : all_scenes()) {
-            if (kind == SceneKind::mesh)
-                continue; // rasterized: it has no compute form (see 3)
-            SceneParams scene = make_scene(kind, 128, 96, 256);
-            for (Gradients g : {Gradients::fine, Gradients::ray}) {
-                Image fragment = gpu_render(context, texture, scene, trilinear, make_render_options(kind, Stage::fragment, g));
-                Image compute = gpu_render(context, texture, scene, trilinear, make_render_options(kind, Stage::compute, g));
-                Comparison c = compare(fragment, compute, 0.0);
-                std::printf("%-10s %-6s fragment vs compute: max difference %g\n", to_string(kind).c_str(),
-                            to_string(g).c_str(), c.max_difference);
-                CHECK_EQ(c.max_difference, 0.0);
-            }
+    for (SceneKind kind : all_scenes()) {
+        if (kind == SceneKind::mesh)
+            continue; // rasterized: it has no compute form (see 3)
+        SceneParams scene = make_scene(kind, 128, 96, 256);
+        for (Gradients g : {Gradients::fine, Gradients::ray}) {
+            Image fragment = gpu_render(st.context, st.texture, scene, st.trilinear,
+                                        make_render_options(kind, Stage::fragment, g));
+            Image compute = gpu_render(st.context, st.texture, scene, st.trilinear,
+                                       make_render_options(kind, Stage::compute, g));
+            Comparison c = compare(fragment, compute, 0.0);
+            std::printf("%-10s %-6s fragment vs compute: max difference %g\n", to_string(kind).c_str(),
+                        to_string(g).c_str(), c.max_difference);
+            CHECK_EQ(c.max_difference, 0.0);
         }
-
     }
 }
 
+// 2. Each gradient form vs the CPU reference (double; its own quads, coarse quads and central differences
+//    for ray differentials). Bound 1e-3: uv reaches ~16 (tunnel, floor), where a float32 ulp is 1e-6 uv =
+//    2.5e-4 texel of a 256 texture, times the checker's contrast 0.85, plus the ray cast's own rounding;
+//    measured max 2.5e-4 (at 128x96 no pixel sits where float32 and double disagree on a hit or a texel,
+//    unlike the 256x256 goldens). Coarse goes through compute: lavapipe's dFdxCoarse is its fine derivative
+//    (Vulkan allows that), while the compute quads and the reference take the top-left pixel's pair.
 TEST_CASE("gradients-vs-reference")
 {
     Stages st;
-    VulkanContext& context = st.context;
-    GpuTexture& texture = st.texture;
-    const MipChain& checker = st.checker;
-    const SamplerOptions& trilinear = st.trilinear;
-    {
-        // 2. Each gradient form vs the CPU reference (double; its own quads, coarse quads and central
-        //    differences for ray differentials). Bound 1e-3: uv reaches ~16 (tunnel, floor), where a float32
-        //    ulp is 1e-6 uv = 2.5e-4 texel of a 256 texture, times the checker's contrast 0.85, plus the
-        //    ray cast's own rounding; measured max 2.5e-4 (at 128x96 no pixel sits where float32 and double
-        //    disagree on a hit or a texel, unlike the 256x256 goldens). Coarse goes
-        //    through compute: lavapipe's dFdxCoarse is its fine derivative (Vulkan allows that), while the
-        //    compute quads and the reference take the top-left pixel's pair.
-        for (SceneKind kind : {SceneKind::plane, SceneKind::tunnel, SceneKind::slanted, SceneKind::triangles}) {
-            SceneParams scene = make_scene(kind, 128, 96, 256);
-            for (Gradients g : {Gradients::fine, Gradients::coarse, Gradients::ray}) {
-                RenderOptions render = make_render_options(kind, Stage::compute, g);
-                Image gpu = gpu_render(context, texture, scene, trilinear, render);
-                Image reference = reference_render(scene, checker, trilinear, render);
-                Comparison c = compare(gpu, reference, 1e-3);
-                double percent = 100.0 * c.over / double(gpu.texels.size());
-                std::printf("%-10s %-6s compute vs reference: %d pixels (%.3f%%) beyond 1e-3, max %g\n",
-                            to_string(kind).c_str(), to_string(g).c_str(), c.over, percent, c.max_difference);
-                CHECK_EQ(c.over, 0);
-            }
+    for (SceneKind kind : {SceneKind::plane, SceneKind::tunnel, SceneKind::slanted, SceneKind::triangles}) {
+        SceneParams scene = make_scene(kind, 128, 96, 256);
+        for (Gradients g : {Gradients::fine, Gradients::coarse, Gradients::ray}) {
+            RenderOptions render = make_render_options(kind, Stage::compute, g);
+            Image gpu = gpu_render(st.context, st.texture, scene, st.trilinear, render);
+            Image reference = reference_render(scene, st.checker, st.trilinear, render);
+            Comparison c = compare(gpu, reference, 1e-3);
+            double percent = 100.0 * c.over / double(gpu.texels.size());
+            std::printf("%-10s %-6s compute vs reference: %d pixels (%.3f%%) beyond 1e-3, max %g\n",
+                        to_string(kind).c_str(), to_string(g).c_str(), c.over, percent, c.max_difference);
+            CHECK_EQ(c.over, 0);
         }
-
     }
 }
 
+// 3. The mesh scene (raster pipeline, perspective-correct uv, helper invocations past triangle edges) vs
+//    the reference's ray-cast triangles with helper-style extrapolation. Coverage at shared edges follows
+//    the rasterizer's top-left rule there and a float32 edge test here: a few edge pixels.
 TEST_CASE("mesh-raster-vs-reference")
 {
     Stages st;
-    VulkanContext& context = st.context;
-    GpuTexture& texture = st.texture;
-    const MipChain& checker = st.checker;
-    const SamplerOptions& trilinear = st.trilinear;
-    {
-        // 3. The mesh scene (raster pipeline, perspective-correct uv, helper invocations past triangle edges)
-        //    vs the reference's ray-cast triangles with helper-style extrapolation. Coverage at shared edges
-        //    follows the rasterizer's top-left rule there and a float32 edge test here: a few edge pixels.
-        {
-            SceneParams scene = make_scene(SceneKind::mesh, 128, 96, 256);
-            RenderOptions render = make_render_options(SceneKind::mesh, Stage::fragment, Gradients::fine);
-            Comparison c = compare(gpu_render(context, texture, scene, trilinear, render),
-                                   reference_render(scene, checker, trilinear, render), 1e-3);
-            double percent = 100.0 * c.over / (128.0 * 96.0);
-            std::printf("mesh       fine   raster vs reference: %d pixels (%.3f%%) beyond 1e-3, max %g\n", c.over,
-                        percent, c.max_difference);
-            CHECK(percent <= 0.1, test::show(percent));
-        }
-
-    }
+    SceneParams scene = make_scene(SceneKind::mesh, 128, 96, 256);
+    RenderOptions render = make_render_options(SceneKind::mesh, Stage::fragment, Gradients::fine);
+    Comparison c = compare(gpu_render(st.context, st.texture, scene, st.trilinear, render),
+                           reference_render(scene, st.checker, st.trilinear, render), 1e-3);
+    double percent = 100.0 * c.over / (128.0 * 96.0);
+    std::printf("mesh       fine   raster vs reference: %d pixels (%.3f%%) beyond 1e-3, max %g\n", c.over, percent,
+                c.max_difference);
+    CHECK(percent <= 0.1, test::show(percent));
 }
 
 TEST_SUITE_END();
 
 TEST_SUITE_BEGIN("reference");
 
+// 4. Coarse gradients are one pair for the whole quad (the reference's lookups, which the compute render
+//    matched in 2), and on the plane they differ from fine ones (else 2 would prove nothing).
 TEST_CASE("coarse-gradients-per-quad")
 {
-    {
-        // 4. Coarse gradients are one pair for the whole quad (the reference's lookups, which the compute
-        //    render matched in 2), and on the plane they differ from fine ones (else 2 would prove nothing).
-        {
-            SceneParams scene = make_scene(SceneKind::plane, 64, 64, 256);
-            std::vector<PixelLookup> coarse = reference_lookups(scene, Gradients::coarse, false);
-            int differing = 0;
-            for (int y = 0; y < 64; y += 2)
-                for (int x = 0; x < 64; x += 2) {
-                    const Lookup& a = coarse[size_t(y) * 64 + x].lookup;
-                    for (int k = 1; k < 4; ++k) {
-                        const Lookup& b = coarse[size_t(y + k / 2) * 64 + x + k % 2].lookup;
-                        differing += a.dudx != b.dudx || a.dvdx != b.dvdx || a.dudy != b.dudy || a.dvdy != b.dvdy;
-                    }
-                }
-            CHECK_EQ(differing, 0);
-            std::vector<PixelLookup> fine = reference_lookups(scene, Gradients::fine, false);
-            int changed = 0;
-            for (size_t i = 0; i < fine.size(); ++i)
-                changed += fine[i].lookup.dudy != coarse[i].lookup.dudy || fine[i].lookup.dvdy != coarse[i].lookup.dvdy;
-            CHECK(changed > int(fine.size()) / 4, std::to_string(changed));
+    SceneParams scene = make_scene(SceneKind::plane, 64, 64, 256);
+    std::vector<PixelLookup> coarse = reference_lookups(scene, Gradients::coarse, false);
+    int differing = 0;
+    for (int y = 0; y < 64; y += 2)
+        for (int x = 0; x < 64; x += 2) {
+            const Lookup& a = coarse[size_t(y) * 64 + x].lookup;
+            for (int k = 1; k < 4; ++k) {
+                const Lookup& b = coarse[size_t(y + k / 2) * 64 + x + k % 2].lookup;
+                differing += a.dudx != b.dudx || a.dvdx != b.dvdx || a.dudy != b.dudy || a.dvdy != b.dvdy;
+            }
         }
-    }
+    CHECK_EQ(differing, 0);
+    std::vector<PixelLookup> fine = reference_lookups(scene, Gradients::fine, false);
+    int changed = 0;
+    for (size_t i = 0; i < fine.size(); ++i)
+        changed += fine[i].lookup.dudy != coarse[i].lookup.dudy || fine[i].lookup.dvdy != coarse[i].lookup.dvdy;
+    CHECK(changed > int(fine.size()) / 4, std::to_string(changed));
 }
 
 TEST_SUITE_END();
