@@ -30,29 +30,19 @@ bool g_listing_checks = false;
 constexpr int kSampleSeconds = 120;
 
 // Every test case starts with a clean count and no limit, and ends saying what it did not show.
-struct FailureLimitListener : doctest::IReporter {
+struct FailureLimitListener : tf::test::QuietReporter {
     explicit FailureLimitListener(const doctest::ContextOptions&) {}
-    void report_query(const doctest::QueryData&) override {}
-    void test_run_start() override {}
-    void test_run_end(const doctest::TestRunStats&) override {}
     void test_case_start(const doctest::TestCaseData& data) override
     {
         g_case = data.m_name;
         g_failures = 0;
         g_lines_left = INT_MAX;
     }
-    void test_case_reenter(const doctest::TestCaseData&) override {}
     void test_case_end(const doctest::CurrentTestCaseStats&) override
     {
         if (g_lines_left < 0)
             std::fprintf(stderr, "... and %d more failed checks not shown\n", -g_lines_left);
     }
-    void test_case_exception(const doctest::TestCaseException&) override {}
-    void subcase_start(const doctest::SubcaseSignature&) override {}
-    void subcase_end() override {}
-    void log_assert(const doctest::AssertData&) override {}
-    void log_message(const doctest::MessageData&) override {}
-    void test_case_skipped(const doctest::TestCaseData&) override {}
 };
 DOCTEST_REGISTER_LISTENER("failure_limit", 1, FailureLimitListener);
 

@@ -22,6 +22,22 @@
 
 namespace tf::test {
 
+// doctest's reporter interface with every event ignored: a reporter or listener overrides only what it uses.
+struct QuietReporter : doctest::IReporter {
+    void report_query(const doctest::QueryData&) override {}
+    void test_run_start() override {}
+    void test_run_end(const doctest::TestRunStats&) override {}
+    void test_case_start(const doctest::TestCaseData&) override {}
+    void test_case_reenter(const doctest::TestCaseData&) override {}
+    void test_case_end(const doctest::CurrentTestCaseStats&) override {}
+    void test_case_exception(const doctest::TestCaseException&) override {}
+    void subcase_start(const doctest::SubcaseSignature&) override {}
+    void subcase_end() override {}
+    void log_assert(const doctest::AssertData&) override {}
+    void log_message(const doctest::MessageData&) override {}
+    void test_case_skipped(const doctest::TestCaseData&) override {}
+};
+
 // ---------------------------------------------------------------------------------------------------
 // Checks. Each CHECK* is one doctest assertion at the caller's file and line: a failed one fails the
 // running test case and prints the expression and <values> (what was compared).

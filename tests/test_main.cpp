@@ -10,7 +10,7 @@ namespace {
 
 // `--list-test-cases --reporters=ctest` prints "tf-test-case<TAB>NAME<TAB>SUITE" a case: the suite's
 // words become the ctest test's labels (tests/README.md).
-struct CtestListReporter : doctest::IReporter {
+struct CtestListReporter : tf::test::QuietReporter {
     std::ostream& out;
     explicit CtestListReporter(const doctest::ContextOptions& options) : out(*options.cout) {}
     void report_query(const doctest::QueryData& query) override
@@ -18,17 +18,6 @@ struct CtestListReporter : doctest::IReporter {
         for (unsigned i = 0; i < query.num_data; ++i)
             out << "tf-test-case\t" << query.data[i]->m_name << "\t" << query.data[i]->m_test_suite << "\n";
     }
-    void test_run_start() override {}
-    void test_run_end(const doctest::TestRunStats&) override {}
-    void test_case_start(const doctest::TestCaseData&) override {}
-    void test_case_reenter(const doctest::TestCaseData&) override {}
-    void test_case_end(const doctest::CurrentTestCaseStats&) override {}
-    void test_case_exception(const doctest::TestCaseException&) override {}
-    void subcase_start(const doctest::SubcaseSignature&) override {}
-    void subcase_end() override {}
-    void log_assert(const doctest::AssertData&) override {}
-    void log_message(const doctest::MessageData&) override {}
-    void test_case_skipped(const doctest::TestCaseData&) override {}
 };
 DOCTEST_REGISTER_REPORTER("ctest", 1, CtestListReporter);
 
