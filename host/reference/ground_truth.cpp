@@ -1,7 +1,7 @@
 #include "reference/ground_truth.h"
 #include "texture/error.h"
 #include "core/hash.h"
-#include "core/parallel.h"
+#include "texture/threads.h"
 #include "reference/reference.h"
 #include <atomic>
 #include <cmath>

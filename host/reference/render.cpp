@@ -1,6 +1,6 @@
 #include "reference/render.h"
 #include "reference/ground_truth.h"
-#include "core/parallel.h"
+#include "texture/threads.h"
 #include <algorithm>
 #include <optional>
 
