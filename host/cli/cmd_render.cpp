@@ -8,6 +8,7 @@
 #include "reference/render.h"
 #include "scene/scene.h"
 #include <cstdio>
+#include <optional>
 
 namespace tf {
 
@@ -49,20 +50,28 @@ int run_render(const std::vector<std::string>& argv)
     const bool streamed = device.gpu && streams_level0(source) && !sat; // no MipChain on the host
     TextureUse use = device.texture_use(sat);
     use.streamed = streamed;
-    const TextureSize size = check_texture(source, use);
+    // Every path checks the texture (size, budget, device limits) once, before decoding it.
+    std::optional<MipChain> chain;
+    TextureSize size;
+    if (streamed) {
+        size = check_texture(source, use);
+    } else {
+        chain = load_texture(source, use);
+        size = {chain->levels[0].width, chain->levels[0].height};
+    }
     GpuSession* gpu = device.gpu.get();
     SceneParams scene = make_scene(kind, width, height, size.width);
     auto draw = [&](const GpuTexture& t) { return gpu_render(gpu->context, t, scene, options, render); };
 
     Image image;
     if (!gpu) {
-        image = reference_render(scene, load_texture(source, device.texture_use(sat)), options, render);
+        image = reference_render(scene, *chain, options, render);
     } else if (streamed) { // decoded into the staging buffer
         image = with_streamed_texture(gpu->context, size.width, size.height,
                                       [&](glm::vec4* texels) { read_level0(source, size, texels); }, draw);
         gpu->finish();
     } else {
-        image = with_texture(gpu->context, load_texture(source, device.texture_use(sat)), sat, draw);
+        image = with_texture(gpu->context, *chain, sat, draw);
         gpu->finish();
     }
     write_image(out, image);
