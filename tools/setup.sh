@@ -14,6 +14,7 @@ packages=(
   libvulkan-volk-dev nlohmann-json3-dev doctest-dev
   python3 python3-venv
   clang libclang-rt-14-dev
+  libglfw3-dev libimgui-dev xvfb xauth x11-apps
 )
 
 missing=()
