@@ -20,7 +20,7 @@ std::string version_string(uint32_t version)
 VulkanContext create_context(const ContextOptions& options)
 {
     VulkanContext context;
-    context.instance = create_instance(options.validate, &context.messenger);
+    context.instance = create_instance(options.validate, &context.messenger, options.instance_extensions);
     Cleanup on_failure; // destroy_context undoes a half-made context
     on_failure.add([&] { destroy_context(context); });
 
@@ -43,8 +43,13 @@ VulkanContext create_context(const ContextOptions& options)
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &features13;
     features.features.samplerAnisotropy = context.info.sampler_anisotropy ? VK_TRUE : VK_FALSE;
+    const char* swapchain_extension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.pNext = &features;
+    if (options.swapchain) {
+        info.enabledExtensionCount = 1;
+        info.ppEnabledExtensionNames = &swapchain_extension;
+    }
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue;
     TF_VK(vkCreateDevice(context.physical, &info, nullptr, &context.device));

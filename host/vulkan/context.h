@@ -39,6 +39,9 @@ struct DeviceInfo {
 struct ContextOptions {
     std::string device; // "" = default (lavapipe first), else an index or part of a name
     bool validate = false;
+    // A window (texfilter view): the surface extensions the window system needs, and VK_KHR_swapchain.
+    std::vector<std::string> instance_extensions;
+    bool swapchain = false;
 };
 
 struct VulkanContext {
@@ -57,7 +60,8 @@ void vk_check(VkResult result, const char* what);
 #define TF_VK(call) ::tf::vk_check((call), #call)
 
 // Instance only (for listing devices). Throws tf::Error with one sentence if there is no loader/driver.
-VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger);
+VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger,
+                           const std::vector<std::string>& extensions = {});
 std::vector<DeviceInfo> list_devices(VkInstance instance);
 // The device `request` names (see ContextOptions::device), or the default; throws with a per-device
 // account of why when nothing fits.

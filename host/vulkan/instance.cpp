@@ -37,7 +37,8 @@ bool has_validation_layer()
 
 int validation_message_count() { return validation_messages; }
 
-VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger)
+VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger,
+                           const std::vector<std::string>& extensions)
 {
     load_vulkan();
     uint32_t loader_version = 0;
@@ -60,15 +61,19 @@ VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger)
                                  VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     messenger_info.pfnUserCallback = on_validation_message;
 
+    std::vector<const char*> names;
+    for (const std::string& e : extensions)
+        names.push_back(e.c_str());
     VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     info.pApplicationInfo = &app;
     if (validate) {
         info.enabledLayerCount = 1;
         info.ppEnabledLayerNames = &validation_layer;
-        info.enabledExtensionCount = 1;
-        info.ppEnabledExtensionNames = &debug_extension;
+        names.push_back(debug_extension);
         info.pNext = &messenger_info; // also catches messages from instance creation itself
     }
+    info.enabledExtensionCount = uint32_t(names.size());
+    info.ppEnabledExtensionNames = names.data();
     VkInstance instance = VK_NULL_HANDLE;
     VkResult result = vkCreateInstance(&info, nullptr, &instance);
     if (result == VK_ERROR_INCOMPATIBLE_DRIVER)

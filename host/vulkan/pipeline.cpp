@@ -72,9 +72,17 @@ VkPipeline create_graphics_pipeline(const VulkanContext& context, const Graphics
     VkRect2D scissor{{0, 0}, {desc.width, desc.height}};
     VkPipelineViewportStateCreateInfo viewport_state{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport_state.viewportCount = 1;
-    viewport_state.pViewports = &viewport;
     viewport_state.scissorCount = 1;
-    viewport_state.pScissors = &scissor;
+    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    const bool fixed_viewport = desc.width && desc.height;
+    if (fixed_viewport) {
+        viewport_state.pViewports = &viewport;
+        viewport_state.pScissors = &scissor;
+    } else {
+        dynamic.dynamicStateCount = 2;
+        dynamic.pDynamicStates = dynamic_states;
+    }
     VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = VK_CULL_MODE_NONE;
@@ -96,7 +104,9 @@ VkPipeline create_graphics_pipeline(const VulkanContext& context, const Graphics
     rendering.depthAttachmentFormat = desc.depth_format;
 
     VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-    info.pNext = &rendering;
+    info.pNext = desc.render_pass ? nullptr : &rendering;
+    info.renderPass = desc.render_pass;
+    info.pDynamicState = fixed_viewport ? nullptr : &dynamic;
     info.stageCount = 2;
     info.pStages = stages;
     info.pVertexInputState = desc.vertex_input ? desc.vertex_input : &no_vertices;

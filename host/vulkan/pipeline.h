@@ -25,7 +25,8 @@ struct GraphicsPipelineDesc {
     const VkPipelineVertexInputStateCreateInfo* vertex_input = nullptr; // null: no vertex buffers
     VkFormat color_format = VK_FORMAT_UNDEFINED;
     VkFormat depth_format = VK_FORMAT_UNDEFINED; // UNDEFINED: no depth test
-    uint32_t width = 0, height = 0;
+    uint32_t width = 0, height = 0;   // the fixed viewport; 0 x 0: viewport and scissor set when drawing
+    VkRenderPass render_pass = VK_NULL_HANDLE; // set: for subpass 0 of it (the viewer's window) instead of dynamic rendering
 };
 // Destroyed by `cleanup`.
 VkPipeline create_graphics_pipeline(const VulkanContext& context, const GraphicsPipelineDesc& desc,
