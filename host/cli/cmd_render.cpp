@@ -5,6 +5,7 @@
 #include "io/image_io.h"
 #include "io/output_path.h"
 #include "io/pfm.h"
+#include "reference/debug_view.h"
 #include "reference/render.h"
 #include "scene/scene.h"
 #include <cstdio>
@@ -21,6 +22,8 @@ int run_render(const std::vector<std::string>& argv)
          {{"--size", "WxH", "image size, even sides (default 256x256)"},
           {"--stage", "S", "fragment (default) or compute (2x2 quads from subgroup quad operations)"},
           {"--derivatives", "D", "fine (default), coarse (one pair a quad) or ray (ray differentials)"},
+          {"--view", "V", "color (default), lod, anisotropy, fetches (a heat map 0..128) or data (linear floats: "
+                          "R LOD, G anisotropy, B fetches + hardware lookups; write .pfm or .exr)"},
           {"-o", "OUT", "output .png (8-bit sRGB), .exr (linear half) or .pfm (linear float, any build)"}},
          device_flags()});
     Args args = parse_args("render", argv, specs, 0);
@@ -35,13 +38,19 @@ int run_render(const std::vector<std::string>& argv)
     SceneKind kind = parse_flag(args, "--scene", "", parse_scene);
     RenderOptions render = make_render_options(kind, parse_flag(args, "--stage", "fragment", parse_stage),
                                                parse_flag(args, "--derivatives", "fine", parse_gradients));
+    render.view = parse_flag(args, "--view", "color", parse_view);
     SamplerOptions options = sampler_options_from(args);
+    check_view(options.filter, render.view); // before any work
     Backend backend = backend_from(args);
+    if (backend == Backend::reference)
+        check_reference_view(render.view);
     auto [width, height] = parse_size("--size", args.get("--size", "256x256"), 2, 8192);
     if (width % 2 || height % 2)
         throw Error("bad value for --size: '" + args.get("--size", "") + "' (sides must be even: derivatives come from 2x2 quads)");
     TextureSource source = texture_source_from(args);
     std::string out = checked_output_path(args.require("-o"), {".png", ".exr", ".pfm"}, {source.name_or_path});
+    if (render.view == DebugView::data && out.size() >= 4 && out.compare(out.size() - 4, 4, ".png") == 0)
+        throw Error(out + ": --view data writes linear floats (LOD, anisotropy, fetches); use a .pfm or .exr output");
     if (!image_io_available() && !is_pfm_path(out))
         throw Error(out + ": image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON; "
                           ".pfm output is built in)");

@@ -20,16 +20,8 @@ constexpr int kMaxProbes = 16;
 constexpr double ratio_slack = 1.0 / 64.0;
 int probe_count(double ratio, int max_n) { return ratio >= max_n ? max_n : std::max(1, int(std::ceil(ratio - ratio_slack))); }
 
-// Probes along the major axis: uv + t_k * axis, t_k = (k + 1/2)/N - 1/2, all at one LOD.
-struct Probes {
-    int count = 1;
-    double lod = 0;
-    double axis_u = 0, axis_v = 0; // the whole major axis, uv units
-    bool gaussian = false;         // feline: weights exp(-2 (2 t_k)^2), else equal
-};
-
-Probes gpu_probes(const MipChain& chain, const SamplerOptions& options, const Lookup& l, int max_n) {
-    Probes p;
+AnisoProbes gpu_probes(const MipChain& chain, const SamplerOptions& options, const Lookup& l, int max_n) {
+    AnisoProbes p;
     const double w = chain.levels[0].width, h = chain.levels[0].height;
     const double px = std::hypot(l.dudx * w, l.dvdx * h), py = std::hypot(l.dudy * w, l.dvdy * h);
     const double pmax = std::max(px, py), pmin = std::min(px, py);
@@ -38,14 +30,13 @@ Probes gpu_probes(const MipChain& chain, const SamplerOptions& options, const Lo
     p.lod = clamp_lod(chain, reference_lod(chain, l, options) - std::log2(double(p.count)), options);
     if (p.count > 1) {
         const bool x_major = px >= py;
-        p.axis_u = x_major ? l.dudx : l.dudy;
-        p.axis_v = x_major ? l.dvdx : l.dvdy;
+        p.axis = x_major ? glm::dvec2(l.dudx, l.dvdx) : glm::dvec2(l.dudy, l.dvdy);
     }
     return p;
 }
 
-Probes feline_probes(const MipChain& chain, const SamplerOptions& options, const Lookup& l, int max_n) {
-    Probes p;
+AnisoProbes feline_probes(const MipChain& chain, const SamplerOptions& options, const Lookup& l, int max_n) {
+    AnisoProbes p;
     p.gaussian = true;
     const double w = chain.levels[0].width, h = chain.levels[0].height;
     // J = [a b; c d], columns d(u,v)/dx and d(u,v)/dy in level-0 texels.
@@ -63,8 +54,7 @@ Probes feline_probes(const MipChain& chain, const SamplerOptions& options, const
     p.lod = clamp_lod(chain, std::log2(std::max(sigma2, sigma1 / p.count)) + options.lod_bias, options);
     if (p.count > 1) {
         const double theta = 0.5 * std::atan2(2 * t, s - r); // direction of the largest eigenvalue
-        p.axis_u = sigma1 * std::cos(theta) / w;
-        p.axis_v = sigma1 * std::sin(theta) / h;
+        p.axis = glm::dvec2(sigma1 * std::cos(theta) / w, sigma1 * std::sin(theta) / h);
     }
     return p;
 }
@@ -86,23 +76,26 @@ glm::dvec4 reference_brilinear(const MipChain& chain, const SamplerOptions& opti
     });
 }
 
-glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
+AnisoProbes reference_aniso_probes(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
     if (chain.levels.empty()) throw Error("reference_aniso: empty MIP chain");
     const int max_n = std::clamp(options.probes, 1, kMaxProbes);
-    Probes p;
-    if (!finite_footprint(chain, lookup)) // NaN/±Inf or past float range (reference.h): one probe, coarsest level
+    if (!finite_footprint(chain, lookup)) { // NaN/±Inf or past float range (reference.h): one probe, coarsest level
+        AnisoProbes p;
         p.lod = clamp_lod(chain, INFINITY, options);
-    else if (options.aniso_shape == AnisoShape::feline)
-        p = feline_probes(chain, options, lookup, max_n);
-    else
-        p = gpu_probes(chain, options, lookup, max_n);
+        return p;
+    }
+    return options.aniso_shape == AnisoShape::feline ? feline_probes(chain, options, lookup, max_n)
+                                                     : gpu_probes(chain, options, lookup, max_n);
+}
 
+glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
+    const AnisoProbes p = reference_aniso_probes(chain, options, lookup);
     glm::dvec4 sum(0.0);
     double weights = 0;
     for (int k = 0; k < p.count; ++k) {
         const double t = (k + 0.5) / p.count - 0.5;
         const double weight = p.gaussian ? std::exp(-2 * (2 * t) * (2 * t)) : 1.0;
-        sum += weight * reference_trilinear_at(chain, p.lod, lookup.u + t * p.axis_u, lookup.v + t * p.axis_v,
+        sum += weight * reference_trilinear_at(chain, p.lod, lookup.u + t * p.axis.x, lookup.v + t * p.axis.y,
                                                options.wrap);
         weights += weight;
     }

@@ -226,3 +226,13 @@ glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, c
 }
 
 } // namespace tf
+
+namespace tf {
+
+EwaFootprint reference_ewa_footprint(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
+    if (chain.levels.empty()) throw Error("reference_ewa: empty MIP chain");
+    const Footprint fp = footprint(chain, options, lookup);
+    return {fp.cov.xx, fp.cov.xy, fp.cov.yy, clamp_lod(chain, fp.lambda, options)};
+}
+
+} // namespace tf

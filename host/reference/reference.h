@@ -4,6 +4,7 @@
 #include "core/filter.h"
 #include "core/lookup.h"
 #include "texture/mip.h"
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 namespace tf {
@@ -54,6 +55,25 @@ glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, d
 // and the matching shaders/texfilter/*.glsl headers for the math). uv is finite when these are called.
 glm::dvec4 reference_brilinear(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
 glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+
+// aniso's probes (reference/aniso.cpp): probe k at uv + ((k + 1/2)/count - 1/2) * axis, all on `lod`
+// (biased and clamped), weighted equally or (feline) by exp(-2 (2 t_k)^2). The debug views and the
+// viewer's footprint (reference/footprint.h) read the same numbers the filter uses.
+struct AnisoProbes {
+    int count = 1;
+    double lod = 0;
+    glm::dvec2 axis{0.0}; // the whole major axis, uv units (zero for one probe)
+    bool gaussian = false;
+};
+AnisoProbes reference_aniso_probes(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+
+// ewa's footprint (reference/ewa.cpp): the covariance J·Jᵀ in level-0 texels² with its minor axis grown to
+// major / max_aniso (all zero for zero or non-finite gradients), and the LOD it reads, biased and clamped.
+struct EwaFootprint {
+    double xx = 0, xy = 0, yy = 0;
+    double lod = 0;
+};
+EwaFootprint reference_ewa_footprint(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
 glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
 
 // sat averages each channel quantised to 16 bits over the whole texture's range (reference/sat.cpp): that

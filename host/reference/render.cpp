@@ -1,4 +1,6 @@
 #include "reference/render.h"
+#include "reference/debug_view.h"
+#include "reference/footprint.h"
 #include "reference/ground_truth.h"
 #include "texture/threads.h"
 #include <algorithm>
@@ -21,6 +23,8 @@ std::optional<SatLevels> sat_levels_for(const MipChain& chain, const SamplerOpti
 Image reference_render(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options,
                        const RenderOptions& render)
 {
+    check_view(options.filter, render.view);
+    check_reference_view(render.view);
     if (options.filter == Filter::ground_truth)
         return reference_ground_truth(scene, chain, options);
     int width = scene.kind_size.y, height = scene.kind_size.z;
@@ -31,9 +35,12 @@ Image reference_render(const SceneParams& scene, const MipChain& chain, const Sa
     parallel_for(size_t(height), [&](size_t y) {
         for (int x = 0; x < width; ++x) {
             size_t i = y * size_t(width) + size_t(x);
-            out.texels[i] = lookups[i].hit ? glm::vec4(reference_sample(chain, options, lookups[i].lookup,
-                                                                        sat ? &*sat : nullptr))
-                                           : scene.background;
+            if (!lookups[i].hit)
+                out.texels[i] = scene.background;
+            else if (render.view != DebugView::color)
+                out.texels[i] = reference_view_pixel(render.view, lookup_footprint(chain, options, lookups[i].lookup));
+            else
+                out.texels[i] = glm::vec4(reference_sample(chain, options, lookups[i].lookup, sat ? &*sat : nullptr));
         }
     });
     return out;

@@ -94,50 +94,83 @@ PixelHit reference_hit(const SceneParams& scene, double px, double py)
     return result;
 }
 
-std::vector<PixelLookup> reference_lookups(const SceneParams& scene, Gradients gradients, bool rasterized)
+namespace {
+
+// Pixel (x, y)'s lookup, the ray casts of its quad from hit_at(x, y) (a whole image's, or just the quad's).
+template <typename HitAt>
+PixelLookup quad_lookup(const SceneParams& scene, Gradients gradients, bool rasterized, int x, int y, HitAt hit_at)
+{
+    bool triangles = scene.kind_size.x == HARNESS_SCENE_TRIANGLES;
+    const PixelHit& self = hit_at(x, y);
+    // uv of pixel (px, py) as seen from pixel `self`: a rasterizer's helper invocations stay on self's triangle.
+    auto uv_at = [&](int px, int py) {
+        if (rasterized && self.hit && triangles)
+            return reference_triangle_plane_uv(scene, self.triangle, px + 0.5, py + 0.5);
+        return hit_at(px, py).uv;
+    };
+    // Ray differentials' ideal: d(uv)/d(pixel) on the hit surface (its plane, for triangles).
+    auto surface_uv = [&](double px, double py) {
+        if (triangles)
+            return self.hit ? reference_triangle_plane_uv(scene, self.triangle, px, py) : glm::dvec2(0.0);
+        return reference_hit(scene, px, py).uv;
+    };
+    glm::dvec2 uv = self.uv, dx, dy;
+    if (gradients == Gradients::ray) {
+        const double h = 1.0 / 1024; // central differences: error ~h^2, far below float32's
+        dx = (surface_uv(x + 0.5 + h, y + 0.5) - surface_uv(x + 0.5 - h, y + 0.5)) / (2 * h);
+        dy = (surface_uv(x + 0.5, y + 0.5 + h) - surface_uv(x + 0.5, y + 0.5 - h)) / (2 * h);
+    } else {
+        int x0 = x & ~1, y0 = y & ~1;
+        int ax = gradients == Gradients::coarse ? y0 : y; // the row dx is taken along
+        int ay = gradients == Gradients::coarse ? x0 : x; // the column dy is taken down
+        dx = uv_at(x0 | 1, ax) - uv_at(x0, ax);
+        dy = uv_at(ay, y0 | 1) - uv_at(ay, y0);
+    }
+    PixelLookup p;
+    p.hit = self.hit;
+    p.lookup = {uv.x, uv.y, dx.x, dx.y, dy.x, dy.y};
+    return p;
+}
+
+void check_even(const SceneParams& scene)
 {
     int width = scene.kind_size.y, height = scene.kind_size.z;
     if (width % 2 != 0 || height % 2 != 0)
         throw Error("quad derivatives need an even image size, got " + std::to_string(width) + "x" +
                     std::to_string(height));
+}
+
+} // namespace
+
+std::vector<PixelLookup> reference_lookups(const SceneParams& scene, Gradients gradients, bool rasterized)
+{
+    check_even(scene);
+    int width = scene.kind_size.y, height = scene.kind_size.z;
     std::vector<PixelHit> hits(size_t(width) * size_t(height));
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
             hits[size_t(y) * width + x] = reference_hit(scene, x + 0.5, y + 0.5);
-    bool triangles = scene.kind_size.x == HARNESS_SCENE_TRIANGLES;
-    // uv of pixel (x, y) as seen from pixel `self`: a rasterizer's helper invocations stay on self's triangle.
-    auto uv_at = [&](int x, int y, const PixelHit& self) {
-        if (rasterized && self.hit && triangles)
-            return reference_triangle_plane_uv(scene, self.triangle, x + 0.5, y + 0.5);
-        return hits[size_t(y) * width + x].uv;
-    };
-    // Ray differentials' ideal: d(uv)/d(pixel) on the hit surface (its plane, for triangles).
-    auto surface_uv = [&](double px, double py, const PixelHit& self) {
-        if (triangles)
-            return self.hit ? reference_triangle_plane_uv(scene, self.triangle, px, py) : glm::dvec2(0.0);
-        return reference_hit(scene, px, py).uv;
-    };
+    auto hit_at = [&](int x, int y) -> const PixelHit& { return hits[size_t(y) * width + x]; };
     std::vector<PixelLookup> out(hits.size());
     for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const PixelHit& self = hits[size_t(y) * width + x];
-            glm::dvec2 uv = self.uv, dx, dy;
-            if (gradients == Gradients::ray) {
-                const double h = 1.0 / 1024; // central differences: error ~h^2, far below float32's
-                dx = (surface_uv(x + 0.5 + h, y + 0.5, self) - surface_uv(x + 0.5 - h, y + 0.5, self)) / (2 * h);
-                dy = (surface_uv(x + 0.5, y + 0.5 + h, self) - surface_uv(x + 0.5, y + 0.5 - h, self)) / (2 * h);
-            } else {
-                int x0 = x & ~1, y0 = y & ~1;
-                int ax = gradients == Gradients::coarse ? y0 : y; // the row dx is taken along
-                int ay = gradients == Gradients::coarse ? x0 : x; // the column dy is taken down
-                dx = uv_at(x0 | 1, ax, self) - uv_at(x0, ax, self);
-                dy = uv_at(ay, y0 | 1, self) - uv_at(ay, y0, self);
-            }
-            PixelLookup& p = out[size_t(y) * width + x];
-            p.hit = self.hit;
-            p.lookup = {uv.x, uv.y, dx.x, dx.y, dy.x, dy.y};
-        }
+        for (int x = 0; x < width; ++x)
+            out[size_t(y) * width + x] = quad_lookup(scene, gradients, rasterized, x, y, hit_at);
     return out;
+}
+
+PixelLookup reference_pixel_lookup(const SceneParams& scene, Gradients gradients, bool rasterized, int x, int y)
+{
+    check_even(scene);
+    int width = scene.kind_size.y, height = scene.kind_size.z;
+    if (x < 0 || y < 0 || x >= width || y >= height)
+        throw Error("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
+                    std::to_string(width) + "x" + std::to_string(height) + " image");
+    PixelHit quad[4];
+    int x0 = x & ~1, y0 = y & ~1;
+    for (int k = 0; k < 4; ++k)
+        quad[k] = reference_hit(scene, x0 + (k & 1) + 0.5, y0 + (k >> 1) + 0.5);
+    auto hit_at = [&](int px, int py) -> const PixelHit& { return quad[(px - x0) + 2 * (py - y0)]; };
+    return quad_lookup(scene, gradients, rasterized, x, y, hit_at);
 }
 
 } // namespace tf

@@ -30,5 +30,7 @@ struct PixelLookup {
     Lookup lookup;
 };
 std::vector<PixelLookup> reference_lookups(const SceneParams& scene, Gradients gradients, bool rasterized);
+// One pixel's entry of reference_lookups (the same numbers), from its quad's four ray casts only.
+PixelLookup reference_pixel_lookup(const SceneParams& scene, Gradients gradients, bool rasterized, int x, int y);
 
 } // namespace tf

@@ -102,6 +102,33 @@ Stage parse_stage(const std::string& name)
     throw Error("unknown stage '" + name + "' (expected one of: fragment, compute)");
 }
 
+std::string to_string(DebugView view)
+{
+    switch (view) {
+    case DebugView::color: return "color";
+    case DebugView::lod: return "lod";
+    case DebugView::anisotropy: return "anisotropy";
+    case DebugView::fetches: return "fetches";
+    case DebugView::data: return "data";
+    }
+    return "?";
+}
+
+DebugView parse_view(const std::string& name)
+{
+    for (DebugView v : {DebugView::color, DebugView::lod, DebugView::anisotropy, DebugView::fetches, DebugView::data})
+        if (to_string(v) == name)
+            return v;
+    throw Error("unknown view '" + name + "' (expected one of: color, lod, anisotropy, fetches, data)");
+}
+
+void check_view(Filter filter, DebugView view)
+{
+    if (view != DebugView::color && is_scene_level(filter))
+        throw Error("--view " + to_string(view) + " shows a lookup's LOD, anisotropy and fetches; --filter " +
+                    to_string(filter) + " makes no lookup (use --view color)");
+}
+
 RenderOptions make_render_options(SceneKind kind, Stage stage, Gradients gradients)
 {
     bool mesh = kind == SceneKind::mesh;

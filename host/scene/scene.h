@@ -3,6 +3,7 @@
 // CPU reference (reference/scene_cast.cpp, in double). Each pixel is ray-cast at its centre (the mesh scene is
 // rasterized on the GPU, ray-cast here); uv derivatives are fine or coarse 2x2 quad differences, as
 // dFdxFine/dFdxCoarse compute them, or ray differentials.
+#include "core/filter.h"
 #include "core/lookup.h"
 #include "harness/config.h"
 #include <glm/glm.hpp>
@@ -24,10 +25,28 @@ enum class Stage { fragment, compute };
 Stage parse_stage(const std::string& name);
 std::string to_string(Stage stage);
 
+// What a render shows: the filtered colour, or a debug view of each pixel's lookup (shaders/texfilter/
+// debug.glsl; docs/API.md): lod (the LOD the filter samples at, as the mipcolors palette), anisotropy (the
+// footprint's major/minor axis ratio), fetches (texel fetches + hardware lookups, a heat map up to
+// HARNESS_VIEW_FETCHES_MAX) or data (linear floats: R LOD, G ratio, B fetches + hardware lookups, A 1).
+enum class DebugView {
+    color = HARNESS_VIEW_COLOR,
+    lod = HARNESS_VIEW_LOD,
+    anisotropy = HARNESS_VIEW_ANISOTROPY,
+    fetches = HARNESS_VIEW_FETCHES,
+    data = HARNESS_VIEW_DATA
+};
+DebugView parse_view(const std::string& name); // throws tf::Error listing the valid names
+std::string to_string(DebugView view);
+// The scene-level filters (ground-truth, none) make no lookup to show: any view but color throws
+// tf::Error naming the pair.
+void check_view(Filter filter, DebugView view);
+
 struct RenderOptions {
     Stage stage = Stage::fragment;
     Gradients gradients = Gradients::fine;
     bool rasterize = false; // the mesh scene: triangles through the raster pipeline
+    DebugView view = DebugView::color;
 };
 
 // The render options a scene allows: mesh is rasterized (fragment stage, quad derivatives only);

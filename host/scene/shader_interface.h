@@ -30,7 +30,7 @@ struct PushConstants {
     int32_t gradients;    // HARNESS_GRADIENTS_* (tf::Gradients)
     int32_t truth_side;   // ground-truth: samples a pixel = side^2
     int32_t pixel_filter; // HARNESS_PIXEL_FILTER_* (tf::PixelFilter)
-    int32_t padding;      // the vec4s start on a 16-byte boundary, as in std430
+    int32_t view;         // render: HARNESS_VIEW_* (tf::DebugView); the vec4s then start 16-byte aligned
     float sat_offset[4];  // sat: SatTable::offset, ::scale (per channel)
     float sat_scale[4];
 };
@@ -49,6 +49,7 @@ static_assert(offsetof(PushConstants, boxes) == HARNESS_PUSH_BOXES);
 static_assert(offsetof(PushConstants, gradients) == HARNESS_PUSH_GRADIENTS);
 static_assert(offsetof(PushConstants, truth_side) == HARNESS_PUSH_TRUTH_SIDE);
 static_assert(offsetof(PushConstants, pixel_filter) == HARNESS_PUSH_PIXEL_FILTER);
+static_assert(offsetof(PushConstants, view) == HARNESS_PUSH_VIEW);
 static_assert(offsetof(PushConstants, sat_offset) == HARNESS_PUSH_SAT_OFFSET);
 static_assert(offsetof(PushConstants, sat_scale) == HARNESS_PUSH_SAT_SCALE);
 static_assert(sizeof(PushConstants) == HARNESS_PUSH_SIZE);
@@ -100,5 +101,9 @@ static_assert(int(PixelFilter::box) == HARNESS_PIXEL_FILTER_BOX &&
               "tf::PixelFilter: PushConstants.pixelFilter");
 static_assert(int(Gradients::fine) == HARNESS_GRADIENTS_FINE && int(Gradients::coarse) == HARNESS_GRADIENTS_COARSE &&
               int(Gradients::ray) == HARNESS_GRADIENTS_RAY, "tf::Gradients: PushConstants.gradients");
+static_assert(int(DebugView::color) == HARNESS_VIEW_COLOR && int(DebugView::lod) == HARNESS_VIEW_LOD &&
+              int(DebugView::anisotropy) == HARNESS_VIEW_ANISOTROPY &&
+              int(DebugView::fetches) == HARNESS_VIEW_FETCHES && int(DebugView::data) == HARNESS_VIEW_DATA,
+              "tf::DebugView: PushConstants.view");
 
 } // namespace tf

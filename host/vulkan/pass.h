@@ -37,7 +37,8 @@ Pass create_pass(const VulkanContext& context, const GpuTexture& texture, const 
 void bind_pass(VkCommandBuffer command_buffer, VkPipelineBindPoint bind_point, VkPipeline pipeline, const Pass& pass,
                const PushConstants& push);
 
+// view: HARNESS_VIEW_* (render's debug views; sample shows colour).
 PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, glm::vec4 sat_offset,
-                                  glm::vec4 sat_scale, int gradients);
+                                  glm::vec4 sat_scale, int gradients, int view = HARNESS_VIEW_COLOR);
 
 } // namespace tf

@@ -34,6 +34,7 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
                                              const SceneParams& scene, const SamplerOptions& options,
                                              const RenderOptions& render)
 {
+    check_view(options.filter, render.view);
     auto renderer = std::make_unique<GpuRenderer>();
     GpuRenderer& r = *renderer;
     Cleanup& cleanup = r.cleanup;
@@ -43,7 +44,8 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
     r.width = uint32_t(scene.kind_size.y);
     r.height = uint32_t(scene.kind_size.z);
     r.background = {{scene.background.r, scene.background.g, scene.background.b, scene.background.a}};
-    r.push = make_push_constants(options, 0, texture.sat_offset, texture.sat_scale, gradients_id(render.gradients));
+    r.push = make_push_constants(options, 0, texture.sat_offset, texture.sat_scale, gradients_id(render.gradients),
+                                 int(render.view));
 
     r.uniforms = create_host_buffer(context, sizeof(SceneParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     cleanup.add([&context, &r] { destroy_buffer(context, r.uniforms); });

@@ -53,6 +53,16 @@
 #define HARNESS_GRADIENTS_COARSE 1
 #define HARNESS_GRADIENTS_RAY 2
 
+// What a render shows (tf::DebugView; texfilter/debug.glsl draws the debug views): the filtered colour,
+// the LOD as the mipcolors palette, the footprint's anisotropy ratio, texel fetches + hardware lookups as a
+// heat map (0 .. HARNESS_VIEW_FETCHES_MAX), or the numbers themselves (R LOD, G ratio, B fetches, A 1).
+#define HARNESS_VIEW_COLOR 0
+#define HARNESS_VIEW_LOD 1
+#define HARNESS_VIEW_ANISOTROPY 2
+#define HARNESS_VIEW_FETCHES 3
+#define HARNESS_VIEW_DATA 4
+#define HARNESS_VIEW_FETCHES_MAX 128.0 // the heat map's top: 16 aniso probes of 8 fetches
+
 #define HARNESS_RENDER_TILE 8 // compute render: 8x8 pixels a workgroup of 64 invocations, as 2x2 quads
 
 // Descriptor set 0.
@@ -88,6 +98,7 @@
 #define HARNESS_PUSH_GRADIENTS 48
 #define HARNESS_PUSH_TRUTH_SIDE 52
 #define HARNESS_PUSH_PIXEL_FILTER 56
+#define HARNESS_PUSH_VIEW 60       // render: HARNESS_VIEW_*
 #define HARNESS_PUSH_SAT_OFFSET 64 // vec4: 16-byte aligned
 #define HARNESS_PUSH_SAT_SCALE 80
 #define HARNESS_PUSH_SIZE 96

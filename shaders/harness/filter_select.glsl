@@ -12,6 +12,7 @@ uint hwLookupCount = 0u;
 #define TF_COUNT_HW_LOOKUPS(n) hwLookupCount += uint(n)
 
 #include "texfilter/texfilter.glsl"
+#include "texfilter/debug.glsl"
 
 // The options the host passes through unchanged are the includes' own ids.
 #if HARNESS_WRAP_REPEAT != TF_WRAP_REPEAT || HARNESS_WRAP_CLAMP != TF_WRAP_CLAMP || \
@@ -51,6 +52,7 @@ layout(push_constant) uniform PushConstants {
     layout(offset = HARNESS_PUSH_GRADIENTS) int gradients;    // render: HARNESS_GRADIENTS_*
     layout(offset = HARNESS_PUSH_TRUTH_SIDE) int truthSide;   // ground-truth: samples a pixel = side^2
     layout(offset = HARNESS_PUSH_PIXEL_FILTER) int pixelFilter; // ground-truth: HARNESS_PIXEL_FILTER_*
+    layout(offset = HARNESS_PUSH_VIEW) int view;              // render: HARNESS_VIEW_*
     // sat: per channel, the value of quantisation level 0 and the span of levels 0..65535
     // (SatTable::offset, ::scale; see sat.glsl)
     layout(offset = HARNESS_PUSH_SAT_OFFSET) vec4 satOffset;
@@ -82,6 +84,30 @@ vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
     default:
         TF_COUNT_HW_LOOKUPS(1);
         return textureGrad(u_texture, uv, dUVdx, dUVdy); // hw-*: sampler state set by the host
+    }
+}
+
+// What a render pixel shows (pc.view): the filtered colour, or a debug view of its lookup (texfilter/
+// debug.glsl). The filter always runs, so the fetches are this lookup's; the LOD is the one its family
+// samples at. The host refuses views for ground-truth and none (no lookup).
+vec4 harness_shade(vec2 uv, vec2 dUVdx, vec2 dUVdy)
+{
+    vec4 color = harness_filter(uv, dUVdx, dUVdy);
+    if (pc.view == HARNESS_VIEW_COLOR)
+        return color;
+    int family = FILTER_ID == HARNESS_FILTER_ANISO ? TF_DEBUG_ANISO
+                 : FILTER_ID == HARNESS_FILTER_EWA ? TF_DEBUG_EWA
+                                                   : TF_DEBUG_ISOTROPIC;
+    tf_Sampler s = tf_Sampler(pc.wrapMode, pc.lodBias, pc.lodMin, pc.lodMax);
+    tf_Footprint f = tf_debug_footprint(uv, dUVdx, dUVdy, vec2(textureSize(u_texture, 0)),
+                                        textureQueryLevels(u_texture), s, family, pc.probes, pc.anisoShape,
+                                        pc.maxAniso);
+    float work = float(fetchCount + hwLookupCount);
+    switch (pc.view) {
+    case HARNESS_VIEW_LOD: return vec4(tf_debug_lod_color(f.lod), 1.0);
+    case HARNESS_VIEW_ANISOTROPY: return vec4(tf_debug_anisotropy_color(f.ratio), 1.0);
+    case HARNESS_VIEW_FETCHES: return vec4(tf_debug_heat(work, HARNESS_VIEW_FETCHES_MAX), 1.0);
+    default: return vec4(f.lod, f.ratio, work, 1.0);
     }
 }
 

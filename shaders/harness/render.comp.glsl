@@ -33,7 +33,7 @@ void main()
     [[unroll]] for (int step = 0; step < 2; ++step)
         q = adopt_uv(q, subgroupQuadSwapHorizontal(q), subgroupQuadSwapVertical(q));
     PixelLookup l = pixel_lookup(h, g, q);
-    vec4 color = harness_filter(l.uv, l.dUVdx, l.dUVdy);
+    vec4 color = harness_shade(l.uv, l.dUVdx, l.dUVdy);
     if (all(lessThan(pixel, size)))
         pixels[pixel.y * size.x + pixel.x] = h.hit ? color : scene.background;
 }

@@ -31,6 +31,6 @@ void main()
         q = adopt_uv(q, q + (odd.x ? -dx : dx), q + (odd.y ? -dy : dy));
     }
     PixelLookup l = pixel_lookup(h, g, q);
-    vec4 color = harness_filter(l.uv, l.dUVdx, l.dUVdy);
+    vec4 color = harness_shade(l.uv, l.dUVdx, l.dUVdy);
     outColor = h.hit ? color : scene.background;
 }
