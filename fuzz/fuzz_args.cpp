@@ -1,10 +1,10 @@
-// libFuzzer target: the command-line parser (host/cli/args.cpp) and the option helpers the commands share
-// (host/cli/cli_common.cpp: texture, sampler, backend, device), with `render`'s flags. The input is argv:
+// libFuzzer target: the command-line parser (host/flags/args.cpp) and the option helpers the commands share
+// (host/flags/cli_common.cpp: texture, sampler, backend, device), with `render`'s flags. The input is argv:
 // tokens separated by NUL bytes, after one byte giving how many positional arguments are allowed.
 // Asserts: only tf::Error escapes; accepted flags are declared ones, each once; values parsed from them
 // are in the ranges the commands document; sizes are within their bounds.
-#include "cli/args.h"
-#include "cli/cli_common.h"
+#include "flags/args.h"
+#include "flags/cli_common.h"
 #include "texture/error.h"
 #include "fuzz_common.h"
 

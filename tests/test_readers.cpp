@@ -1,7 +1,7 @@
 // Tests of the input readers the fuzz targets drive (docs/FUZZING.md): the lookups CSV, the golden
 // manifest, the PFM reader and the flag parser, through their file and stream entry points. Each test of
 // a fixed bug says which input showed it; all run on the CPU, in milliseconds.
-#include "cli/args.h"
+#include "flags/args.h"
 #include "texture/error.h"
 #include "cli/golden.h"
 #include "io/lookups_csv.h"

@@ -1,6 +1,6 @@
 #include "bench/bench.h"
 #include "bench/mip_build_bench.h"
-#include "cli/cli_common.h"
+#include "flags/cli_common.h"
 #include "cli/commands.h"
 #include "vulkan/device_memory_check.h"
 #include "texture/error.h"

@@ -1,4 +1,4 @@
-#include "cli/cli_common.h"
+#include "flags/cli_common.h"
 #include "cli/commands.h"
 #include "core/diff.h"
 #include "texture/error.h"

@@ -1,4 +1,4 @@
-#include "cli/cli_common.h"
+#include "flags/cli_common.h"
 #include "cli/commands.h"
 #include "vulkan/device_memory_check.h"
 #include "texture/error.h"

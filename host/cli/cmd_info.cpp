@@ -1,4 +1,4 @@
-#include "cli/cli_common.h"
+#include "flags/cli_common.h"
 #include "cli/commands.h"
 #include "io/image_io.h"
 #include "core/memory_budget.h"

@@ -1,4 +1,4 @@
-#include "cli/cli_common.h"
+#include "flags/cli_common.h"
 #include "cli/commands.h"
 #include "vulkan/backend.h"
 #include "io/lookups_csv.h"

@@ -1,5 +1,5 @@
 #include "cli/golden.h"
-#include "cli/cli_common.h"
+#include "flags/cli_common.h"
 #include "texture/error.h"
 #include <cstdlib>
 #include <fstream>

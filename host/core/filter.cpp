@@ -101,4 +101,24 @@ bool is_hardware(Filter filter) {
 
 bool is_scene_level(Filter filter) { return filter == Filter::ground_truth || filter == Filter::none; }
 
+TruthRange truth_range(const SamplerOptions& options)
+{
+    const int side = options.truth_side;
+    if (side < 1 || side > max_ground_truth_side)
+        throw Error("ground truth: truth_side " + std::to_string(side) + " is outside 1.." +
+                    std::to_string(max_ground_truth_side) + " (samples a pixel = side^2)");
+    const int total = side * side;
+    const std::string grid =
+        " the " + std::to_string(total) + " samples of the " + std::to_string(side) + "x" + std::to_string(side) + " grid";
+    if (options.truth_first < 0 || options.truth_first >= total)
+        throw Error("ground truth: truth_first " + std::to_string(options.truth_first) + " is not one of" + grid +
+                    " (0.." + std::to_string(total - 1) + ")");
+    const int rest = total - options.truth_first;
+    if (options.truth_count < 0 || options.truth_count > rest)
+        throw Error("ground truth: truth_count " + std::to_string(options.truth_count) + " from truth_first " +
+                    std::to_string(options.truth_first) + " runs past" + grid + " (at most " + std::to_string(rest) +
+                    "; 0 = the rest)");
+    return {options.truth_first, options.truth_count == 0 ? rest : options.truth_count};
+}
+
 } // namespace tf

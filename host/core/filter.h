@@ -75,6 +75,18 @@ struct SamplerOptions {
     int boxes = 4;         // sat-assembly: boxes along the major axis, 1..16
     PixelFilter pixel_filter = PixelFilter::box; // ground-truth
     int truth_side = 16;   // ground-truth: a side x side stratified grid of samples a pixel (256 spp)
+    // ground-truth: only samples [truth_first, truth_first + truth_count) of the grid, their mean (the
+    // viewer accumulates the truth a range a frame); truth_count 0 = every sample from truth_first on.
+    int truth_first = 0;
+    int truth_count = 0;
 };
+
+// The ground truth's sample range of `options`, resolved: count 0 becomes the rest of the grid. Throws
+// tf::Error naming truth_first/truth_count and the grid when the range is empty or runs past it.
+struct TruthRange {
+    int first = 0;
+    int count = 0;
+};
+TruthRange truth_range(const SamplerOptions& options);
 
 } // namespace tf

@@ -60,10 +60,10 @@ glm::dvec2 ground_truth_sample(int x, int y, int i, int side, PixelFilter filter
 
 Image reference_ground_truth(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options)
 {
-    if (options.truth_side < 1 || options.truth_side > max_ground_truth_side)
-        throw Error("ground truth: samples a pixel must be a square of 1.." + std::to_string(max_ground_truth_side));
+    // The sample range, checked (a range past the grid is refused, naming it) as the GPU host checks it.
+    const TruthRange range = truth_range(options);
     const int width = scene.kind_size.y, height = scene.kind_size.z, side = options.truth_side;
-    const int samples = side * side;
+    const int first = range.first, end = range.first + range.count;
     const Image& base = chain.levels.at(0);
     const glm::dvec4 background(scene.background);
     Image out = make_image(width, height);
@@ -72,12 +72,12 @@ Image reference_ground_truth(const SceneParams& scene, const MipChain& chain, co
         int y = int(row);
         for (int x = 0; x < width; ++x) {
             glm::dvec4 sum(0.0);
-            for (int i = 0; i < samples; ++i) {
+            for (int i = first; i < end; ++i) {
                 glm::dvec2 p = ground_truth_sample(x, y, i, side, options.pixel_filter);
                 PixelHit hit = reference_hit(scene, p.x, p.y);
                 sum += hit.hit ? reference_bilinear(base, hit.uv.x, hit.uv.y, options.wrap) : background;
             }
-            out.texels[row * size_t(width) + size_t(x)] = glm::vec4(sum / double(samples));
+            out.texels[row * size_t(width) + size_t(x)] = glm::vec4(sum / double(range.count));
         }
         progress.step();
     });

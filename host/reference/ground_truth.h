@@ -18,6 +18,9 @@ namespace tf {
 glm::dvec2 ground_truth_sample(int x, int y, int i, int side, PixelFilter filter);
 
 // The whole image on the CPU, in double, on every core; a progress bar on stderr when it is a terminal.
+// Each pixel is the mean of samples [options.truth_first, + truth_count) of the grid (truth_range(); count
+// 0 = the rest), so chunks weighted by their counts combine to the whole grid's mean. Throws tf::Error for
+// a side outside 1..max_ground_truth_side or a range past the grid.
 Image reference_ground_truth(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options);
 
 } // namespace tf

@@ -120,12 +120,16 @@ void bind_pass(VkCommandBuffer command_buffer, VkPipelineBindPoint bind_point, V
 PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, glm::vec4 sat_offset,
                                   glm::vec4 sat_scale, int gradients, int view)
 {
+    // Ground truth: the range resolved and checked here (a range past the grid is refused, naming it); the
+    // shader clamps it again, so whatever reaches it stays bounded.
+    const TruthRange truth = options.filter == Filter::ground_truth ? truth_range(options) : TruthRange{};
     return {int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max,
             count, options.band, options.probes, int32_t(options.aniso_shape), int32_t(options.taps),
             options.alpha, options.max_aniso, options.boxes, gradients,
             options.truth_side, int32_t(options.pixel_filter), view,
             {sat_offset.x, sat_offset.y, sat_offset.z, sat_offset.w},
-            {sat_scale.x, sat_scale.y, sat_scale.z, sat_scale.w}};
+            {sat_scale.x, sat_scale.y, sat_scale.z, sat_scale.w},
+            truth.first, truth.count, {0, 0}};
 }
 
 } // namespace tf

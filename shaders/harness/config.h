@@ -101,7 +101,9 @@
 #define HARNESS_PUSH_VIEW 60       // render: HARNESS_VIEW_*
 #define HARNESS_PUSH_SAT_OFFSET 64 // vec4: 16-byte aligned
 #define HARNESS_PUSH_SAT_SCALE 80
-#define HARNESS_PUSH_SIZE 96
+#define HARNESS_PUSH_TRUTH_FIRST 96  // ground-truth: the first sample of the range a frame takes (viewer)
+#define HARNESS_PUSH_TRUTH_COUNT 100 // ground-truth: samples in the range; 0 = every sample from the first on
+#define HARNESS_PUSH_SIZE 112        // padded to a multiple of 16, the block's alignment (vec4 members)
 
 // The scene's uniform block (std140 offsets in bytes; tf::SceneParams): ten vec4s of parameters, then
 // three corners a triangle of positions, then of uvs (vec4 arrays: 16-byte stride in std140).

@@ -57,6 +57,8 @@ layout(push_constant) uniform PushConstants {
     // (SatTable::offset, ::scale; see sat.glsl)
     layout(offset = HARNESS_PUSH_SAT_OFFSET) vec4 satOffset;
     layout(offset = HARNESS_PUSH_SAT_SCALE) vec4 satScale;
+    layout(offset = HARNESS_PUSH_TRUTH_FIRST) int truthFirst; // ground-truth: samples [first, first + count)
+    layout(offset = HARNESS_PUSH_TRUTH_COUNT) int truthCount; // of the grid; 0 = from first to the end
 } pc;
 
 vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)

@@ -3,6 +3,7 @@
 // supersampling: a side x side grid of strata jittered by an integer hash of (pixel, sample), the
 // pattern of host/reference/ground_truth.cpp (the CPU twin, in double). Box: uniform over the pixel. Gaussian:
 // sigma HARNESS_GROUND_TRUTH_SIGMA pixels about the centre, Box-Muller on the stratified unit square.
+// A frame may take a range of the samples (pc.truthFirst, pc.truthCount) and return their mean.
 // Needs scene.glsl and filter_select.glsl (u_texture, pc) included first.
 #ifndef HARNESS_GROUND_TRUTH_GLSL
 #define HARNESS_GROUND_TRUTH_GLSL
@@ -33,16 +34,23 @@ vec2 truth_sample(ivec2 pixel, int i, int side, int pixelFilter)
     return vec2(pixel) + 0.5 + r * vec2(cos(angle), sin(angle));
 }
 
+// The mean of samples [first, first + count) of the side x side grid (count 0: from first to the end), so
+// that the viewer can accumulate the truth a few samples a frame: chunk means weighted by their counts
+// give the mean of the whole grid. The range is clamped into the grid (at least one sample), so the loop
+// is bounded and the mean finite whatever the host sends; the host refuses a range past the grid.
 vec4 ground_truth(ivec2 pixel)
 {
     int side = clamp(pc.truthSide, 1, HARNESS_MAX_TRUTH_SIDE); // bounded loop whatever the host sends
+    int total = side * side;
+    int first = clamp(pc.truthFirst, 0, total - 1);
+    int count = pc.truthCount <= 0 ? total - first : min(pc.truthCount, total - first);
     tf_Sampler s = tf_sampler(pc.wrapMode);
     vec4 sum = vec4(0.0);
-    [[dont_unroll]] for (int i = 0; i < side * side; ++i) {
+    [[dont_unroll]] for (int i = first; i < first + count; ++i) {
         Hit h = scene_hit(scene, truth_sample(pixel, i, side, pc.pixelFilter));
         sum += h.hit ? tf_bilinear(u_texture, h.uv, s) : scene.background;
     }
-    return sum / float(side * side);
+    return sum / float(count);
 }
 
 #endif

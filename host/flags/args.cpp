@@ -1,4 +1,4 @@
-#include "cli/args.h"
+#include "flags/args.h"
 #include "texture/error.h"
 #include <cmath>
 #include <cstdio>

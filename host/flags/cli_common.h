@@ -1,6 +1,6 @@
 #pragma once
-// Flags and helpers shared by the CLI commands (render, sample, golden, info).
-#include "cli/args.h"
+// Flags and helpers shared by the CLI commands (render, sample, golden, info) and the viewer's script.
+#include "flags/args.h"
 #include "texture/error.h"
 #include "core/filter.h"
 #include "scene/scene.h"
