@@ -19,7 +19,8 @@ declare -A allowed=(
   [vulkan]="vulkan scene core texture harness"
   [bench]="bench vulkan reference io scene core texture harness"
   [flags]="flags vulkan io scene core texture"
-  [cli]="cli flags bench vulkan reference io scene core texture harness"
+  [view]="view flags bench vulkan reference io scene core texture harness"
+  [cli]="cli view flags bench vulkan reference io scene core texture harness"
 )
 # Layers that must stay free of the GPU and of image files.
 no_vulkan="texture core scene reference io"

@@ -1,0 +1,417 @@
+#include "view/view_state.h"
+#include "core/procedural.h"
+#include "flags/args.h"
+#include "flags/cli_common.h"
+#include "texture/error.h"
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <nlohmann/json.hpp>
+
+namespace tf {
+
+namespace {
+
+using nlohmann::json;
+
+std::string format_float(double value) // %.9g: every float comes back the same from strtod
+{
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.9g", value);
+    return text;
+}
+
+bool uses_lod(Filter f)
+{
+    switch (f) {
+    case Filter::trilinear:
+    case Filter::nearest_mip:
+    case Filter::bilinear_mip:
+    case Filter::brilinear:
+    case Filter::aniso:
+    case Filter::ewa:
+    case Filter::hw_trilinear:
+    case Filter::hw_aniso:
+        return true;
+    default:
+        return false; // level 0 only (nearest, bilinear, hw-nearest, hw-bilinear, sat, ground-truth), none
+    }
+}
+
+// Every sampler flag of sampler_options_from but --filter (first, always) and --backend (the viewer's is
+// Vulkan): its value written the way the flag reads it, and the filters it matters for.
+struct SamplerFlag {
+    const char* flag;
+    std::string (*value)(const SamplerOptions&);
+    bool (*matters)(Filter);
+};
+
+const SamplerFlag kSamplerFlags[] = {
+    {"--wrap", [](const SamplerOptions& o) { return to_string(o.wrap); }, [](Filter f) { return f != Filter::none; }},
+    {"--aniso", [](const SamplerOptions& o) { return std::to_string(o.aniso); },
+     [](Filter f) { return f == Filter::hw_aniso; }},
+    {"--band", [](const SamplerOptions& o) { return format_float(o.band); },
+     [](Filter f) { return f == Filter::brilinear; }},
+    {"--probes", [](const SamplerOptions& o) { return std::to_string(o.probes); },
+     [](Filter f) { return f == Filter::aniso; }},
+    {"--aniso-shape", [](const SamplerOptions& o) { return to_string(o.aniso_shape); },
+     [](Filter f) { return f == Filter::aniso; }},
+    {"--taps", [](const SamplerOptions& o) { return to_string(o.taps); },
+     [](Filter f) { return f == Filter::aniso || f == Filter::ewa; }},
+    {"--alpha", [](const SamplerOptions& o) { return format_float(o.alpha); }, [](Filter f) { return f == Filter::ewa; }},
+    {"--max-aniso", [](const SamplerOptions& o) { return format_float(o.max_aniso); },
+     [](Filter f) { return f == Filter::ewa; }},
+    {"--boxes", [](const SamplerOptions& o) { return std::to_string(o.boxes); },
+     [](Filter f) { return f == Filter::sat_assembly; }},
+    {"--pixel-filter", [](const SamplerOptions& o) { return to_string(o.pixel_filter); },
+     [](Filter f) { return f == Filter::ground_truth; }},
+    {"--spp", [](const SamplerOptions& o) { return std::to_string(o.truth_side * o.truth_side); },
+     [](Filter f) { return f == Filter::ground_truth; }},
+    {"--lod-bias", [](const SamplerOptions& o) { return format_float(o.lod_bias); }, uses_lod},
+    {"--lod-min", [](const SamplerOptions& o) { return format_float(o.lod_min); }, uses_lod},
+    {"--lod-max", [](const SamplerOptions& o) { return format_float(o.lod_max); }, uses_lod},
+};
+
+const char* const kDebugViews[] = {"color", "lod", "anisotropy", "fetches", "error"};
+
+std::string png_b_path(const std::string& png_path) // shot.png -> shot-b.png; the folder kept
+{
+    const size_t slash = png_path.find_last_of('/');
+    const size_t dot = png_path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+        return png_path + "-b";
+    return png_path.substr(0, dot) + "-b" + png_path.substr(dot);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Reading: each field checked where it is, the message naming the file and the field.
+
+struct Reader {
+    const std::string& name;
+
+    [[noreturn]] void fail(const std::string& field, const std::string& what) const
+    {
+        throw Error(name + ": " + field + ": " + what);
+    }
+    const json& member(const json& object, const std::string& field, const std::string& key) const
+    {
+        auto it = object.find(key);
+        if (it == object.end())
+            fail(field, "missing");
+        return *it;
+    }
+    std::string string(const json& value, const std::string& field) const
+    {
+        if (!value.is_string())
+            fail(field, "expected a string, got " + value.dump());
+        return value.get<std::string>();
+    }
+    double number(const json& value, const std::string& field) const
+    {
+        if (!value.is_number())
+            fail(field, "expected a number, got " + value.dump());
+        return value.get<double>();
+    }
+    int integer(const json& value, const std::string& field, int min, int max) const
+    {
+        if (!value.is_number_integer() || value.get<long long>() < min || value.get<long long>() > max)
+            fail(field, "expected a whole number in " + std::to_string(min) + ".." + std::to_string(max) + ", got " +
+                            value.dump());
+        return int(value.get<long long>());
+    }
+    void only(const json& object, const std::string& field, std::initializer_list<const char*> keys) const
+    {
+        if (!object.is_object())
+            fail(field, "expected an object, got " + object.dump());
+        for (auto it = object.begin(); it != object.end(); ++it) {
+            bool known = false;
+            for (const char* k : keys)
+                known = known || it.key() == k;
+            if (!known)
+                fail(field.empty() ? it.key() : field + "." + it.key(), "unknown field");
+        }
+    }
+    // `parse` run on `value`, its tf::Error put under the field's name.
+    template <typename Parse>
+    auto parsed(const std::string& field, Parse parse) const
+    {
+        try {
+            return parse();
+        } catch (const Error& e) {
+            fail(field, e.what());
+        }
+    }
+};
+
+// A flag's value from JSON: strings as they are, whole numbers in decimal, other numbers to the last digit.
+std::string flag_text(const Reader& reader, const json& value, const std::string& field)
+{
+    if (value.is_string())
+        return value.get<std::string>();
+    if (value.is_number_integer())
+        return std::to_string(value.get<long long>());
+    if (value.is_number()) {
+        char text[40];
+        std::snprintf(text, sizeof(text), "%.17g", value.get<double>());
+        return text;
+    }
+    reader.fail(field, "expected a string or a number, got " + value.dump());
+}
+
+std::string json_key(const char* flag) { return std::string(flag).substr(2); } // "--lod-bias" -> "lod-bias"
+
+SamplerOptions read_half(const Reader& reader, const json& object, const std::string& field)
+{
+    if (!object.is_object())
+        reader.fail(field, "expected an object, got " + object.dump());
+    // The CLI's own parser checks every value: first the filter alone, then each flag with it (so that a
+    // message names its field), then all together (--lod-min above --lod-max).
+    Args args;
+    args.command = field;
+    args.values["--filter"] = reader.string(reader.member(object, field + ".filter", "filter"), field + ".filter");
+    reader.parsed(field + ".filter", [&] { return sampler_options_from(args); });
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        if (it.key() == "filter")
+            continue;
+        const SamplerFlag* spec = nullptr;
+        for (const SamplerFlag& f : kSamplerFlags)
+            if (json_key(f.flag) == it.key())
+                spec = &f;
+        const std::string key = field + "." + it.key();
+        if (!spec)
+            reader.fail(key, "unknown field");
+        Args one;
+        one.command = key;
+        one.values["--filter"] = args.values["--filter"];
+        one.values[spec->flag] = flag_text(reader, it.value(), key);
+        reader.parsed(key, [&] { return sampler_options_from(one); });
+        args.values[spec->flag] = one.values[spec->flag];
+    }
+    return reader.parsed(field, [&] { return sampler_options_from(args); });
+}
+
+json write_half(const SamplerOptions& o)
+{
+    json half = {{"filter", to_string(o.filter)},
+                 {"wrap", to_string(o.wrap)},
+                 {"aniso", o.aniso},
+                 {"band", double(o.band)},
+                 {"probes", o.probes},
+                 {"aniso-shape", to_string(o.aniso_shape)},
+                 {"taps", to_string(o.taps)},
+                 {"alpha", double(o.alpha)},
+                 {"max-aniso", double(o.max_aniso)},
+                 {"boxes", o.boxes},
+                 {"pixel-filter", to_string(o.pixel_filter)},
+                 {"spp", o.truth_side * o.truth_side},
+                 {"lod-bias", double(o.lod_bias)},
+                 {"lod-min", double(o.lod_min)},
+                 {"lod-max", double(o.lod_max)}};
+    return half;
+}
+
+} // namespace
+
+const std::vector<std::string>& debug_view_names()
+{
+    static const std::vector<std::string> names(std::begin(kDebugViews), std::end(kDebugViews));
+    return names;
+}
+
+std::string check_debug_view(const std::string& name)
+{
+    for (const char* v : kDebugViews)
+        if (name == v)
+            return name;
+    throw Error("unknown view '" + name + "' (expected color, lod, anisotropy, fetches or error)");
+}
+
+std::array<double, 5> parse_camera_text(const std::string& text)
+{
+    std::array<double, 5> values{};
+    size_t start = 0;
+    for (size_t i = 0; i < values.size(); ++i) {
+        const size_t comma = text.find(',', start);
+        const bool last = i + 1 == values.size();
+        if ((comma == std::string::npos) != last)
+            throw Error("'" + text + "' is not X,Y,Z,YAW,PITCH (five numbers separated by commas)");
+        const std::string part = text.substr(start, last ? std::string::npos : comma - start);
+        char* end = nullptr;
+        values[i] = std::strtod(part.c_str(), &end);
+        if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(values[i]))
+            throw Error("'" + text + "': '" + part + "' is not a finite number (X,Y,Z,YAW,PITCH)");
+        start = comma + 1;
+    }
+    return values;
+}
+
+std::string shell_quote(const std::string& word)
+{
+    bool safe = !word.empty();
+    for (char c : word)
+        safe = safe && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                        std::string("_-+=./:,@%").find(c) != std::string::npos);
+    if (safe)
+        return word;
+    std::string quoted = "'";
+    for (char c : word)
+        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+std::vector<std::string> sampler_flag_words(const SamplerOptions& options)
+{
+    const SamplerOptions defaults;
+    std::vector<std::string> words = {"--filter", to_string(options.filter)};
+    for (const SamplerFlag& f : kSamplerFlags) {
+        const std::string value = f.value(options);
+        if (f.matters(options.filter) || value != f.value(defaults))
+            words.insert(words.end(), {f.flag, value});
+    }
+    return words;
+}
+
+std::vector<std::string> render_flag_words(const ViewState& state, const ViewHalf& half)
+{
+    const TextureSource defaults;
+    std::vector<std::string> words = {"--scene", to_string(state.scene), "--texture", state.texture.name_or_path};
+    if (is_procedural(state.texture.name_or_path) || state.texture.procedural_size != defaults.procedural_size)
+        words.insert(words.end(), {"--texture-size", std::to_string(state.texture.procedural_size)});
+    if (state.texture.color == ColorSpace::linear)
+        words.push_back("--linear");
+    if (state.texture.memory_budget != 0)
+        words.insert(words.end(), {"--memory-budget", std::to_string(state.texture.memory_budget)});
+    const std::vector<std::string> sampler = sampler_flag_words(half.options);
+    words.insert(words.end(), sampler.begin(), sampler.end());
+    words.insert(words.end(), {"--size", std::to_string(state.width) + "x" + std::to_string(state.height), "--stage",
+                               to_string(state.render.stage), "--derivatives", to_string(state.render.gradients)});
+    if (!state.camera.empty())
+        words.insert(words.end(), {"--camera", state.camera});
+    if (state.frame != 0)
+        words.insert(words.end(), {"--frame", std::to_string(state.frame)});
+    if (state.view != "color")
+        words.insert(words.end(), {"--view", state.view});
+    return words;
+}
+
+std::vector<std::string> render_command_lines(const ViewState& state, const std::string& png_path)
+{
+    auto line = [&](const ViewHalf& half, const std::string& out) {
+        std::string text = "texfilter render";
+        for (const std::string& word : render_flag_words(state, half))
+            text += " " + shell_quote(word);
+        return text + " -o " + shell_quote(out);
+    };
+    std::vector<std::string> lines = {line(state.a, png_path)};
+    if (state.b)
+        lines.push_back(line(*state.b, png_b_path(png_path)));
+    return lines;
+}
+
+std::string state_to_json(const ViewState& state)
+{
+    json j = {{"scene", to_string(state.scene)},
+              {"texture",
+               {{"name", state.texture.name_or_path},
+                {"size", state.texture.procedural_size},
+                {"linear", state.texture.color == ColorSpace::linear},
+                {"memory-budget", state.texture.memory_budget}}},
+              {"render", {{"stage", to_string(state.render.stage)}, {"derivatives", to_string(state.render.gradients)}}},
+              {"width", state.width},
+              {"height", state.height},
+              {"a", write_half(state.a.options)},
+              {"b", state.b ? write_half(state.b->options) : json(nullptr)},
+              {"divider", double(state.divider)},
+              {"camera", state.camera},
+              {"frame", state.frame},
+              {"view", state.view}};
+    return j.dump(2) + "\n";
+}
+
+ViewState state_from_json(const std::string& text, const std::string& name)
+{
+    json j;
+    try {
+        j = json::parse(text);
+    } catch (const json::parse_error& e) {
+        throw Error(name + ": not valid JSON: " + e.what());
+    }
+    const Reader r{name};
+    if (!j.is_object())
+        throw Error(name + ": expected a JSON object (a saved viewer state), got " + j.dump().substr(0, 40));
+    r.only(j, "", {"scene", "texture", "render", "width", "height", "a", "b", "divider", "camera", "frame", "view"});
+
+    ViewState s;
+    s.scene = r.parsed("scene", [&] { return parse_scene(r.string(r.member(j, "scene", "scene"), "scene")); });
+
+    const json& texture = r.member(j, "texture", "texture");
+    r.only(texture, "texture", {"name", "size", "linear", "memory-budget"});
+    s.texture.name_or_path = r.string(r.member(texture, "texture.name", "name"), "texture.name");
+    if (s.texture.name_or_path.empty())
+        r.fail("texture.name", "empty (a procedural name or an image file)");
+    if (texture.contains("size"))
+        s.texture.procedural_size = r.integer(texture["size"], "texture.size", 1, max_texture_dimension);
+    if (texture.contains("linear")) {
+        if (!texture["linear"].is_boolean())
+            r.fail("texture.linear", "expected true or false, got " + texture["linear"].dump());
+        s.texture.color = texture["linear"].get<bool>() ? ColorSpace::linear : ColorSpace::automatic;
+    }
+    if (texture.contains("memory-budget")) {
+        const json& budget = texture["memory-budget"];
+        if (!budget.is_number_unsigned() && !(budget.is_number_integer() && budget.get<long long>() >= 0))
+            r.fail("texture.memory-budget", "expected a whole number of bytes (0: the default), got " + budget.dump());
+        s.texture.memory_budget = budget.get<uint64_t>();
+    }
+
+    const json& render = r.member(j, "render", "render");
+    r.only(render, "render", {"stage", "derivatives"});
+    const Stage stage = r.parsed("render.stage", [&] {
+        return parse_stage(render.contains("stage") ? r.string(render["stage"], "render.stage") : "fragment");
+    });
+    const Gradients gradients = r.parsed("render.derivatives", [&] {
+        return parse_gradients(render.contains("derivatives") ? r.string(render["derivatives"], "render.derivatives")
+                                                              : "fine");
+    });
+    s.render = r.parsed("render", [&] { return make_render_options(s.scene, stage, gradients); });
+
+    // Sides as `texfilter render --size` takes them, so that the saved frame can be rendered again.
+    s.width = r.integer(r.member(j, "width", "width"), "width", 2, 8192);
+    s.height = r.integer(r.member(j, "height", "height"), "height", 2, 8192);
+    if (s.width % 2 || s.height % 2)
+        r.fail(s.width % 2 ? "width" : "height", "must be even (derivatives come from 2x2 quads)");
+
+    s.a.options = read_half(r, r.member(j, "a", "a"), "a");
+    if (j.contains("b") && !j["b"].is_null())
+        s.b = ViewHalf{read_half(r, j["b"], "b")};
+    if (j.contains("divider")) {
+        const double divider = r.number(j["divider"], "divider");
+        if (!(divider >= 0.0 && divider <= 1.0))
+            r.fail("divider", "expected a number in 0..1, got " + j["divider"].dump());
+        s.divider = float(divider);
+    }
+    if (j.contains("camera")) {
+        s.camera = r.string(j["camera"], "camera");
+        if (!s.camera.empty())
+            r.parsed("camera", [&] { return parse_camera_text(s.camera); });
+    }
+    if (j.contains("frame"))
+        s.frame = r.integer(j["frame"], "frame", 0, 1 << 30);
+    if (j.contains("view"))
+        s.view = r.parsed("view", [&] { return check_debug_view(r.string(j["view"], "view")); });
+    return s;
+}
+
+ViewState read_state_file(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw Error(path + ": cannot open the viewer state");
+    std::stringstream text;
+    text << in.rdbuf();
+    return state_from_json(text.str(), path);
+}
+
+} // namespace tf

@@ -1,0 +1,70 @@
+#pragma once
+// What the viewer shows, as plain data: scene, texture, render options, window size, filter A and the
+// optional filter B of split view, the camera and the debug view. It is saved beside a screenshot (JSON,
+// `texfilter view --state FILE` loads it back) and turned into the `texfilter render` command lines that
+// reproduce the frame offscreen.
+//
+// Use:     ViewState s; s.texture.name_or_path = "checker"; s.a.options.filter = Filter::ewa;
+//          for (const std::string& line : render_command_lines(s, "shot.png")) ...; // shot.png, shot-b.png
+//          ViewState back = state_from_json(state_to_json(s), "shot.json");
+// Options: a flag goes on the command line when it matters for the half's filter (its exact value, floats
+//          %.9g so they round-trip) or when it differs from the CLI's default; the ground truth's sample range
+//          (truth_first, truth_count) is the viewer's progressive state and never written: the line renders
+//          the whole grid, what the accumulation converges to.
+// Cost:    string building; no device, no files.
+#include "core/filter.h"
+#include "io/texture_source.h"
+#include "scene/scene.h"
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tf {
+
+struct ViewHalf {
+    SamplerOptions options; // filter A or B
+};
+
+struct ViewState {
+    SceneKind scene = SceneKind::plane;
+    TextureSource texture;
+    RenderOptions render;
+    int width = 1280, height = 720;
+    ViewHalf a;
+    std::optional<ViewHalf> b; // split view
+    float divider = 0.5f;      // where A ends, 0..1 of the width
+    std::string camera;        // "" = the scene's own; else "X,Y,Z,YAW,PITCH" (another engineer writes tf::Camera)
+    int frame = 0;             // the benchmark camera path's frame
+    std::string view = "color"; // another engineer adds DebugView; kept a string here
+};
+
+// `texfilter render --scene ... -o PNG` for A, and with B a second line writing PNG's stem + "-b" (shot.png ->
+// shot-b.png), each word shell-quoted where it needs it.
+std::vector<std::string> render_command_lines(const ViewState& state, const std::string& png_path);
+
+// The render flags (without "texfilter render" and -o) of one half, as separate words, unquoted.
+std::vector<std::string> render_flag_words(const ViewState& state, const ViewHalf& half);
+
+// The sampler flags of `options` as words ("--filter", "ewa", "--alpha", "2", ...): see Options above.
+std::vector<std::string> sampler_flag_words(const SamplerOptions& options);
+
+// One word for a POSIX shell: as it is when it holds only safe characters, else in single quotes.
+std::string shell_quote(const std::string& word);
+
+// The debug views by name (color, lod, anisotropy, fetches, error); check_debug_view returns `name` or
+// throws tf::Error listing them.
+const std::vector<std::string>& debug_view_names();
+std::string check_debug_view(const std::string& name);
+
+// "X,Y,Z,YAW,PITCH": five finite numbers. Throws tf::Error saying what is wrong.
+std::array<double, 5> parse_camera_text(const std::string& text);
+
+// JSON through nlohmann-json. state_from_json checks every field (the sampler options with the CLI's own
+// parser) and throws tf::Error naming `name` and the field ("shot.json: a.band: ...").
+std::string state_to_json(const ViewState& state);
+ViewState state_from_json(const std::string& text, const std::string& name);
+// state_from_json of a file (`texfilter view --state FILE`); a file that cannot be read is an error naming it.
+ViewState read_state_file(const std::string& path);
+
+} // namespace tf

@@ -1,0 +1,262 @@
+// The viewer's script (`texfilter view --script FILE`, host/view/script.h): every action parses to the
+// values it names, comments and blank lines are skipped with the line numbers kept, every bad line is an
+// error naming FILE:LINE and what is wrong, and the bounds are where the contract puts them. CPU only.
+#include "support.h"
+#include "view/script.h"
+#include <filesystem>
+#include <fstream>
+
+using namespace tf;
+
+namespace {
+
+// The tf::Error message of parse_script(text), "" if it parsed.
+std::string error_of(const std::string& text, const std::string& name = "views.txt")
+{
+    try {
+        parse_script(text, name);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// `line` at line 3 of a script whose first two lines are good: the error must name views.txt:3 and `part`.
+void check_bad_line(const std::string& line, const std::string& part, const char* file, int at)
+{
+    const std::string message = error_of("scene plane\n# a comment\n" + line + "\nquit\n");
+    test::check(contains(message, "views.txt:3: ") && contains(message, part), file, at,
+                "'" + line + "' is refused at views.txt:3 naming '" + part + "'", "message: " + message);
+}
+#define CHECK_BAD_LINE(line, part) check_bad_line(line, part, __FILE__, __LINE__)
+
+void check_good_line(const std::string& line, const char* file, int at)
+{
+    const std::string message = error_of(line + "\n");
+    test::check(message.empty(), file, at, "'" + line + "' is accepted", "message: " + message);
+}
+#define CHECK_GOOD_LINE(line) check_good_line(line, __FILE__, __LINE__)
+
+const char* const kEveryAction = R"(# every action once
+scene tunnel
+texture checker --texture-size 64 --linear
+filter ewa --alpha 3 --max-aniso 8 --taps hardware
+compare aniso --probes 4 --aniso-shape feline
+resize 640x480
+wait 10
+
+camera reset
+camera set 1.5,-2,0.25,90,-10
+camera fly 0.5 0 -1
+camera turn 15 -5
+camera orbit -30 2.5
+animate on
+frame 12
+view lod
+truth on
+divider 0.25
+loupe 100 50 8
+loupe off
+cursor 320 240
+minimize
+restore
+hold 500
+stage compute
+derivatives ray
+screenshot out/a.png   # the scene as shown
+screenshot-ui out/ui.png
+compare off
+quit
+)";
+
+} // namespace
+
+TEST_SUITE_BEGIN("reference");
+
+// 1. Every action of the contract, in one script: verbs, line numbers and the typed values.
+TEST_CASE("every-action")
+{
+    const std::vector<ScriptAction> a = parse_script(kEveryAction, "every.txt");
+    CHECK_EQ(a.size(), 28);
+    if (a.size() != 28)
+        return;
+    CHECK(a[0].verb == "scene" && a[0].line == 2 && script_scene(a[0]) == SceneKind::tunnel);
+    const TextureSource t = script_texture(a[1]);
+    CHECK(t.name_or_path == "checker" && t.procedural_size == 64 && t.color == ColorSpace::linear);
+    const SamplerOptions f = script_sampler(a[2]);
+    CHECK(f.filter == Filter::ewa && f.alpha == 3.0f && f.max_aniso == 8.0f && f.taps == Taps::hardware);
+    const SamplerOptions c = script_sampler(a[3]);
+    CHECK(c.filter == Filter::aniso && c.probes == 4 && c.aniso_shape == AnisoShape::feline);
+    CHECK(!script_off(a[3]));
+    CHECK(script_size(a[4]) == std::make_pair(640, 480));
+    CHECK(script_count(a[5]) == 10);
+    CHECK(a[6].verb == "camera" && a[6].line == 9 && script_word(a[6]) == "reset"); // line 8 was blank
+    const std::array<double, 5> pose = script_camera_pose(a[7]);
+    CHECK(pose == (std::array<double, 5>{1.5, -2, 0.25, 90, -10}));
+    CHECK(script_camera_motion(a[8]) == (std::vector<double>{0.5, 0, -1}));
+    CHECK(script_word(a[9]) == "turn" && script_camera_motion(a[9]) == (std::vector<double>{15, -5}));
+    CHECK(script_word(a[10]) == "orbit" && script_camera_motion(a[10]) == (std::vector<double>{-30, 2.5}));
+    CHECK(a[11].verb == "animate" && !script_off(a[11]));
+    CHECK(script_count(a[12]) == 12);
+    CHECK(script_word(a[13]) == "lod");
+    CHECK(a[14].verb == "truth" && !script_off(a[14]));
+    CHECK_EQ(script_divider(a[15]), 0.25);
+    CHECK(script_loupe(a[16]) == (std::array<int, 3>{100, 50, 8}));
+    CHECK(script_off(a[17]));
+    CHECK(script_cursor(a[18]) == (std::array<int, 2>{320, 240}));
+    CHECK(a[19].verb == "minimize" && a[20].verb == "restore" && a[19].words.empty());
+    CHECK(script_count(a[21]) == 500);
+    CHECK(script_stage(a[22]) == Stage::compute);
+    CHECK(script_gradients(a[23]) == Gradients::ray);
+    CHECK(script_path(a[24]) == "out/a.png" && a[24].words.size() == 1); // the trailing comment dropped
+    CHECK(script_path(a[25]) == "out/ui.png" && a[25].verb == "screenshot-ui");
+    CHECK(a[26].verb == "compare" && script_off(a[26]));
+    CHECK(a[27].verb == "quit" && a[27].line == 30);
+}
+
+// 2. Comments, blank lines, tabs and CRLF line ends: skipped or split, the line numbers those of the file.
+TEST_CASE("comments-and-lines")
+{
+    const std::vector<ScriptAction> a =
+        parse_script("\r\n   # indented comment\n\n\tfilter\tbilinear   --wrap  clamp\r\n#\nwait 3 # three frames\r\n",
+                     "crlf.txt");
+    CHECK_EQ(a.size(), 2);
+    if (a.size() != 2)
+        return;
+    CHECK(a[0].line == 4 && a[0].verb == "filter" && a[0].words == (std::vector<std::string>{"bilinear", "--wrap", "clamp"}));
+    CHECK(script_sampler(a[0]).wrap == Wrap::clamp);
+    CHECK(a[1].line == 6 && a[1].words == std::vector<std::string>{"3"});
+    CHECK(parse_script("", "empty.txt").empty());
+    CHECK(parse_script("# only a comment\n\n", "empty.txt").empty());
+}
+
+// 3. Each bad line is refused at its own line, naming what is wrong.
+TEST_CASE("errors-name-the-line")
+{
+    CHECK_BAD_LINE("fly away", "unknown action 'fly'");
+    CHECK_BAD_LINE("scene nowhere", "nowhere");
+    CHECK_BAD_LINE("scene", "scene S");
+    CHECK_BAD_LINE("texture", "missing");
+    CHECK_BAD_LINE("texture --linear", "missing its first word before any flag (T|PATH)");
+    CHECK_BAD_LINE("filter --band 0.5", "missing its first word before any flag (F)");
+    CHECK_BAD_LINE("texture checker --texture-size 0", "--texture-size");
+    CHECK_BAD_LINE("texture checker --filter ewa", "unknown flag --filter");
+    CHECK_BAD_LINE("filter", "missing");
+    CHECK_BAD_LINE("filter blurry", "blurry");
+    CHECK_BAD_LINE("filter ewa --alpha 99", "--alpha");
+    CHECK_BAD_LINE("filter ewa --bogus 1", "unknown flag --bogus");
+    CHECK_BAD_LINE("filter ewa --backend reference", "unknown flag --backend"); // the viewer draws with Vulkan
+    CHECK_BAD_LINE("filter ground-truth --spp 50", "square");
+    CHECK_BAD_LINE("filter trilinear --lod-min 3 --lod-max 1", "--lod-min");
+    CHECK_BAD_LINE("filter ewa --alpha", "needs a value");
+    CHECK_BAD_LINE("compare bogus", "bogus");
+    CHECK_BAD_LINE("compare off now", "unexpected argument 'now'"); // not the single word off
+    CHECK_BAD_LINE("resize 640x", "640x");
+    CHECK_BAD_LINE("resize 641x480", "even");
+    CHECK_BAD_LINE("resize 640 480", "resize WxH");
+    CHECK_BAD_LINE("wait", "wait N");
+    CHECK_BAD_LINE("wait 1.5", "'1.5' is not a whole number");
+    CHECK_BAD_LINE("screenshot out.jpg", ".png");
+    CHECK_BAD_LINE("screenshot", "PATH.png");
+    CHECK_BAD_LINE("screenshot-ui a.png b.png", "PATH.png");
+    CHECK_BAD_LINE("quit now", "quit");
+    CHECK_BAD_LINE("camera", "reset, set, fly, turn or orbit");
+    CHECK_BAD_LINE("camera zoom 2", "unknown camera action 'zoom'");
+    CHECK_BAD_LINE("camera reset now", "camera reset");
+    CHECK_BAD_LINE("camera set 1,2,3,4", "X,Y,Z,YAW,PITCH");
+    CHECK_BAD_LINE("camera set 1,2,3,4,nan", "'nan' is not a finite number");
+    CHECK_BAD_LINE("camera set 1 2 3 4 5", "camera set X,Y,Z,YAW,PITCH");
+    CHECK_BAD_LINE("camera fly 1 2", "camera fly DX DY DZ");
+    CHECK_BAD_LINE("camera turn 1 x", "'x' is not a finite number");
+    CHECK_BAD_LINE("camera orbit 1 inf", "'inf' is not a finite number");
+    CHECK_BAD_LINE("animate maybe", "on or off");
+    CHECK_BAD_LINE("truth", "on|off");
+    CHECK_BAD_LINE("view depth", "unknown view 'depth'");
+    CHECK_BAD_LINE("divider half", "'half' is not a finite number");
+    CHECK_BAD_LINE("loupe 10 10", "loupe X Y ZOOM");
+    CHECK_BAD_LINE("loupe 10 10 2.5", "zoom '2.5'");
+    CHECK_BAD_LINE("cursor 1", "cursor X Y");
+    CHECK_BAD_LINE("cursor 1 y", "pixel y 'y'");
+    CHECK_BAD_LINE("minimize now", "minimize");
+    CHECK_BAD_LINE("restore 1", "restore");
+    CHECK_BAD_LINE("stage vertex", "fragment|compute");
+    CHECK_BAD_LINE("derivatives fast", "fine|coarse|ray");
+    CHECK_BAD_LINE("frame x", "frame 'x'");
+
+    // Nothing may follow quit: it would never run.
+    const std::string after = error_of("wait 1\nquit\n\nwait 2\n");
+    CHECK(contains(after, "views.txt:4: ") && contains(after, "after quit (line 2)"), after);
+    // The first bad line is the one named, and the file's name is what was given.
+    const std::string first = error_of("wait x\nwait y\n", "/tmp/other.script");
+    CHECK(contains(first, "/tmp/other.script:1: wait: "), first);
+}
+
+// 4. The bounds: each limit accepted, one past it refused.
+TEST_CASE("bounds")
+{
+    CHECK_GOOD_LINE("wait 0");
+    CHECK_GOOD_LINE("wait 100000");
+    CHECK_BAD_LINE("wait 100001", "0..100000");
+    CHECK_BAD_LINE("wait -1", "0..100000");
+    CHECK_GOOD_LINE("hold 0");
+    CHECK_GOOD_LINE("hold 60000");
+    CHECK_BAD_LINE("hold 60001", "0..60000");
+    CHECK_GOOD_LINE("divider 0");
+    CHECK_GOOD_LINE("divider 1");
+    CHECK_BAD_LINE("divider 1.0001", "0..1");
+    CHECK_BAD_LINE("divider -0.0001", "0..1");
+    CHECK_GOOD_LINE("loupe 0 0 1");
+    CHECK_GOOD_LINE("loupe 65535 65535 64");
+    CHECK_BAD_LINE("loupe 0 0 0", "1..64");
+    CHECK_BAD_LINE("loupe 0 0 65", "1..64");
+    CHECK_BAD_LINE("loupe -1 0 4", "pixel x '-1'");
+    CHECK_GOOD_LINE("resize 2x2");
+    CHECK_GOOD_LINE("resize 8192x8192");
+    CHECK_BAD_LINE("resize 8194x8", "[2, 8192]");
+    CHECK_BAD_LINE("resize 0x8", "[2, 8192]");
+    CHECK_GOOD_LINE("frame 0");
+    CHECK_GOOD_LINE("frame 1073741824");
+    CHECK_BAD_LINE("frame -1", "0..1073741824");
+    CHECK_GOOD_LINE("texture grid --texture-size 16384");
+    CHECK_BAD_LINE("texture grid --texture-size 16385", "--texture-size");
+    CHECK_GOOD_LINE("filter aniso --probes 16");
+    CHECK_BAD_LINE("filter aniso --probes 17", "--probes");
+    CHECK_GOOD_LINE("filter ground-truth --spp 4096 --pixel-filter gaussian");
+    CHECK_BAD_LINE("filter ground-truth --spp 4225", "--spp");
+}
+
+// 5. From a file: the same actions; a missing file names its path.
+TEST_CASE("file")
+{
+    const std::filesystem::path work = test::make_work_dir("view-script");
+    const std::string path = (work / "every.txt").string();
+    std::ofstream(path) << kEveryAction;
+    const std::vector<ScriptAction> from_file = read_script(path), from_text = parse_script(kEveryAction, path);
+    CHECK_EQ(from_file.size(), from_text.size());
+    for (size_t i = 0; i < std::min(from_file.size(), from_text.size()); ++i)
+        CHECK(from_file[i].line == from_text[i].line && from_file[i].verb == from_text[i].verb &&
+                  from_file[i].words == from_text[i].words,
+              "action " + std::to_string(i));
+    const std::string missing = (work / "missing.txt").string();
+    CHECK_THROWS_WITH(read_script(missing), missing + ": cannot open the script");
+    std::ofstream(work / "bad.txt") << "wait 1\nwiat 2\n";
+    CHECK_THROWS_WITH(read_script((work / "bad.txt").string()), (work / "bad.txt").string() + ":2: unknown action 'wiat'");
+}
+
+// 6. A typed helper on an action of another verb is an error naming the line, not a wrong value.
+TEST_CASE("helpers-check-the-verb")
+{
+    const std::vector<ScriptAction> a = parse_script("wait 5\ncamera fly 1 2 3\ncamera reset\n", "h.txt");
+    CHECK_EQ(a.size(), 3);
+    if (a.size() != 3)
+        return;
+    CHECK_THROWS_WITH(script_sampler(a[0]), "script line 1: script_sampler does not apply to 'wait'");
+    CHECK_THROWS_WITH(script_size(a[0]), "script line 1");
+    CHECK_THROWS_WITH(script_camera_pose(a[1]), "script line 2: camera: not 'camera set");
+    CHECK_THROWS_WITH(script_camera_motion(a[2]), "script line 3: camera: not 'camera fly'");
+    CHECK_THROWS_WITH(script_off(a[0]), "script_off does not apply to 'wait'");
+}
+
+TEST_SUITE_END();
