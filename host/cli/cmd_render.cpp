@@ -6,6 +6,7 @@
 #include "io/output_path.h"
 #include "io/pfm.h"
 #include "reference/render.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
 #include <cstdio>
 #include <optional>
@@ -21,6 +22,9 @@ int run_render(const std::vector<std::string>& argv)
          {{"--size", "WxH", "image size, even sides (default 256x256)"},
           {"--stage", "S", "fragment (default) or compute (2x2 quads from subgroup quad operations)"},
           {"--derivatives", "D", "fine (default), coarse (one pair a quad) or ray (ray differentials)"},
+          {"--frame", "N", "frame N (0..1000000, default 0) of the benchmark's camera path: uv slides N x (0.37, 0.23) texels"},
+          {"--camera", "X,Y,Z,YAW,PITCH", "camera position and yaw/pitch (degrees, relative to the scene's own view), "
+                                          "as texfilter view prints it; applied after --frame"},
           {"-o", "OUT", "output .png (8-bit sRGB), .exr (linear half) or .pfm (linear float, any build)"}},
          device_flags()});
     Args args = parse_args("render", argv, specs, 0);
@@ -36,6 +40,10 @@ int run_render(const std::vector<std::string>& argv)
     RenderOptions render = make_render_options(kind, parse_flag(args, "--stage", "fragment", parse_stage),
                                                parse_flag(args, "--derivatives", "fine", parse_gradients));
     SamplerOptions options = sampler_options_from(args);
+    const int frame = args.get_int("--frame", 0, 0, 1000000);
+    std::optional<Camera> camera;
+    if (args.has("--camera"))
+        camera = parse_flag(args, "--camera", "", parse_camera);
     Backend backend = backend_from(args);
     auto [width, height] = parse_size("--size", args.get("--size", "256x256"), 2, 8192);
     if (width % 2 || height % 2)
@@ -60,7 +68,10 @@ int run_render(const std::vector<std::string>& argv)
         size = {chain->levels[0].width, chain->levels[0].height};
     }
     GpuSession* gpu = device.gpu.get();
-    SceneParams scene = make_scene(kind, width, height, size.width);
+    // make_scene, then the camera path's frame, then the camera (scene/camera.h: relative to the scene's own view).
+    SceneParams scene = scene_at_frame(make_scene(kind, width, height, size.width), frame, size.width);
+    if (camera)
+        scene = with_camera(scene, *camera);
     auto draw = [&](const GpuTexture& t) { return gpu_render(gpu->context, t, scene, options, render); };
 
     Image image;
