@@ -241,6 +241,19 @@ bad_flag_values() {
         "$TEXFILTER" render --scene mesh --texture checker --filter nearest "${REF[@]}" --stage compute -o out.png
     expect_error "mesh with ray differentials" "ray differentials need a ray-cast scene" out.png -- \
         "$TEXFILTER" render --scene mesh --texture checker --filter nearest "${REF[@]}" --derivatives ray -o out.png
+    # The camera (X,Y,Z,YAW,PITCH) and the camera path's frame.
+    expect_error "--camera with 4 numbers" "--camera: expected 5 comma-separated numbers" out.png -- \
+        "${RENDER[@]}" --camera 0,0,0,0 -o out.png
+    expect_error "--camera with a word" "--camera: camera YAW 'left' is not a number" out.png -- \
+        "${RENDER[@]}" --camera 0,0,0,left,0 -o out.png
+    expect_error "--camera nan" "--camera: camera X is nan" out.png -- "${RENDER[@]}" --camera nan,0,0,0,0 -o out.png
+    expect_error "--camera pitch 90" "--camera: camera PITCH = 90 degrees" out.png -- \
+        "${RENDER[@]}" --camera 0,0,0,0,90 -o out.png
+    expect_error "--camera 1e9 away" "--camera: camera Z = 1000000000 is too large" out.png -- \
+        "${RENDER[@]}" --camera 0,0,1e9,0,0 -o out.png
+    expect_error "--frame -1" --frame out.png -- "${RENDER[@]}" --frame -1 -o out.png
+    expect_error "--frame 1000001" --frame out.png -- "${RENDER[@]}" --frame 1000001 -o out.png
+    expect_error "--frame 2.5" --frame out.png -- "${RENDER[@]}" --frame 2.5 -o out.png
 }
 
 bad_outputs() {

@@ -7,6 +7,7 @@
 #include "io/pfm.h"
 #include "reference/debug_view.h"
 #include "reference/render.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
 #include <cstdio>
 #include <optional>
@@ -24,6 +25,9 @@ int run_render(const std::vector<std::string>& argv)
           {"--derivatives", "D", "fine (default), coarse (one pair a quad) or ray (ray differentials)"},
           {"--view", "V", "color (default), lod, anisotropy, fetches (a heat map 0..128) or data (linear floats: "
                           "R LOD, G anisotropy, B fetches + hardware lookups; write .pfm or .exr)"},
+          {"--frame", "N", "frame N (0..1000000, default 0) of the benchmark's camera path: uv slides N x (0.37, 0.23) texels"},
+          {"--camera", "X,Y,Z,YAW,PITCH", "camera position and yaw/pitch (degrees, relative to the scene's own view), "
+                                          "as texfilter view prints it; applied after --frame"},
           {"-o", "OUT", "output .png (8-bit sRGB), .exr (linear half) or .pfm (linear float, any build)"}},
          device_flags()});
     Args args = parse_args("render", argv, specs, 0);
@@ -41,6 +45,10 @@ int run_render(const std::vector<std::string>& argv)
     render.view = parse_flag(args, "--view", "color", parse_view);
     SamplerOptions options = sampler_options_from(args);
     check_view(options.filter, render.view); // before any work
+    const int frame = args.get_int("--frame", 0, 0, 1000000);
+    std::optional<Camera> camera;
+    if (args.has("--camera"))
+        camera = parse_flag(args, "--camera", "", parse_camera);
     Backend backend = backend_from(args);
     if (backend == Backend::reference)
         check_reference_view(render.view);
@@ -69,7 +77,10 @@ int run_render(const std::vector<std::string>& argv)
         size = {chain->levels[0].width, chain->levels[0].height};
     }
     GpuSession* gpu = device.gpu.get();
-    SceneParams scene = make_scene(kind, width, height, size.width);
+    // make_scene, then the camera path's frame, then the camera (scene/camera.h: relative to the scene's own view).
+    SceneParams scene = scene_at_frame(make_scene(kind, width, height, size.width), frame, size.width);
+    if (camera)
+        scene = with_camera(scene, *camera);
     auto draw = [&](const GpuTexture& t) { return gpu_render(gpu->context, t, scene, options, render); };
 
     Image image;
