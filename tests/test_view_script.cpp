@@ -67,6 +67,7 @@ stage compute
 derivatives ray
 screenshot out/a.png   # the scene as shown
 screenshot-ui out/ui.png
+ui off
 compare off
 quit
 )";
@@ -79,8 +80,8 @@ TEST_SUITE_BEGIN("reference");
 TEST_CASE("every-action")
 {
     const std::vector<ScriptAction> a = parse_script(kEveryAction, "every.txt");
-    CHECK_EQ(a.size(), 28);
-    if (a.size() != 28)
+    CHECK_EQ(a.size(), 29);
+    if (a.size() != 29)
         return;
     CHECK(a[0].verb == "scene" && a[0].line == 2 && script_scene(a[0]) == SceneKind::tunnel);
     const TextureSource t = script_texture(a[1]);
@@ -112,8 +113,12 @@ TEST_CASE("every-action")
     CHECK(script_gradients(a[23]) == Gradients::ray);
     CHECK(script_path(a[24]) == "out/a.png" && a[24].words.size() == 1); // the trailing comment dropped
     CHECK(script_path(a[25]) == "out/ui.png" && a[25].verb == "screenshot-ui");
-    CHECK(a[26].verb == "compare" && script_off(a[26]));
-    CHECK(a[27].verb == "quit" && a[27].line == 30);
+    CHECK(a[26].verb == "ui" && script_off(a[26]));
+    CHECK(a[27].verb == "compare" && script_off(a[27]));
+    CHECK(a[28].verb == "quit" && a[28].line == 31);
+    // close ends a script as quit does (it is the window's close button): nothing may follow it.
+    CHECK(parse_script("wait 1\nclose\n", "close.txt").back().verb == "close");
+    CHECK_THROWS_WITH(parse_script("close\nwait 1\n", "close.txt"), "close.txt:2: 'wait' after close");
 }
 
 // 2. Comments, blank lines, tabs and CRLF line ends: skipped or split, the line numbers those of the file.

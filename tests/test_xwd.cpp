@@ -19,6 +19,7 @@ struct XwdLayout {
     std::uint32_t byte_order = 0; // 0 LSBFirst, 1 MSBFirst
     std::uint32_t red_mask = 0xff0000, green_mask = 0xff00, blue_mask = 0xff;
     std::uint32_t padding = 0;    // bytes after each row
+    std::uint32_t pixel_bytes = 4; // 3: packed 24 bits, as xwd writes a root composed of several visuals
     std::uint32_t ncolors = 0;
     std::string window_name = "test-window";
     std::uint32_t overrides[xwd_field_count] = {}; // nonzero: the header field as given
@@ -59,8 +60,8 @@ std::vector<std::uint8_t> make_xwd(const XwdLayout& l, glm::u8vec3 (*colour)(int
     h[xwd_bitmap_unit] = 32;
     h[xwd_bitmap_bit_order] = l.byte_order;
     h[xwd_bitmap_pad] = 32;
-    h[xwd_bits_per_pixel] = 32;
-    h[xwd_bytes_per_line] = std::uint32_t(4 * l.width) + l.padding;
+    h[xwd_bits_per_pixel] = 8 * l.pixel_bytes;
+    h[xwd_bytes_per_line] = std::uint32_t(l.pixel_bytes * l.width) + l.padding;
     h[xwd_visual_class] = 4;
     h[xwd_red_mask] = l.red_mask;
     h[xwd_green_mask] = l.green_mask;
@@ -83,7 +84,13 @@ std::vector<std::uint8_t> make_xwd(const XwdLayout& l, glm::u8vec3 (*colour)(int
             out.push_back(std::uint8_t(0xa5)); // colour entries: skipped for TrueColor
     for (int y = 0; y < l.height; ++y) {
         for (int x = 0; x < l.width; ++x)
-            put32(out, pack(colour(x, y), l), l.byte_order == 1);
+        {
+            std::vector<std::uint8_t> word;
+            put32(word, pack(colour(x, y), l), l.byte_order == 1);
+            if (l.pixel_bytes == 3) // the low three bytes of the value, in the dump's byte order
+                word.erase(l.byte_order == 1 ? word.begin() : word.end() - 1);
+            out.insert(out.end(), word.begin(), word.end());
+        }
         out.insert(out.end(), l.padding, std::uint8_t(0xee));
     }
     return out;
@@ -134,6 +141,14 @@ TEST_CASE("reader")
             CHECK_EQ(image.height, 3);
             CHECK_EQ(wrong_pixels(image), 0);
         }
+    // Packed 24 bits a pixel, lines padded (xwd -root once a window of another visual is on the screen).
+    for (std::uint32_t order : {0u, 1u}) {
+        XwdLayout packed;
+        packed.pixel_bytes = 3;
+        packed.byte_order = order;
+        packed.padding = 5;
+        CHECK_EQ(wrong_pixels(parse_xwd(make_xwd(packed), "packed.xwd")), 0);
+    }
     // Masks in the upper bytes (a 32-bit ARGB-style layout with the low byte unused) and GRB order.
     XwdLayout shifted;
     shifted.red_mask = 0xff00, shifted.green_mask = 0xff000000, shifted.blue_mask = 0xff0000;
@@ -156,10 +171,10 @@ TEST_CASE("reader-refusals")
     refused(l, "pixmap_format is 1, only ZPixmap (2)");
     l = {};
     l.set(xwd_pixmap_depth, 16);
-    refused(l, "depth 16 in 32 bits a pixel; only depth 24 in 32 bits");
+    refused(l, "depth 16 in 32 bits a pixel; only depth 24 in 24 or 32 bits");
     l = {};
-    l.set(xwd_bits_per_pixel, 24);
-    refused(l, "depth 24 in 24 bits");
+    l.set(xwd_bits_per_pixel, 16);
+    refused(l, "depth 24 in 16 bits");
     l = {};
     l.set(xwd_visual_class, 3);
     refused(l, "visual_class is 3, only TrueColor (4) or DirectColor (5)");

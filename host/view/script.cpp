@@ -225,6 +225,8 @@ const Verb kVerbs[] = {
     {"cursor", [](const ScriptAction& a) { cursor(a); }},
     {"minimize", [](const ScriptAction& a) { expect_words(a, 0, "minimize"); }},
     {"restore", [](const ScriptAction& a) { expect_words(a, 0, "restore"); }},
+    {"close", [](const ScriptAction& a) { expect_words(a, 0, "close"); }},
+    {"ui", [](const ScriptAction& a) { on_off(a); }},
     {"stage", [](const ScriptAction& a) { parse_stage(one_of(a, {"fragment", "compute"})); }},
     {"derivatives", [](const ScriptAction& a) { parse_gradients(one_of(a, {"fine", "coarse", "ray"})); }},
 };
@@ -264,6 +266,7 @@ std::vector<ScriptAction> parse_script(const std::string& text, const std::strin
     std::istringstream in(text);
     std::string line;
     int quit_line = 0;
+    std::string quit_verb;
     for (int number = 1; std::getline(in, line); ++number) {
         ScriptAction action;
         action.line = number;
@@ -280,7 +283,7 @@ std::vector<ScriptAction> parse_script(const std::string& text, const std::strin
             continue;
         const std::string where = name + ":" + std::to_string(number) + ": ";
         if (quit_line)
-            throw Error(where + "'" + action.verb + "' after quit (line " + std::to_string(quit_line) +
+            throw Error(where + "'" + action.verb + "' after " + quit_verb + " (line " + std::to_string(quit_line) +
                         ") would never run");
         const Verb* verb = nullptr;
         for (const Verb& v : kVerbs)
@@ -293,8 +296,10 @@ std::vector<ScriptAction> parse_script(const std::string& text, const std::strin
         } catch (const Error& e) {
             throw Error(where + action.verb + ": " + e.what());
         }
-        if (action.verb == "quit")
+        if (action.verb == "quit" || action.verb == "close") {
             quit_line = number;
+            quit_verb = action.verb;
+        }
         actions.push_back(std::move(action));
     }
     return actions;
@@ -330,7 +335,7 @@ SamplerOptions script_sampler(const ScriptAction& a)
 
 bool script_off(const ScriptAction& a)
 {
-    require_verb(a, {"compare", "loupe", "animate", "truth"}, "script_off");
+    require_verb(a, {"compare", "loupe", "animate", "truth", "ui"}, "script_off");
     return a.words.size() == 1 && a.words[0] == "off";
 }
 

@@ -13,6 +13,7 @@
 //   camera reset | camera set X,Y,Z,YAW,PITCH | camera fly DX DY DZ | camera turn YAW PITCH | camera orbit YAW PITCH
 //   animate on|off  frame N (0..2^30)  view color|lod|anisotropy|fetches|error  truth on|off  divider F (0..1)
 //   loupe X Y ZOOM (pixels >= 0, zoom 1..64) | loupe off   cursor X Y   minimize   restore
+//   close (as the window's close button; the last action)   ui on|off (the panels)
 //   stage fragment|compute           derivatives fine|coarse|ray
 //
 // Use:     for (const ScriptAction& a : read_script(path)) if (a.verb == "filter") set_a(script_sampler(a)); ...
@@ -44,7 +45,7 @@ std::vector<ScriptAction> read_script(const std::string& path);
 SceneKind script_scene(const ScriptAction& action);                 // scene
 TextureSource script_texture(const ScriptAction& action);           // texture
 SamplerOptions script_sampler(const ScriptAction& action);          // filter, compare F
-bool script_off(const ScriptAction& action);                        // compare/loupe/animate/truth: "off"
+bool script_off(const ScriptAction& action);                        // compare/loupe/animate/truth/ui: "off"
 std::pair<int, int> script_size(const ScriptAction& action);        // resize
 int script_count(const ScriptAction& action);                       // wait, hold, frame
 std::string script_path(const ScriptAction& action);                // screenshot, screenshot-ui

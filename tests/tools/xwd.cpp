@@ -20,11 +20,6 @@ std::uint32_t big_endian(const std::uint8_t* p)
     return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | std::uint32_t(p[3]);
 }
 
-std::uint32_t little_endian(const std::uint8_t* p)
-{
-    return std::uint32_t(p[3]) << 24 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[1]) << 8 | std::uint32_t(p[0]);
-}
-
 // One colour channel's mask: where it starts and how many bits wide (contiguous, 1..16 bits).
 struct Channel {
     int shift = 0;
@@ -71,9 +66,12 @@ XwdImage parse_xwd(const std::vector<std::uint8_t>& bytes, const std::string& na
                     "outside [100, the file's " + std::to_string(bytes.size()) + " bytes]");
     if (h[xwd_pixmap_format] != zpixmap)
         throw field("pixmap_format", h[xwd_pixmap_format], "only ZPixmap (2) is read (0: XYBitmap, 1: XYPixmap)");
-    if (h[xwd_pixmap_depth] != 24 || h[xwd_bits_per_pixel] != 32)
+    // 32 bits a pixel is the server's own format; xwd writes 24 (packed, lines padded) when it composes a
+    // root with windows of several visuals, as it does once a Vulkan window is on the screen.
+    if (h[xwd_pixmap_depth] != 24 || (h[xwd_bits_per_pixel] != 32 && h[xwd_bits_per_pixel] != 24))
         throw Error(name + ": depth " + std::to_string(h[xwd_pixmap_depth]) + " in " +
-                    std::to_string(h[xwd_bits_per_pixel]) + " bits a pixel; only depth 24 in 32 bits is read");
+                    std::to_string(h[xwd_bits_per_pixel]) + " bits a pixel; only depth 24 in 24 or 32 bits is read");
+    const std::uint32_t pixel_bytes = h[xwd_bits_per_pixel] / 8;
     if (h[xwd_visual_class] != true_color && h[xwd_visual_class] != direct_color)
         throw field("visual_class", h[xwd_visual_class], "only TrueColor (4) or DirectColor (5) is read");
     if (h[xwd_byte_order] != lsb_first && h[xwd_byte_order] != msb_first)
@@ -85,9 +83,10 @@ XwdImage parse_xwd(const std::vector<std::uint8_t>& bytes, const std::string& na
         throw Error(name + ": " + std::to_string(width) + "x" + std::to_string(height) + " pixels, expected 1 to " +
                     std::to_string(xwd_max_side) + " a side");
     const std::uint64_t line = h[xwd_bytes_per_line];
-    if (line < std::uint64_t(width) * 4 || line > std::uint64_t(width) * 4 + 64)
+    if (line < std::uint64_t(width) * pixel_bytes || line > std::uint64_t(width) * 4 + 64)
         throw field("bytes_per_line", h[xwd_bytes_per_line],
-                    "expected " + std::to_string(std::uint64_t(width) * 4) + " (4 a pixel) plus at most 64 of padding");
+                    "expected " + std::to_string(std::uint64_t(width) * pixel_bytes) + " (" +
+                        std::to_string(pixel_bytes) + " a pixel) to " + std::to_string(std::uint64_t(width) * 4 + 64));
     Channel red = channel_of(h[xwd_red_mask], "red_mask", name), green = channel_of(h[xwd_green_mask], "green_mask", name),
             blue = channel_of(h[xwd_blue_mask], "blue_mask", name);
     if ((h[xwd_red_mask] & h[xwd_green_mask]) || (h[xwd_red_mask] & h[xwd_blue_mask]) ||
@@ -109,7 +108,10 @@ XwdImage parse_xwd(const std::vector<std::uint8_t>& bytes, const std::string& na
     for (std::uint32_t y = 0; y < height; ++y) {
         const std::uint8_t* row = bytes.data() + pixels_at + line * y;
         for (std::uint32_t x = 0; x < width; ++x) {
-            std::uint32_t pixel = msb ? big_endian(row + 4 * x) : little_endian(row + 4 * x);
+            const std::uint8_t* p = row + pixel_bytes * x;
+            std::uint32_t pixel = 0;
+            for (std::uint32_t b = 0; b < pixel_bytes; ++b) // the pixel's bytes in the dump's byte order
+                pixel |= std::uint32_t(p[b]) << (8 * (msb ? pixel_bytes - 1 - b : b));
             image.rgb[size_t(y) * width + x] = {red.value(pixel, h[xwd_red_mask]),
                                                 green.value(pixel, h[xwd_green_mask]),
                                                 blue.value(pixel, h[xwd_blue_mask])};

@@ -1,0 +1,199 @@
+// The viewer's lifetime: checks, window, device, loop, teardown; and a new state applied.
+#include "view/viewer.h"
+#include "io/texture_source.h"
+#include "texture/error.h"
+#include "vulkan/device_memory_check.h"
+#include "view/frame_log.h"
+#include <cstdio>
+#include <sstream>
+
+namespace tf {
+
+namespace {
+
+std::string options_key(const SamplerOptions& o, const RenderOptions& r)
+{
+    std::ostringstream s;
+    s << int(o.filter) << ' ' << int(o.wrap) << ' ' << o.lod_bias << ' ' << o.lod_min << ' ' << o.lod_max << ' '
+      << o.aniso << ' ' << o.band << ' ' << o.probes << ' ' << int(o.aniso_shape) << ' ' << int(o.taps) << ' '
+      << o.alpha << ' ' << o.max_aniso << ' ' << o.boxes << ' ' << int(o.pixel_filter) << ' ' << o.truth_side
+      << ' ' << int(r.stage) << ' ' << int(r.gradients) << ' ' << r.rasterize << ' ' << int(r.view);
+    return s.str();
+}
+
+std::string texture_key(const TextureSource& t)
+{
+    return t.name_or_path + '\n' + std::to_string(t.procedural_size) + '\n' + std::to_string(int(t.color));
+}
+
+// The ground truth the error view measures against (and truth mode shows): A's wrap, 256 samples a pixel.
+SamplerOptions truth_options(const SamplerOptions& a)
+{
+    SamplerOptions t;
+    t.filter = Filter::ground_truth;
+    t.wrap = a.wrap;
+    return t;
+}
+
+RenderOptions half_render(const ViewState& s, const std::string& view)
+{
+    RenderOptions r = s.render;
+    r.view = view == "error" ? DebugView::color : parse_view(view);
+    return r;
+}
+
+bool needs_sat(const ViewState& s) { return needs_sat(s.a.options.filter) || (s.b && needs_sat(s.b->options.filter)); }
+
+void destroy_viewer(Viewer& v)
+{
+    if (v.context.device)
+        vkDeviceWaitIdle(v.context.device);
+    destroy_imgui_layer(v.context, v.imgui);
+    destroy_compose_pass(v.compose);
+    destroy_scene_images(v.images);
+    destroy_frame_objects(v);
+    destroy_swapchain(v.context, v.swapchain);
+    if (v.surface)
+        vkDestroySurfaceKHR(v.context.instance, v.surface, nullptr);
+    destroy_window(v.window);
+    v.window = nullptr;
+    destroy_context(v.context);
+}
+
+} // namespace
+
+std::string apply_state(Viewer& v, const ViewState& requested)
+{
+    SceneImages& im = v.images;
+    ViewState next = requested;
+    try { // the mesh scene is rasterized; ray differentials need a ray-cast scene
+        next.render = make_render_options(next.scene, next.render.stage, next.render.gradients);
+    } catch (const Error& e) {
+        if (im.chain.levels.empty())
+            throw;
+        next.render = make_render_options(next.scene, Stage::fragment, Gradients::fine);
+        v.controls.message = std::string(e.what()) + ": fragment stage, fine derivatives instead";
+    }
+    const bool first = im.chain.levels.empty();
+    if (first || texture_key(next.texture) != texture_key(v.state.texture)) {
+        try {
+            DeviceLimits limits = device_limits(v.context.info);
+            MipChain chain = load_texture(next.texture, {needs_sat(next), &limits});
+            ViewState kept = v.state;
+            v.state.texture = next.texture;
+            set_texture(im, std::move(chain));
+            (void)kept;
+        } catch (const Error& e) {
+            if (first)
+                throw;
+            return e.what(); // the previous texture stays
+        }
+        scene_changed(v);
+    }
+    const bool scene_moved = next.scene != v.state.scene || next.frame != v.state.frame || first;
+    const std::string a_key = options_key(next.a.options, half_render(next, next.view));
+    if (first || a_key != options_key(im.a.options, im.a.render))
+        set_half_options(im, im.a, next.a.options, half_render(next, next.view));
+    std::optional<SamplerOptions> b;
+    if (v.controls.truth)
+        b = truth_options(next.a.options);
+    else if (next.b)
+        b = next.b->options;
+    im.has_b = b.has_value();
+    if (b && options_key(*b, half_render(next, next.view)) != options_key(im.b.options, im.b.render))
+        set_half_options(im, im.b, *b, half_render(next, next.view));
+    im.wants_truth = next.view == "error";
+    if (im.wants_truth && (first || options_key(truth_options(next.a.options), next.render) !=
+                                        options_key(im.truth.options, im.truth.render)))
+        set_half_options(im, im.truth, truth_options(next.a.options), half_render(next, "color"));
+    const TextureSource texture = v.state.texture; // the one loaded
+    const int width = v.state.width, height = v.state.height;
+    v.state = next;
+    v.state.texture = texture;
+    v.state.width = width;
+    v.state.height = height;
+    if (v.controls.truth) { // what the screenshot's second line renders
+        v.state.b = ViewHalf{im.b.options};
+    }
+    if (scene_moved)
+        scene_changed(v);
+    if (v.window)
+        set_window_title(*v.window, view_title(v));
+    return "";
+}
+
+int run_viewer(const ViewOptions& options)
+{
+    init_window_system(); // no display: one sentence, before any work
+    Viewer v;
+    v.options = options;
+    struct Teardown {
+        Viewer& v;
+        ~Teardown() { destroy_viewer(v); }
+    } teardown{v};
+
+    ContextOptions device = options.device;
+    device.instance_extensions = window_instance_extensions();
+    device.swapchain = true;
+    v.context = create_context(device);
+    v.state.width = v.scene_width = options.state.width;
+    v.state.height = v.scene_height = options.state.height;
+    v.images.context = &v.context;
+    apply_state(v, options.state); // the texture is checked and loaded before the window opens
+
+    v.window = create_window(options.state.width, options.state.height, view_title(v));
+    v.surface = create_window_surface(v.context, *v.window);
+    check_present_support(v.context, v.surface);
+    int width = 0, height = 0;
+    framebuffer_size(*v.window, width, height);
+    create_swapchain(v.context, v.surface, uint32_t(std::max(width, 2)), uint32_t(std::max(height, 2)), v.swapchain);
+    create_compose_pass(v.context, v.swapchain.render_pass, v.compose);
+    create_imgui_layer(v.context, *v.window, v.swapchain, v.imgui);
+    create_frame_objects(v);
+
+    ScriptRun script;
+    FrameLog log(options.frame_log);
+    auto last = std::chrono::steady_clock::now();
+    while (!v.quit && !should_close(*v.window)) {
+        const bool scripted = !options.script.empty();
+        const bool idle = !scripted && !moving_now(v) && images_complete(v);
+        if (idle)
+            wait_events(0.05); // nothing changes until an event: the idle viewer sleeps
+        else
+            poll_events();
+        take_dropped_files(v);
+        auto now = std::chrono::steady_clock::now();
+        handle_input(v, std::chrono::duration<double>(now - last).count());
+        last = now;
+        if (scripted && !run_script_step(v, script))
+            break;
+        if (v.quit)
+            break;
+        if (draw_frame(v, v.controls.ui)) {
+            if (v.controls.animate) {
+                ++v.state.frame;
+                scene_changed(v);
+            }
+            log.add(v);
+        } else {
+            wait_events(0.02); // minimised: nothing to draw until the window comes back
+        }
+        if (!v.controls.pending_screenshot.empty()) {
+            std::string path = std::move(v.controls.pending_screenshot);
+            v.controls.pending_screenshot.clear();
+            try {
+                screenshot(v, path, false);
+                v.controls.message = "wrote " + path;
+            } catch (const Error& e) {
+                v.controls.message = e.what();
+            }
+        }
+    }
+    log.write();
+    if (validation_message_count() > 0)
+        throw Error("view: the Vulkan validation layers reported " + std::to_string(validation_message_count()) +
+                    " message(s) (above)");
+    return 0;
+}
+
+} // namespace tf

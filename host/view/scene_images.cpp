@@ -1,0 +1,125 @@
+#include "view/scene_images.h"
+#include <algorithm>
+#include <chrono>
+
+namespace tf {
+
+namespace {
+
+bool half_needs_sat(const HalfImage& h) { return needs_sat(h.options.filter); }
+
+void start_over(HalfImage& half)
+{
+    half.complete = false;
+    half.samples_done = 0;
+    half.sum.clear();
+}
+
+GpuRenderer& renderer_for(SceneImages& images, HalfImage& half, const SceneParams& scene)
+{
+    auto key = std::make_pair(int(scene.kind_size.y), int(scene.kind_size.z));
+    auto found = half.renderers.find(key);
+    if (found != half.renderers.end())
+        return *found->second;
+    if (half.renderers.size() >= 4) // full size and a few preview sizes; the rest are made again when needed
+        half.renderers.clear();
+    auto made = create_renderer(*images.context, images.texture, scene, half.options, half.render);
+    return *half.renderers.emplace(key, std::move(made)).first->second;
+}
+
+SceneParams scaled_scene(const SceneParams& scene, int scale)
+{
+    if (scale <= 1)
+        return scene;
+    // The same camera at a fraction of the pixels: the scene's rays depend on the pixel's position relative
+    // to the image, so only the size changes. Even sides: derivatives come from 2x2 quads.
+    SceneParams s = scene;
+    s.kind_size.y = std::max(2, (scene.kind_size.y / scale) & ~1);
+    s.kind_size.z = std::max(2, (scene.kind_size.z / scale) & ~1);
+    return s;
+}
+
+} // namespace
+
+int samples_per_pixel(const SamplerOptions& options)
+{
+    return options.filter == Filter::ground_truth ? options.truth_side * options.truth_side : 1;
+}
+
+void destroy_scene_images(SceneImages& images)
+{
+    for (HalfImage* h : {&images.a, &images.b, &images.truth})
+        h->renderers.clear();
+    if (images.context)
+        destroy_texture(*images.context, images.texture);
+    images.texture_has_sat = false;
+}
+
+void set_texture(SceneImages& images, MipChain chain)
+{
+    const bool sat = half_needs_sat(images.a) || (images.has_b && half_needs_sat(images.b));
+    GpuTexture uploaded = upload_texture(*images.context, chain, sat); // first: a failure keeps the old one
+    for (HalfImage* h : {&images.a, &images.b, &images.truth}) {
+        h->renderers.clear(); // their descriptor sets name the old images
+        start_over(*h);
+    }
+    destroy_texture(*images.context, images.texture);
+    images.texture = uploaded;
+    images.texture_has_sat = sat;
+    images.chain = std::move(chain);
+}
+
+void set_half_options(SceneImages& images, HalfImage& half, const SamplerOptions& options, const RenderOptions& render)
+{
+    half.options = options;
+    half.render = render;
+    half.renderers.clear();
+    start_over(half);
+    if (needs_sat(options.filter) && !images.texture_has_sat) {
+        MipChain chain = images.chain;
+        set_texture(images, std::move(chain));
+    }
+}
+
+void restart(SceneImages& images)
+{
+    for (HalfImage* h : {&images.a, &images.b, &images.truth})
+        start_over(*h);
+}
+
+bool step_half(SceneImages& images, HalfImage& half, const SceneParams& full_scene, int scale, int truth_samples)
+{
+    if (half.complete && scale <= 1)
+        return false;
+    const SceneParams scene = scaled_scene(full_scene, scale);
+    const int total = samples_per_pixel(half.options);
+    GpuRenderer& renderer = renderer_for(images, half, scene);
+    const auto start = std::chrono::steady_clock::now();
+    if (half.options.filter != Filter::ground_truth || scale > 1) {
+        // A preview of the ground truth is its first sample alone: the pattern's, noisy, cheap.
+        renderer.push.truth_first = 0;
+        renderer.push.truth_count = scale > 1 ? 1 : 0;
+        half.image = render_frame(renderer, scene);
+        half.complete = scale <= 1 && half.options.filter != Filter::ground_truth;
+        half.samples_done = 0;
+        half.sum.clear();
+    } else {
+        const int count = std::clamp(truth_samples, 1, total - half.samples_done);
+        renderer.push.truth_first = half.samples_done;
+        renderer.push.truth_count = count;
+        Image chunk = render_frame(renderer, scene);
+        if (half.sum.size() != chunk.texels.size())
+            half.sum.assign(chunk.texels.size(), glm::dvec4(0.0));
+        for (size_t i = 0; i < chunk.texels.size(); ++i)
+            half.sum[i] += glm::dvec4(chunk.texels[i]) * double(count);
+        half.samples_done += count;
+        half.image = chunk;
+        for (size_t i = 0; i < chunk.texels.size(); ++i)
+            half.image.texels[i] = glm::vec4(half.sum[i] / double(half.samples_done));
+        half.complete = half.samples_done >= total;
+    }
+    half.last_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return true;
+}
+
+} // namespace tf

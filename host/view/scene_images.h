@@ -1,0 +1,53 @@
+#pragma once
+// What the viewer shows, rendered: filter A's and B's images of the current scene and the ground truth
+// accumulating behind the error view, through the same renderer as `texfilter render` (vulkan/render.h:
+// create_renderer, render_frame). A half renders at a fraction of the size while the camera moves (a preview,
+// so the UI stays interactive on a CPU rasterizer) and at full size when it rests. A half whose filter is
+// ground-truth, and the truth itself, accumulate their samples a chunk a frame, in the sample pattern of
+// `--filter ground-truth`, so that the finished image is that render's.
+#include "scene/scene.h"
+#include "texture/mip.h"
+#include "vulkan/render.h"
+#include "vulkan/upload.h"
+#include <map>
+#include <memory>
+#include <optional>
+
+namespace tf {
+
+struct HalfImage {
+    SamplerOptions options;
+    RenderOptions render;
+    std::map<std::pair<int, int>, std::unique_ptr<GpuRenderer>> renderers; // by size: full and previews
+    Image image;             // what the half shows now
+    bool complete = false;   // full size, every ground-truth sample in
+    int samples_done = 0;    // ground truth: samples accumulated into `sum`
+    std::vector<glm::dvec4> sum;
+    double last_ms = 0;      // the last render's wall time
+};
+
+struct SceneImages {
+    const VulkanContext* context = nullptr;
+    MipChain chain;
+    GpuTexture texture;
+    bool texture_has_sat = false;
+    HalfImage a, b, truth;
+    bool has_b = false, wants_truth = false;
+};
+
+void destroy_scene_images(SceneImages& images);
+// Replaces the texture (uploads with a summed-area table when a half needs one); the halves start over.
+void set_texture(SceneImages& images, MipChain chain);
+// New filter options for a half: its renderers go, it starts over.
+void set_half_options(SceneImages& images, HalfImage& half, const SamplerOptions& options, const RenderOptions& render);
+// The scene changed (camera, frame, size): every half starts over, renderers kept.
+void restart(SceneImages& images);
+
+// One step of `half` towards complete, at `scale` (1: full size, k: width/k x height/k, even sides) for
+// `scene` (full size). A ground-truth half adds up to `truth_samples` samples a step. Returns true when the
+// half's image changed.
+bool step_half(SceneImages& images, HalfImage& half, const SceneParams& scene, int scale, int truth_samples);
+
+int samples_per_pixel(const SamplerOptions& options); // ground truth: side^2; others 1
+
+} // namespace tf

@@ -1,0 +1,273 @@
+// The viewer's panels: every option of `texfilter render` as a widget, for filter A and filter B; the HUD;
+// the split divider, the loupe's frame and the footprint of the pixel under the cursor drawn over the image.
+#include "view/viewer.h"
+#include "reference/footprint.h"
+#include "texture/error.h"
+#include <imgui.h>
+#include <cmath>
+#include <cstdio>
+
+namespace tf {
+
+namespace {
+
+template <typename Enum>
+bool enum_combo(const char* label, Enum& value, int first, int last, std::string (*name)(Enum))
+{
+    bool changed = false;
+    if (ImGui::BeginCombo(label, name(value).c_str())) {
+        for (int i = first; i <= last; ++i) {
+            Enum e = Enum(i);
+            if (ImGui::Selectable(name(e).c_str(), e == value)) {
+                value = e;
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+std::string filter_name(Filter f) { return to_string(f); }
+std::string wrap_name(Wrap w) { return to_string(w); }
+std::string shape_name(AnisoShape s) { return to_string(s); }
+std::string taps_name(Taps t) { return to_string(t); }
+std::string pixel_filter_name(PixelFilter p) { return to_string(p); }
+std::string scene_name(SceneKind s) { return to_string(s); }
+std::string stage_name(Stage s) { return to_string(s); }
+std::string gradients_name(Gradients g) { return to_string(g); }
+
+// The options the chosen filter reads, with the CLI's ranges. Returns true when one changed.
+bool filter_widgets(const char* id, SamplerOptions& o)
+{
+    ImGui::PushID(id);
+    bool c = enum_combo("filter", o.filter, HARNESS_FILTER_NEAREST, HARNESS_FILTER_NONE, filter_name);
+    c |= enum_combo("wrap", o.wrap, HARNESS_WRAP_REPEAT, HARNESS_WRAP_MIRROR, wrap_name);
+    const Filter f = o.filter;
+    if (f != Filter::ground_truth && f != Filter::none) {
+        c |= ImGui::SliderFloat("LOD bias", &o.lod_bias, -16.0f, 16.0f);
+        c |= ImGui::SliderFloat("LOD min", &o.lod_min, 0.0f, 16.0f);
+        c |= ImGui::SliderFloat("LOD max", &o.lod_max, 0.0f, 1000.0f, "%.1f", ImGuiSliderFlags_Logarithmic);
+        if (o.lod_min > o.lod_max)
+            o.lod_max = o.lod_min;
+    }
+    if (f == Filter::brilinear)
+        c |= ImGui::SliderFloat("band", &o.band, 0.0f, 1.0f);
+    if (f == Filter::hw_aniso)
+        c |= ImGui::SliderInt("max anisotropy", &o.aniso, 1, 16);
+    if (f == Filter::aniso) {
+        c |= ImGui::SliderInt("probes", &o.probes, 1, 16);
+        c |= enum_combo("shape", o.aniso_shape, HARNESS_ANISO_GPU, HARNESS_ANISO_FELINE, shape_name);
+    }
+    if (f == Filter::aniso || f == Filter::ewa)
+        c |= enum_combo("taps", o.taps, HARNESS_TAPS_MANUAL, HARNESS_TAPS_HARDWARE, taps_name);
+    if (f == Filter::ewa) {
+        c |= ImGui::SliderFloat("alpha", &o.alpha, 0.05f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+        c |= ImGui::SliderFloat("max aniso", &o.max_aniso, 1.0f, 64.0f, "%.1f", ImGuiSliderFlags_Logarithmic);
+    }
+    if (f == Filter::sat_assembly)
+        c |= ImGui::SliderInt("boxes", &o.boxes, 1, 16);
+    if (f == Filter::ground_truth) {
+        c |= enum_combo("pixel filter", o.pixel_filter, HARNESS_PIXEL_FILTER_BOX, HARNESS_PIXEL_FILTER_GAUSSIAN,
+                        pixel_filter_name);
+        c |= ImGui::SliderInt("spp side", &o.truth_side, 1, max_ground_truth_side);
+    }
+    ImGui::PopID();
+    return c;
+}
+
+void hud(Viewer& v)
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 10.0f, 10.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
+    if (ImGui::Begin("hud", nullptr, flags)) {
+        ImGui::Text("frame %.1f ms  scene %.1f ms", v.stats.frame_ms, v.stats.render_ms);
+        if (v.stats.preview_scale > 1)
+            ImGui::Text("moving: preview at 1/%d size", v.stats.preview_scale);
+        else if (images_complete(v))
+            ImGui::Text("full resolution %dx%d", v.scene_width, v.scene_height);
+        else
+            ImGui::Text("refining %dx%d", v.scene_width, v.scene_height);
+        const HalfImage* gt = v.images.has_b && v.images.b.options.filter == Filter::ground_truth ? &v.images.b
+                              : v.images.wants_truth                                              ? &v.images.truth
+                                                                                                  : nullptr;
+        if (gt)
+            ImGui::Text("ground truth %d / %d samples", gt->samples_done, samples_per_pixel(gt->options));
+        ImGui::Text("%s", v.context.info.name.c_str());
+        ImGui::Text("%s %s", v.context.info.driver_name.c_str(), v.context.info.driver_info.c_str());
+        ImGui::Text("frame %d of the camera path%s", v.state.frame, v.controls.animate ? " (animating)" : "");
+    }
+    ImGui::End();
+}
+
+// The pixel's footprint (the ellipse the filter integrates, and the aniso probes) mapped from uv back to
+// the window through the inverse of the pixel's uv Jacobian, magnified with the loupe when it is under it.
+void draw_footprint(Viewer& v, glm::ivec2 pixel)
+{
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= v.scene_width || pixel.y >= v.scene_height)
+        return;
+    PixelFootprint f = pixel_footprint(current_scene(v), v.images.chain, v.images.a.options, v.images.a.render, pixel);
+    if (!f.hit)
+        return;
+    const glm::dmat2 j(f.duv_dx, f.duv_dy); // columns: uv per window pixel in x and in y
+    if (!std::isfinite(glm::determinant(j)) || std::abs(glm::determinant(j)) < 1e-30)
+        return;
+    const glm::dmat2 inverse = glm::inverse(j);
+    glm::dvec2 centre = glm::dvec2(pixel) + 0.5;
+    double zoom = 1.0;
+    if (v.controls.loupe && glm::all(glm::lessThan(glm::abs(glm::ivec2(pixel) - v.controls.loupe_center),
+                                                   glm::ivec2(v.controls.loupe_radius)))) {
+        zoom = v.controls.loupe_zoom;
+        centre = glm::dvec2(v.controls.loupe_center) + (centre - glm::dvec2(v.controls.loupe_center)) * zoom;
+    }
+    auto to_window = [&](glm::dvec2 uv_offset) {
+        glm::dvec2 p = centre + inverse * uv_offset * zoom;
+        return ImVec2(float(p.x), float(p.y));
+    };
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    constexpr int segments = 64;
+    ImVec2 points[segments];
+    for (int i = 0; i < segments; ++i) {
+        const double t = 6.283185307179586 * i / segments;
+        points[i] = to_window(f.major * std::cos(t) + f.minor * std::sin(t));
+    }
+    draw->AddPolyline(points, segments, IM_COL32(255, 255, 0, 230), ImDrawFlags_Closed, 1.5f);
+    for (const glm::dvec2& probe : f.probes)
+        draw->AddCircleFilled(to_window(probe - f.uv), 2.5f, IM_COL32(0, 255, 255, 230));
+    ImGui::BeginTooltip();
+    ImGui::Text("pixel %d,%d  uv %.5f, %.5f", pixel.x, pixel.y, f.uv.x, f.uv.y);
+    ImGui::Text("LOD %.3f  anisotropy %.2f", f.lod, f.anisotropy);
+    ImGui::EndTooltip();
+}
+
+void overlays(Viewer& v)
+{
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    const ImGuiIO& io = ImGui::GetIO();
+    if (v.images.has_b) { // the divider, dragged with the left button when the UI does not want the mouse
+        float x = v.state.divider * float(v.scene_width);
+        if (!io.WantCaptureMouse && ImGui::IsMouseDragging(ImGuiMouseButton_Left) && std::abs(io.MouseClickedPos[0].x - x) < 8.0f)
+            v.state.divider = std::clamp(io.MousePos.x / float(std::max(1, v.scene_width)), 0.0f, 1.0f);
+        x = v.state.divider * float(v.scene_width);
+        draw->AddLine(ImVec2(x, 0.0f), ImVec2(x, float(v.scene_height)), IM_COL32(255, 255, 255, 200), 1.0f);
+    }
+    if (v.controls.loupe) {
+        if (!io.WantCaptureMouse && v.controls.cursor.x < 0)
+            v.controls.loupe_center = {int(io.MousePos.x), int(io.MousePos.y)};
+        const glm::ivec2 c = v.controls.loupe_center;
+        const float r = float(v.controls.loupe_radius);
+        draw->AddRect(ImVec2(float(c.x) - r, float(c.y) - r), ImVec2(float(c.x) + r, float(c.y) + r),
+                      IM_COL32(255, 255, 255, 220));
+    }
+    if (v.controls.footprint && v.images.a.options.filter != Filter::ground_truth &&
+        v.images.a.options.filter != Filter::none) {
+        glm::ivec2 pixel = v.controls.cursor;
+        if (pixel.x < 0 && !io.WantCaptureMouse) {
+            pixel = {int(io.MousePos.x), int(io.MousePos.y)};
+            if (v.controls.loupe) // under the loupe: the magnified pixel
+                pixel = v.controls.loupe_center +
+                        glm::ivec2(glm::floor(glm::vec2(pixel - v.controls.loupe_center) / float(v.controls.loupe_zoom) + 0.5f));
+        }
+        if (pixel.x >= 0 && (!v.images.has_b || pixel.x < int(v.state.divider * float(v.scene_width))))
+            draw_footprint(v, pixel);
+    }
+}
+
+} // namespace
+
+void build_ui(Viewer& v)
+{
+    hud(v);
+    overlays(v);
+    ViewState next = v.state;
+    bool changed = false;
+    ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(330.0f, 0.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    if (ImGui::Begin("texfilter")) {
+        changed |= enum_combo("scene", next.scene, 0, int(SceneKind::mesh), scene_name);
+        static char texture[512];
+        static bool texture_filled = false;
+        if (!texture_filled) {
+            std::snprintf(texture, sizeof texture, "%s", v.state.texture.name_or_path.c_str());
+            texture_filled = true;
+        }
+        ImGui::InputText("texture", texture, sizeof texture);
+        ImGui::SliderInt("texture size", &next.texture.procedural_size, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
+        if (ImGui::Button("load") || next.texture.procedural_size != v.state.texture.procedural_size) {
+            next.texture.name_or_path = texture;
+            changed = true;
+        }
+        ImGui::SameLine();
+        ImGui::TextDisabled("(or drop an image file on the window)");
+        if (!v.controls.message.empty())
+            ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", v.controls.message.c_str());
+        changed |= enum_combo("stage", next.render.stage, 0, 1, stage_name);
+        changed |= enum_combo("derivatives", next.render.gradients, HARNESS_GRADIENTS_FINE, HARNESS_GRADIENTS_RAY,
+                              gradients_name);
+        const char* views[] = {"color", "lod", "anisotropy", "fetches", "error"};
+        if (ImGui::BeginCombo("view", next.view.c_str())) {
+            for (const char* name : views)
+                if (ImGui::Selectable(name, next.view == name)) {
+                    next.view = name;
+                    changed = true;
+                }
+            ImGui::EndCombo();
+        }
+        if (next.view == "error")
+            ImGui::SliderFloat("error scale", &v.controls.error_max, 0.001f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+        if (ImGui::CollapsingHeader("filter A", ImGuiTreeNodeFlags_DefaultOpen))
+            changed |= filter_widgets("a", next.a.options);
+        bool compare = next.b.has_value() && !v.controls.truth;
+        if (ImGui::Checkbox("compare with B", &compare)) {
+            v.controls.truth = false;
+            if (compare)
+                next.b = next.b.value_or(ViewHalf{next.a.options});
+            else
+                next.b.reset();
+            changed = true;
+        }
+        ImGui::SameLine();
+        if (ImGui::Checkbox("ground truth", &v.controls.truth)) {
+            if (!v.controls.truth)
+                next.b.reset();
+            changed = true;
+        }
+        if (compare && next.b && ImGui::CollapsingHeader("filter B", ImGuiTreeNodeFlags_DefaultOpen))
+            changed |= filter_widgets("b", next.b->options);
+        if (ImGui::CollapsingHeader("camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+            ImGui::Checkbox("orbit (else fly)", &v.controls.orbit);
+            ImGui::SameLine();
+            if (ImGui::Button("reset")) {
+                v.controls.camera_set = false;
+                next.frame = 0;
+                changed = true;
+                scene_changed(v);
+            }
+            ImGui::Checkbox("animate along the camera path", &v.controls.animate);
+            ImGui::TextDisabled("WASD/QE fly, drag: turn (orbit), wheel: forward");
+            ImGui::Checkbox("loupe", &v.controls.loupe);
+            ImGui::SameLine();
+            ImGui::SliderInt("zoom", &v.controls.loupe_zoom, 2, 32);
+            ImGui::Checkbox("footprint under the cursor", &v.controls.footprint);
+        }
+        static char shot[512] = "texfilter-view.png";
+        ImGui::InputText("##shot", shot, sizeof shot);
+        ImGui::SameLine();
+        if (ImGui::Button("screenshot")) {
+            v.controls.pending_screenshot = shot; // taken between frames, not inside this one
+        }
+    }
+    ImGui::End();
+    if (changed) {
+        std::string problem = apply_state(v, next);
+        if (!problem.empty())
+            v.controls.message = problem;
+    }
+}
+
+} // namespace tf

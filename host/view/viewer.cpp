@@ -1,0 +1,279 @@
+#include "view/viewer.h"
+#include "io/texture_source.h"
+#include "texture/error.h"
+#include "vulkan/barriers.h"
+#include "vulkan/readback.h"
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <imgui.h>
+
+namespace tf {
+
+namespace {
+
+// A preview while the camera has moved within this long, so a drag renders at the preview's rate.
+constexpr std::chrono::milliseconds settle_time{250};
+// The frame budget that picks the preview's fraction: 30 frames a second.
+constexpr double frame_budget_ms = 1000.0 / 30.0;
+// Ground truth: samples a step, so that a step stays near the frame budget.
+constexpr int truth_samples_a_step = 4;
+
+} // namespace
+
+bool moving_now(const Viewer& v)
+{
+    return v.controls.animate || std::chrono::steady_clock::now() - v.last_move < settle_time;
+}
+
+bool images_complete(const Viewer& v)
+{
+    const SceneImages& im = v.images;
+    return im.a.complete && (!im.has_b || im.b.complete) && (!im.wants_truth || im.truth.complete);
+}
+
+void take_dropped_files(Viewer& v)
+{
+    if (v.window->dropped.empty())
+        return;
+    ViewState next = v.state;
+    next.texture.name_or_path = v.window->dropped.back(); // several at once: the last one
+    v.window->dropped.clear();
+    v.controls.message = apply_state(v, next);
+}
+
+void create_frame_objects(Viewer& v)
+{
+    VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    TF_VK(vkCreateSemaphore(v.context.device, &semaphore, nullptr, &v.acquired));
+    VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    TF_VK(vkCreateFence(v.context.device, &fence, nullptr, &v.frame_done));
+    VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pool.queueFamilyIndex = v.context.queue_family;
+    TF_VK(vkCreateCommandPool(v.context.device, &pool, nullptr, &v.command_pool));
+    VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocate.commandPool = v.command_pool;
+    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocate.commandBufferCount = 1;
+    TF_VK(vkAllocateCommandBuffers(v.context.device, &allocate, &v.command_buffer));
+}
+
+void destroy_frame_objects(Viewer& v)
+{
+    VkDevice d = v.context.device;
+    if (v.command_pool)
+        vkDestroyCommandPool(d, v.command_pool, nullptr); // frees the command buffer
+    if (v.frame_done)
+        vkDestroyFence(d, v.frame_done, nullptr);
+    if (v.acquired)
+        vkDestroySemaphore(d, v.acquired, nullptr);
+}
+
+namespace {
+
+void recreate_swapchain(Viewer& v, int width, int height)
+{
+    vkDeviceWaitIdle(v.context.device);
+    create_swapchain(v.context, v.surface, uint32_t(width), uint32_t(height), v.swapchain);
+    if (v.imgui.started)
+        imgui_swapchain_recreated(v.swapchain);
+    v.window->resized = false;
+    int w = int(v.swapchain.extent.width) & ~1, h = int(v.swapchain.extent.height) & ~1;
+    if (w != v.scene_width || h != v.scene_height) {
+        v.scene_width = std::max(2, w);
+        v.scene_height = std::max(2, h);
+        v.state.width = v.scene_width;
+        v.state.height = v.scene_height;
+        scene_changed(v);
+    }
+}
+
+// The halves one step on; previews adapt their fraction to the frame budget.
+void update_images(Viewer& v)
+{
+    const bool preview = v.options.preview && moving_now(v);
+    const int scale = preview ? v.preview_scale : 1;
+    const SceneParams scene = current_scene(v);
+    SceneImages& im = v.images;
+    double ms = 0;
+    bool changed = step_half(im, im.a, scene, scale, truth_samples_a_step);
+    ms += changed ? im.a.last_ms : 0;
+    if (im.has_b && step_half(im, im.b, scene, scale, truth_samples_a_step)) {
+        changed = true;
+        ms += im.b.last_ms;
+    }
+    if (im.wants_truth && step_half(im, im.truth, scene, scale, truth_samples_a_step)) {
+        changed = true;
+        ms += im.truth.last_ms;
+    }
+    if (changed) {
+        v.stats.render_ms = ms;
+        v.stats.preview_scale = scale;
+        set_compose_image(v.compose, ComposeImage::a, im.a.image);
+        if (im.has_b)
+            set_compose_image(v.compose, ComposeImage::b, im.b.image);
+        if (im.wants_truth)
+            set_compose_image(v.compose, ComposeImage::truth, im.truth.image);
+    }
+    if (preview && changed) { // keep the next preview within the budget
+        if (ms > frame_budget_ms && v.preview_scale < 16)
+            v.preview_scale *= 2;
+        else if (ms < frame_budget_ms / 5 && v.preview_scale > 1)
+            v.preview_scale /= 2;
+    }
+}
+
+ComposeParams compose_params(const Viewer& v, bool with_ui)
+{
+    const SceneImages& im = v.images;
+    ComposeParams p;
+    p.size_a = {im.a.image.width, im.a.image.height};
+    p.size_b = im.has_b ? glm::ivec2(im.b.image.width, im.b.image.height) : p.size_a;
+    p.size_truth = im.wants_truth ? glm::ivec2(im.truth.image.width, im.truth.image.height) : p.size_a;
+    p.full = {v.scene_width, v.scene_height};
+    p.divider = im.has_b ? int(std::lround(v.state.divider * v.scene_width)) : (1 << 30);
+    p.mode = v.state.view == "error" ? 1 : 0;
+    p.error_max = v.controls.error_max;
+    if (with_ui && v.controls.loupe) { // UI: the screenshot of the scene has no loupe
+        p.loupe_center = v.controls.loupe_center;
+        p.loupe_radius = v.controls.loupe_radius;
+        p.loupe_zoom = std::max(1, v.controls.loupe_zoom);
+    }
+    return p;
+}
+
+void record_capture(VkCommandBuffer cb, VkImage image, VkExtent2D extent, const Buffer& capture)
+{
+    image_barrier(cb, image, 1, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+                  VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {extent.width, extent.height, 1};
+    vkCmdCopyImageToBuffer(cb, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, capture.buffer, 1, &region);
+    image_barrier(cb, image, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                  VK_ACCESS_TRANSFER_READ_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+    record_host_read(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+}
+
+} // namespace
+
+SceneParams current_scene(const Viewer& v)
+{
+    SceneParams scene = make_scene(v.state.scene, v.scene_width, v.scene_height, v.images.chain.levels[0].width);
+    if (v.state.frame)
+        scene = scene_at_frame(scene, v.state.frame, v.images.chain.levels[0].width);
+    return v.controls.camera_set ? with_camera(scene, v.controls.camera) : scene;
+}
+
+void scene_changed(Viewer& v)
+{
+    restart(v.images);
+    v.state.camera = v.controls.camera_set ? to_string(v.controls.camera) : "";
+    v.last_move = std::chrono::steady_clock::now();
+    v.stats.fetches_per_pixel = -1;
+}
+
+std::string view_title(const Viewer& v)
+{
+    return "texfilter view: " + to_string(v.state.scene) + ", " + to_string(v.state.a.options.filter) +
+           (v.images.has_b ? " | " + to_string(v.images.b.options.filter) : std::string());
+}
+
+bool draw_frame(Viewer& v, bool with_ui, const Buffer* capture)
+{
+    int width = 0, height = 0;
+    framebuffer_size(*v.window, width, height);
+    if (width == 0 || height == 0)
+        return false; // minimised: no swapchain at zero extent
+    if (v.window->resized || !v.swapchain.handle || uint32_t(width) != v.swapchain.extent.width ||
+        uint32_t(height) != v.swapchain.extent.height)
+        recreate_swapchain(v, width, height);
+
+    const auto start = std::chrono::steady_clock::now();
+    update_images(v);
+    if (with_ui) {
+        imgui_begin_frame();
+        build_ui(v);
+        imgui_end_frame();
+    }
+
+    uint32_t index = 0;
+    VkResult acquired = vkAcquireNextImageKHR(v.context.device, v.swapchain.handle, UINT64_MAX, v.acquired,
+                                              VK_NULL_HANDLE, &index);
+    if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
+        v.window->resized = true;
+        return false;
+    }
+    if (acquired != VK_SUBOPTIMAL_KHR)
+        TF_VK(acquired);
+
+    VkCommandBuffer cb = v.command_buffer;
+    TF_VK(vkResetCommandBuffer(cb, 0));
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    TF_VK(vkBeginCommandBuffer(cb, &begin));
+    VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    pass.renderPass = v.swapchain.render_pass;
+    pass.framebuffer = v.swapchain.framebuffers[index];
+    pass.renderArea = {{0, 0}, v.swapchain.extent};
+    vkCmdBeginRenderPass(cb, &pass, VK_SUBPASS_CONTENTS_INLINE);
+    record_compose(cb, v.compose, v.swapchain.extent, compose_params(v, with_ui));
+    if (with_ui)
+        record_imgui(cb);
+    vkCmdEndRenderPass(cb);
+    if (capture)
+        record_capture(cb, v.swapchain.images[index], v.swapchain.extent, *capture);
+    TF_VK(vkEndCommandBuffer(cb));
+
+    VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.waitSemaphoreCount = 1;
+    submit.pWaitSemaphores = &v.acquired;
+    submit.pWaitDstStageMask = &wait_stage;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cb;
+    submit.signalSemaphoreCount = 1;
+    submit.pSignalSemaphores = &v.swapchain.rendered[index];
+    TF_VK(vkResetFences(v.context.device, 1, &v.frame_done));
+    TF_VK(vkQueueSubmit(v.context.queue, 1, &submit, v.frame_done));
+    VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+    present.waitSemaphoreCount = 1;
+    present.pWaitSemaphores = &v.swapchain.rendered[index];
+    present.swapchainCount = 1;
+    present.pSwapchains = &v.swapchain.handle;
+    present.pImageIndices = &index;
+    VkResult presented = vkQueuePresentKHR(v.context.queue, &present);
+    if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR)
+        v.window->resized = true;
+    else
+        TF_VK(presented);
+    // One frame in flight: the next frame rewrites the compose buffers and the command buffer.
+    TF_VK(vkWaitForFences(v.context.device, 1, &v.frame_done, VK_TRUE, UINT64_MAX));
+    v.stats.frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return true;
+}
+
+void finish_images(Viewer& v)
+{
+    v.last_move = {};
+    v.controls.animate = false;
+    const SceneParams scene = current_scene(v);
+    SceneImages& im = v.images;
+    // Bounded: each step adds at least one sample, and a ground truth has at most 4096.
+    for (HalfImage* h : {&im.a, &im.b, &im.truth}) {
+        if ((h == &im.b && !im.has_b) || (h == &im.truth && !im.wants_truth))
+            continue;
+        while (!h->complete)
+            step_half(im, *h, scene, 1, samples_per_pixel(h->options));
+    }
+    set_compose_image(v.compose, ComposeImage::a, im.a.image);
+    if (im.has_b)
+        set_compose_image(v.compose, ComposeImage::b, im.b.image);
+    if (im.wants_truth)
+        set_compose_image(v.compose, ComposeImage::truth, im.truth.image);
+}
+
+} // namespace tf

@@ -1,0 +1,113 @@
+#pragma once
+// texfilter view: the window, its swapchain and UI, the scene images, and the loop that ties them. One
+// frame in flight: the scene renders synchronously (render_frame), then the composition and the UI are
+// recorded, submitted and presented.
+#include "view/compose.h"
+#include "view/imgui_layer.h"
+#include "view/scene_images.h"
+#include "view/script.h"
+#include "view/swapchain.h"
+#include "view/view_state.h"
+#include "view/window.h"
+#include "scene/camera.h"
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tf {
+
+struct ViewOptions {
+    ViewState state;
+    ContextOptions device;
+    std::vector<ScriptAction> script; // empty: interactive
+    std::string script_name;
+    std::string frame_log; // --frame-log: every frame's times as CSV (the viewer benchmark)
+    bool preview = true;   // --no-preview: every frame at full size (the benchmark's baseline)
+};
+
+// What the person (or the script) looks at, beyond ViewState: the UI's own state.
+struct ViewControls {
+    Camera camera;
+    bool camera_set = false; // false: the scene's own camera
+    bool animate = false;
+    bool truth = false;       // B is the ground truth, accumulated progressively
+    bool ui = true;           // panels shown
+    bool loupe = false;
+    glm::ivec2 loupe_center{0};
+    int loupe_radius = 96, loupe_zoom = 8;
+    glm::ivec2 cursor{-1};    // the pixel the footprint overlay follows; -1: the mouse
+    bool footprint = true;
+    float error_max = 0.1f;
+    bool orbit = false;       // mouse drag orbits the look target instead of turning
+    std::string message;      // the last problem (a texture that did not load): shown in the UI
+    std::string pending_screenshot; // asked for in the UI: taken after the frame
+};
+
+struct FrameStats {
+    double frame_ms = 0, render_ms = 0;
+    int preview_scale = 1; // 1: full size
+    double fetches_per_pixel = -1; // A's, measured when the view settles; -1: not yet
+};
+
+struct Viewer {
+    ViewOptions options;
+    ViewState state;
+    ViewControls controls;
+    VulkanContext context;
+    Window* window = nullptr;
+    VkSurfaceKHR surface = VK_NULL_HANDLE;
+    Swapchain swapchain;
+    ComposePass compose;
+    ImGuiLayer imgui;
+    SceneImages images;
+    VkSemaphore acquired = VK_NULL_HANDLE;
+    VkFence frame_done = VK_NULL_HANDLE;
+    VkCommandPool command_pool = VK_NULL_HANDLE; // its own: the frame's command buffer is reset and reused
+    VkCommandBuffer command_buffer = VK_NULL_HANDLE;
+    FrameStats stats;
+    int preview_scale = 1;
+    std::chrono::steady_clock::time_point last_move{};
+    bool quit = false;
+    int scene_width = 0, scene_height = 0; // even: the framebuffer's size rounded down
+};
+
+int run_viewer(const ViewOptions& options);
+
+// viewer.cpp
+SceneParams current_scene(const Viewer& viewer);
+void scene_changed(Viewer& viewer); // camera, frame, size or scene: images start over, the camera counts as moving
+// Applies a new ViewState (scene, texture, filters); a texture that fails keeps the old one and returns the message.
+std::string apply_state(Viewer& viewer, const ViewState& next);
+// Renders and presents one frame; with_ui false: the scene alone (screenshots). Returns false when there
+// was nothing to present to (minimised).
+// capture (or null): the presented image is also copied there (screenshots).
+bool draw_frame(Viewer& viewer, bool with_ui, const Buffer* capture = nullptr);
+// Renders every half to completion at full size (screenshots).
+void finish_images(Viewer& viewer);
+std::string view_title(const Viewer& viewer);
+
+bool moving_now(const Viewer& viewer);      // the camera moved within the settle time, or animates
+bool images_complete(const Viewer& viewer); // every half at full size with all its samples
+void take_dropped_files(Viewer& viewer);    // a file dropped onto the window becomes the texture
+void create_frame_objects(Viewer& viewer);  // the acquire semaphore, the frame fence, the command buffer
+void destroy_frame_objects(Viewer& viewer);
+
+// screenshot.cpp: the frame just presented (the scene alone, or with_ui the whole window) to PNG, and beside a
+// scene screenshot PATH.txt (the texfilter render lines) and PATH.json (the state, for --state).
+void screenshot(Viewer& viewer, const std::string& path, bool with_ui);
+
+// script_runner.cpp: runs actions until one needs frames to pass. Returns false when the script is over.
+struct ScriptRun {
+    size_t next = 0;
+    int wait_frames = 0;
+    std::chrono::steady_clock::time_point hold_until{};
+};
+bool run_script_step(Viewer& viewer, ScriptRun& run);
+
+// ui.cpp: the panels; changes go through apply_state / scene_changed.
+void build_ui(Viewer& viewer);
+// input.cpp: mouse and keys move the camera (when the UI does not want them).
+void handle_input(Viewer& viewer, double seconds);
+
+} // namespace tf

@@ -1,0 +1,248 @@
+#!/usr/bin/env bash
+# The viewer in a real window: texfilter view --script under Xvfb (lavapipe presents there), with the
+# validation layers on (any message fails the viewer's run, exit 2).
+#
+# usage: view_tests.sh TEXFILTER XWD_COMPARE GROUP   (--list names the groups; one ctest entry each)
+#
+# Screenshots are read back from the swapchain; each writes beside it the `texfilter render` lines that
+# reproduce it offscreen, which this script runs and compares: the same renderer, so the only difference
+# allowed is the sRGB encode of the 8-bit swapchain against the PNG writer's (one 8-bit step).
+set -euo pipefail
+
+CASE_GROUPS=(no-display bad-script scene-plane scene-tunnel scene-zoom scene-minify scene-slanted scene-triangles
+             scene-mesh split debug-views truth camera state x-capture window-events ui)
+if [[ ${1:-} == --list ]]; then
+    printf '%s\n' "${CASE_GROUPS[@]}"
+    exit 0
+fi
+if [[ $# -ne 3 ]]; then
+    echo "usage: $0 TEXFILTER XWD_COMPARE GROUP   (or: $0 --list)" >&2
+    exit 2
+fi
+TEXFILTER=$(realpath "$1")
+XWD_COMPARE=$(realpath "$2")
+GROUP=$3
+export TEXFILTER_VALIDATE=1
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+cd "$WORK"
+SIZE=256x256
+# One 8-bit sRGB step: the swapchain's encode against the PNG writer's (both from the same float pixels).
+ONE_STEP=0.0040
+
+failed=0
+pass() { echo "PASS  $1"; }
+fail() {
+    echo "FAIL  $1: $2"
+    for f in view.stderr stderr; do [[ -s $f ]] && sed "s/^/      $f| /" "$f"; done
+    failed=1
+}
+
+# view SCRIPT_TEXT [FLAGS...]: runs the viewer on a script under its own X server; sets rc.
+view() {
+    printf '%s\n' "$1" >script.txt
+    shift
+    rc=0
+    timeout 300 xvfb-run -a -s "-screen 0 1280x1024x24" "$TEXFILTER" view --script script.txt --size "$SIZE" "$@" \
+        >view.stdout 2>view.stderr || rc=$?
+}
+
+# render_like SHOT.png LINE OUT.png: runs line LINE of SHOT.txt (a texfilter render command) with -o OUT.png.
+render_like() {
+    local shot=$1 number=$2 out=$3 line
+    line=$(sed -n "${number}p" "${shot%.png}.txt")
+    [[ $line == "texfilter render "* ]] || { echo "no render line $number in ${shot%.png}.txt" >stderr; return 1; }
+    # The line ends in -o PATH; the test writes its own file instead.
+    eval "set -- ${line#texfilter render }"
+    local args=()
+    while [[ $# -gt 0 ]]; do
+        if [[ $1 == -o ]]; then shift 2; continue; fi
+        args+=("$1"); shift
+    done
+    "$TEXFILTER" render "${args[@]}" -o "$out" 2>stderr >/dev/null
+}
+
+# same_as_render DESCRIPTION SHOT.png: the screenshot equals its render line within one 8-bit step.
+same_as_render() {
+    if ! render_like "$2" 1 offscreen.png; then
+        fail "$1" "the render line of $2 failed"
+    elif ! "$TEXFILTER" diff "$2" offscreen.png --fail "$ONE_STEP" >diff.out 2>stderr; then
+        fail "$1" "screenshot and render differ: $(cat diff.out)"
+    else
+        pass "$1"
+    fi
+}
+
+viewer_ok() { # DESCRIPTION: the viewer ran the script to the end, exit 0, no validation message
+    if [[ $rc -ne 0 ]]; then
+        fail "$1" "view exited $rc"
+        return 1
+    elif grep -q "validation" view.stderr; then
+        fail "$1" "validation messages"
+        return 1
+    fi
+    return 0
+}
+
+scene_group() { # SCENE: each filter's screenshot equals texfilter render of its printed line
+    local scene=$1 script="scene $1
+texture checker --texture-size 64
+ui off" filters=(trilinear aniso ewa)
+    [[ $scene == zoom ]] && filters=(bilinear trilinear)
+    for f in "${filters[@]}"; do script+="
+filter $f
+screenshot $scene-$f.png"; done
+    script+="
+quit"
+    view "$script"
+    viewer_ok "view $scene" || return
+    for f in "${filters[@]}"; do same_as_render "$scene $f: swapchain screenshot = texfilter render" "$scene-$f.png"; done
+}
+
+case $GROUP in
+no-display)
+    rc=0
+    env -u DISPLAY "$TEXFILTER" view --size 64x64 >stdout 2>stderr || rc=$?
+    if [[ $rc -eq 2 ]] && grep -q "DISPLAY" stderr && grep -q "xvfb-run" stderr && [[ $(wc -l <stderr) -eq 1 ]]; then
+        pass "no display: one sentence, exit 2"
+    else
+        fail "no display" "exit $rc, expected 2 and one line naming DISPLAY and xvfb-run"
+    fi
+    ;;
+bad-script)
+    printf 'scene plane\nfilter nosuchfilter\n' >bad.txt
+    rc=0
+    env -u DISPLAY "$TEXFILTER" view --script bad.txt >stdout 2>stderr || rc=$?
+    if [[ $rc -eq 2 ]] && grep -q "bad.txt:2" stderr; then pass "bad script line named before any window"; else
+        fail "bad script" "exit $rc; expected 2 and bad.txt:2 on stderr"; fi
+    ;;
+scene-*) scene_group "${GROUP#scene-}" ;;
+split)
+    view "texture checker --texture-size 64
+filter trilinear
+compare ewa
+divider 0.5
+ui off
+screenshot split.png
+quit"
+    viewer_ok split || exit 1
+    [[ $(wc -l <split.txt) -eq 2 ]] || fail split "split.txt should hold two render lines"
+    render_like split.png 1 a.png && render_like split.png 2 b.png || fail split "render lines failed"
+    # left half from A's render, right half from B's: A's left half (the foreground) pasted over B's render.
+    oiiotool a.png --cut 128x256+0+0 b.png --paste +0+0 -o expected.png 2>stderr
+    if "$TEXFILTER" diff split.png expected.png --fail "$ONE_STEP" >diff.out 2>stderr; then
+        pass "split: left = A's render, right = B's"; else fail split "$(cat diff.out)"; fi
+    ;;
+debug-views)
+    script="scene slanted
+texture checker --texture-size 64
+ui off"
+    for v in lod anisotropy fetches; do script+="
+filter aniso
+view $v
+screenshot view-$v.png"; done
+    view "$script
+quit"
+    viewer_ok debug-views || exit 1
+    for v in lod anisotropy fetches; do same_as_render "debug view $v = texfilter render --view $v" "view-$v.png"; done
+    ;;
+truth)
+    view "scene minify
+texture checker --texture-size 64
+filter trilinear --spp 16
+truth on
+ui off
+screenshot truth.png
+view error
+screenshot error.png
+quit"
+    viewer_ok truth || exit 1
+    render_like truth.png 2 gt.png || fail truth "ground-truth line failed"
+    oiiotool truth.png --cut 128x256+128+0 -o right.png && oiiotool gt.png --cut 128x256+128+0 -o gt-right.png
+    if "$TEXFILTER" diff right.png gt-right.png --fail "$ONE_STEP" >diff.out 2>stderr; then
+        pass "truth: progressive accumulation = texfilter render --filter ground-truth"; else fail truth "$(cat diff.out)"; fi
+    ;;
+camera)
+    view "scene plane
+texture checker --texture-size 64
+ui off
+camera fly 0.1 0.05 0.3
+camera turn 10 -5
+frame 7
+screenshot moved.png
+camera reset
+frame 0
+screenshot home.png
+quit"
+    viewer_ok camera || exit 1
+    grep -q -- "--camera" moved.txt && grep -q -- "--frame 7" moved.txt || fail camera "moved.txt lacks --camera/--frame"
+    same_as_render "moved camera and frame 7 = texfilter render --camera --frame" moved.png
+    if "$TEXFILTER" diff moved.png home.png >/dev/null 2>&1; then fail camera "the camera did not move the image"; else
+        pass "the camera moves the image"; fi
+    ;;
+state)
+    view "scene tunnel
+texture grid --texture-size 64
+filter ewa --alpha 3
+ui off
+screenshot first.png
+quit"
+    viewer_ok "state: first" || exit 1
+    view "ui off
+screenshot again.png
+quit" --state first.json
+    viewer_ok "state: again" || exit 1
+    if cmp -s first.png again.png; then pass "--state reproduces the screenshot bit for bit"; else
+        fail state "the screenshot from --state differs"; fi
+    ;;
+x-capture)
+    printf '%s\n' "texture zoneplate --texture-size 64" "ui off" "screenshot shown.png" "hold 6000" "quit" >script.txt
+    rc=0
+    # The X server is the test's own, so xwd can capture its root while the viewer holds the frame.
+    xvfb-run -a -s "-screen 0 640x480x24" bash -c '
+        "$1" view --script script.txt --size 256x256 >view.stdout 2>view.stderr & pid=$!
+        for i in $(seq 600); do [[ -s shown.json ]] && break; sleep 0.1; done
+        sleep 1
+        xwd -root -screen -silent -out root.xwd
+        wait $pid' _ "$TEXFILTER" || rc=$?
+    viewer_ok x-capture || exit 1
+    if "$XWD_COMPARE" root.xwd shown.png --at 0,0 >cmp.out 2>stderr; then
+        pass "X-side capture of the window = swapchain readback"; else fail x-capture "$(cat cmp.out)"; fi
+    ;;
+window-events)
+    view "texture checker --texture-size 64
+ui off
+screenshot before.png
+resize 320x200
+wait 3
+screenshot resized.png
+minimize
+wait 5
+restore
+wait 3
+texture /nonexistent/texture.png
+resize 256x256
+wait 3
+screenshot after.png
+close"
+    viewer_ok window-events || exit 1
+    grep -q "/nonexistent/texture.png" view.stderr || fail window-events "no message for the bad texture path"
+    read -r w h < <(oiiotool --info resized.png | sed -n 's/.* : *\([0-9]*\) x *\([0-9]*\).*/\1 \2/p')
+    [[ "$w $h" == "320 200" ]] || fail window-events "resized screenshot is ${w}x${h}, expected 320x200"
+    same_as_render "after resize: screenshot = render" resized.png
+    if cmp -s before.png after.png; then pass "resize, minimise, restore and a bad texture keep the frame"; else
+        fail window-events "the frame after the bad texture differs from before"; fi
+    ;;
+ui)
+    view "texture checker --texture-size 64
+screenshot-ui whole.png
+ui off
+screenshot bare.png
+quit"
+    viewer_ok ui || exit 1
+    if "$TEXFILTER" diff whole.png bare.png >/dev/null 2>&1; then fail ui "the UI screenshot shows no panels"; else
+        pass "screenshot-ui holds the panels, screenshot does not"; fi
+    ;;
+*) echo "unknown group $GROUP" >&2; exit 2 ;;
+esac
+exit $failed
