@@ -115,6 +115,7 @@ std::string apply_state(Viewer& v, const ViewState& requested)
     if (v.controls.truth) { // what the screenshot's second line renders
         v.state.b = ViewHalf{im.b.options};
     }
+    v.stats.fetches_measured = false;
     if (scene_moved)
         scene_changed(v);
     if (v.window)

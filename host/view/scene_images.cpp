@@ -1,4 +1,5 @@
 #include "view/scene_images.h"
+#include "reference/scene_cast.h"
 #include <algorithm>
 #include <chrono>
 
@@ -48,7 +49,7 @@ int samples_per_pixel(const SamplerOptions& options)
 
 void destroy_scene_images(SceneImages& images)
 {
-    for (HalfImage* h : {&images.a, &images.b, &images.truth})
+    for (HalfImage* h : {&images.a, &images.b, &images.truth, &images.stats})
         h->renderers.clear();
     if (images.context)
         destroy_texture(*images.context, images.texture);
@@ -59,7 +60,7 @@ void set_texture(SceneImages& images, MipChain chain)
 {
     const bool sat = half_needs_sat(images.a) || (images.has_b && half_needs_sat(images.b));
     GpuTexture uploaded = upload_texture(*images.context, chain, sat); // first: a failure keeps the old one
-    for (HalfImage* h : {&images.a, &images.b, &images.truth}) {
+    for (HalfImage* h : {&images.a, &images.b, &images.truth, &images.stats}) {
         h->renderers.clear(); // their descriptor sets name the old images
         start_over(*h);
     }
@@ -120,6 +121,31 @@ bool step_half(SceneImages& images, HalfImage& half, const SceneParams& full_sce
     }
     half.last_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return true;
+}
+
+double fetches_per_pixel(SceneImages& images, const HalfImage& half, const SceneParams& full_scene)
+{
+    const Filter f = half.options.filter;
+    if (f == Filter::ground_truth || f == Filter::none)
+        return -1.0;
+    RenderOptions render = half.render;
+    render.view = DebugView::data;
+    HalfImage& stats = images.stats; // measured once the view settles: a renderer made for it is cheap enough
+    stats.renderers.clear();
+    stats.options = half.options;
+    stats.render = render;
+    const SceneParams scene = scaled_scene(full_scene, 4);
+    GpuRenderer& renderer = renderer_for(images, stats, scene);
+    const Image data = render_frame(renderer, scene);
+    double sum = 0.0;
+    int covered = 0;
+    for (int y = 0; y < data.height; ++y)
+        for (int x = 0; x < data.width; ++x)
+            if (reference_hit(scene, x + 0.5, y + 0.5).hit) {
+                sum += data.at(x, y).b;
+                ++covered;
+            }
+    return covered ? sum / covered : 0.0;
 }
 
 } // namespace tf

@@ -32,6 +32,7 @@ struct SceneImages {
     GpuTexture texture;
     bool texture_has_sat = false;
     HalfImage a, b, truth;
+    HalfImage stats; // fetches_per_pixel's renders
     bool has_b = false, wants_truth = false;
 };
 
@@ -49,5 +50,10 @@ void restart(SceneImages& images);
 bool step_half(SceneImages& images, HalfImage& half, const SceneParams& scene, int scale, int truth_samples);
 
 int samples_per_pixel(const SamplerOptions& options); // ground truth: side^2; others 1
+
+// `half`'s texel fetches and hardware lookups per covered pixel (the HUD's figure): its `data` view (B = the
+// pixel's count) rendered at 1/4 of the size, averaged over the pixels the scene's surface covers. -1 for the
+// ground truth and none.
+double fetches_per_pixel(SceneImages& images, const HalfImage& half, const SceneParams& scene);
 
 } // namespace tf

@@ -97,6 +97,8 @@ void hud(Viewer& v)
                                                                                                   : nullptr;
         if (gt)
             ImGui::Text("ground truth %d / %d samples", gt->samples_done, samples_per_pixel(gt->options));
+        if (v.stats.fetches_measured && v.stats.fetches_per_pixel >= 0)
+            ImGui::Text("A: %.1f texel fetches + hardware lookups a pixel", v.stats.fetches_per_pixel);
         ImGui::Text("%s", v.context.info.name.c_str());
         ImGui::Text("%s %s", v.context.info.driver_name.c_str(), v.context.info.driver_info.c_str());
         ImGui::Text("frame %d of the camera path%s", v.state.frame, v.controls.animate ? " (animating)" : "");
@@ -104,13 +106,16 @@ void hud(Viewer& v)
     ImGui::End();
 }
 
-// The pixel's footprint (the ellipse the filter integrates, and the aniso probes) mapped from uv back to
+// The pixel's footprint under `half`'s filter (the ellipse it integrates, and the aniso probes) mapped from uv back to
 // the window through the inverse of the pixel's uv Jacobian, magnified with the loupe when it is under it.
-void draw_footprint(Viewer& v, glm::ivec2 pixel)
+void draw_footprint(Viewer& v, const HalfImage& half, glm::ivec2 pixel)
 {
     if (pixel.x < 0 || pixel.y < 0 || pixel.x >= v.scene_width || pixel.y >= v.scene_height)
         return;
-    PixelFootprint f = pixel_footprint(current_scene(v), v.images.chain, v.images.a.options, v.images.a.render, pixel);
+    const Filter filter = half.options.filter;
+    if (filter == Filter::ground_truth || filter == Filter::none)
+        return;
+    PixelFootprint f = pixel_footprint(current_scene(v), v.images.chain, half.options, half.render, pixel);
     if (!f.hit)
         return;
     const glm::dmat2 j(f.duv_dx, f.duv_dy); // columns: uv per window pixel in x and in y
@@ -163,8 +168,7 @@ void overlays(Viewer& v)
         draw->AddRect(ImVec2(float(c.x) - r, float(c.y) - r), ImVec2(float(c.x) + r, float(c.y) + r),
                       IM_COL32(255, 255, 255, 220));
     }
-    if (v.controls.footprint && v.images.a.options.filter != Filter::ground_truth &&
-        v.images.a.options.filter != Filter::none) {
+    if (v.controls.footprint) {
         glm::ivec2 pixel = v.controls.cursor;
         if (pixel.x < 0 && !io.WantCaptureMouse) {
             pixel = {int(io.MousePos.x), int(io.MousePos.y)};
@@ -172,8 +176,9 @@ void overlays(Viewer& v)
                 pixel = v.controls.loupe_center +
                         glm::ivec2(glm::floor(glm::vec2(pixel - v.controls.loupe_center) / float(v.controls.loupe_zoom) + 0.5f));
         }
-        if (pixel.x >= 0 && (!v.images.has_b || pixel.x < int(v.state.divider * float(v.scene_width))))
-            draw_footprint(v, pixel);
+        const bool in_b = v.images.has_b && pixel.x >= int(std::lround(v.state.divider * float(v.scene_width)));
+        if (pixel.x >= 0)
+            draw_footprint(v, in_b ? v.images.b : v.images.a, pixel); // the filter of the half under it
     }
 }
 

@@ -173,7 +173,7 @@ void scene_changed(Viewer& v)
     restart(v.images);
     v.state.camera = v.controls.camera_set ? to_string(v.controls.camera) : "";
     v.last_move = std::chrono::steady_clock::now();
-    v.stats.fetches_per_pixel = -1;
+    v.stats.fetches_measured = false;
 }
 
 std::string view_title(const Viewer& v)
@@ -194,6 +194,10 @@ bool draw_frame(Viewer& v, bool with_ui, const Buffer* capture)
 
     const auto start = std::chrono::steady_clock::now();
     update_images(v);
+    if (with_ui && !v.stats.fetches_measured && images_complete(v)) {
+        v.stats.fetches_per_pixel = fetches_per_pixel(v.images, v.images.a, current_scene(v));
+        v.stats.fetches_measured = true;
+    }
     if (with_ui) {
         imgui_begin_frame();
         build_ui(v);

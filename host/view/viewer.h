@@ -47,7 +47,8 @@ struct ViewControls {
 struct FrameStats {
     double frame_ms = 0, render_ms = 0;
     int preview_scale = 1; // 1: full size
-    double fetches_per_pixel = -1; // A's, measured when the view settles; -1: not yet
+    double fetches_per_pixel = -1; // A's, measured when the view settles with the HUD shown
+    bool fetches_measured = false;
 };
 
 struct Viewer {
