@@ -124,14 +124,20 @@ compare ewa
 divider 0.5
 ui off
 screenshot split.png
+stage compute
+screenshot split-compute.png
 quit"
     viewer_ok split || exit 1
-    [[ $(wc -l <split.txt) -eq 2 ]] || fail split "split.txt should hold two render lines"
-    render_like split.png 1 a.png && render_like split.png 2 b.png || fail split "render lines failed"
-    # left half from A's render, right half from B's: A's left half (the foreground) pasted over B's render.
-    oiiotool a.png --cut 128x256+0+0 b.png --paste +0+0 -o expected.png 2>stderr
-    if "$TEXFILTER" diff split.png expected.png --fail "$ONE_STEP" >diff.out 2>stderr; then
-        pass "split: left = A's render, right = B's"; else fail split "$(cat diff.out)"; fi
+    # Fragment stage: the window is made by blits from the render targets; compute stage: by the composition
+    # pass from the pixel buffers. Both must show the renders.
+    for shot in split split-compute; do
+        [[ $(wc -l <$shot.txt) -eq 2 ]] || fail $shot "$shot.txt should hold two render lines"
+        render_like $shot.png 1 a.png && render_like $shot.png 2 b.png || fail $shot "render lines failed"
+        # left half from A's render, right half from B's: A's left half (the foreground) pasted over B's render.
+        oiiotool a.png --cut 128x256+0+0 b.png --paste +0+0 -o expected.png 2>stderr
+        if "$TEXFILTER" diff $shot.png expected.png --fail "$ONE_STEP" >diff.out 2>stderr; then
+            pass "$shot: left = A's render, right = B's"; else fail $shot "$(cat diff.out)"; fi
+    done
     ;;
 debug-views)
     script="scene slanted

@@ -24,8 +24,10 @@ trap 'rm -rf "$work"' EXIT
 texfilter=$(realpath "$texfilter")
 run_x() { if [[ -n ${DISPLAY:-} ]]; then "$@"; else xvfb-run -a -s "-screen 0 ${size}x24" "$@"; fi; }
 
-echo "device: $("$texfilter" info "${device[@]}" 2>/dev/null | sed -n 's/^selected: *//p' | head -1)"
-echo "date: $(date -u +%Y-%m-%dT%H:%MZ)  size: $size  frames in flight: $frames"
+info=$("$texfilter" info "${device[@]}" 2>/dev/null)
+echo "device: $(sed -n 's/^texfilter would use: *//p' <<<"$info")"
+echo "driver: $(grep -m1 '^    driver' <<<"$info" | sed 's/^ *//')"
+echo "date: $(date -u +%Y-%m-%dT%H:%MZ)  size: $size  flight: $frames frames, then a rest"
 printf '%-12s %-8s %10s %10s %10s %10s %8s\n' filter mode median_ms p95_ms worst_ms rest_ms preview
 for f in "${filters[@]}"; do
     for mode in preview full; do

@@ -26,19 +26,15 @@ std::string texture_key(const TextureSource& t)
     return t.name_or_path + '\n' + std::to_string(t.procedural_size) + '\n' + std::to_string(int(t.color));
 }
 
-// The ground truth the error view measures against (and truth mode shows): A's wrap, 256 samples a pixel.
-SamplerOptions truth_options(const SamplerOptions& a)
-{
-    SamplerOptions t;
-    t.filter = Filter::ground_truth;
-    t.wrap = a.wrap;
-    return t;
-}
+SamplerOptions truth_options(const SamplerOptions& a) { return truth_half(ViewHalf{a}).options; }
 
-RenderOptions half_render(const ViewState& s, const std::string& view)
+// The halves' render options: the debug view, where the half's filter has one (not the ground truth or none;
+// the error view is the composition's).
+RenderOptions half_render(const ViewState& s, const std::string& view, const SamplerOptions& half)
 {
     RenderOptions r = s.render;
-    r.view = view == "error" ? DebugView::color : parse_view(view);
+    const bool viewable = half.filter != Filter::ground_truth && half.filter != Filter::none;
+    r.view = view == "error" || !viewable ? DebugView::color : parse_view(view);
     return r;
 }
 
@@ -79,10 +75,8 @@ std::string apply_state(Viewer& v, const ViewState& requested)
         try {
             DeviceLimits limits = device_limits(v.context.info);
             MipChain chain = load_texture(next.texture, {needs_sat(next), &limits});
-            ViewState kept = v.state;
             v.state.texture = next.texture;
             set_texture(im, std::move(chain));
-            (void)kept;
         } catch (const Error& e) {
             if (first)
                 throw;
@@ -91,21 +85,22 @@ std::string apply_state(Viewer& v, const ViewState& requested)
         scene_changed(v);
     }
     const bool scene_moved = next.scene != v.state.scene || next.frame != v.state.frame || first;
-    const std::string a_key = options_key(next.a.options, half_render(next, next.view));
+    const std::string a_key = options_key(next.a.options, half_render(next, next.view, next.a.options));
     if (first || a_key != options_key(im.a.options, im.a.render))
-        set_half_options(im, im.a, next.a.options, half_render(next, next.view));
+        set_half_options(im, im.a, next.a.options, half_render(next, next.view, next.a.options));
     std::optional<SamplerOptions> b;
     if (v.controls.truth)
         b = truth_options(next.a.options);
     else if (next.b)
         b = next.b->options;
     im.has_b = b.has_value();
-    if (b && options_key(*b, half_render(next, next.view)) != options_key(im.b.options, im.b.render))
-        set_half_options(im, im.b, *b, half_render(next, next.view));
+    if (b && options_key(*b, half_render(next, next.view, *b)) != options_key(im.b.options, im.b.render))
+        set_half_options(im, im.b, *b, half_render(next, next.view, *b));
     im.wants_truth = next.view == "error";
-    if (im.wants_truth && (first || options_key(truth_options(next.a.options), next.render) !=
+    const SamplerOptions truth = truth_options(next.a.options);
+    if (im.wants_truth && (first || options_key(truth, half_render(next, "color", truth)) !=
                                         options_key(im.truth.options, im.truth.render)))
-        set_half_options(im, im.truth, truth_options(next.a.options), half_render(next, "color"));
+        set_half_options(im, im.truth, truth, half_render(next, "color", truth));
     const TextureSource texture = v.state.texture; // the one loaded
     const int width = v.state.width, height = v.state.height;
     v.state = next;

@@ -11,6 +11,7 @@ bool half_needs_sat(const HalfImage& h) { return needs_sat(h.options.filter); }
 
 void start_over(HalfImage& half)
 {
+    half.shown = nullptr;
     half.complete = false;
     half.samples_done = 0;
     half.sum.clear();
@@ -22,8 +23,10 @@ GpuRenderer& renderer_for(SceneImages& images, HalfImage& half, const SceneParam
     auto found = half.renderers.find(key);
     if (found != half.renderers.end())
         return *found->second;
-    if (half.renderers.size() >= 4) // full size and a few preview sizes; the rest are made again when needed
+    if (half.renderers.size() >= 6) { // full size and the previews' sizes (1/2 .. 1/16), a window resize or two
+        half.shown = nullptr;
         half.renderers.clear();
+    }
     auto made = create_renderer(*images.context, images.texture, scene, half.options, half.render);
     return *half.renderers.emplace(key, std::move(made)).first->second;
 }
@@ -38,6 +41,19 @@ SceneParams scaled_scene(const SceneParams& scene, int scale)
     s.kind_size.y = std::max(2, (scene.kind_size.y / scale) & ~1);
     s.kind_size.z = std::max(2, (scene.kind_size.z / scale) & ~1);
     return s;
+}
+
+bool same_options(const SamplerOptions& a, const SamplerOptions& b)
+{
+    return a.filter == b.filter && a.wrap == b.wrap && a.lod_bias == b.lod_bias && a.lod_min == b.lod_min &&
+           a.lod_max == b.lod_max && a.aniso == b.aniso && a.band == b.band && a.probes == b.probes &&
+           a.aniso_shape == b.aniso_shape && a.taps == b.taps && a.alpha == b.alpha && a.max_aniso == b.max_aniso &&
+           a.boxes == b.boxes && a.pixel_filter == b.pixel_filter && a.truth_side == b.truth_side;
+}
+
+bool same_render(const RenderOptions& a, const RenderOptions& b)
+{
+    return a.stage == b.stage && a.gradients == b.gradients && a.rasterize == b.rasterize && a.view == b.view;
 }
 
 } // namespace
@@ -74,8 +90,8 @@ void set_half_options(SceneImages& images, HalfImage& half, const SamplerOptions
 {
     half.options = options;
     half.render = render;
-    half.renderers.clear();
     start_over(half);
+    half.renderers.clear();
     if (needs_sat(options.filter) && !images.texture_has_sat) {
         MipChain chain = images.chain;
         set_texture(images, std::move(chain));
@@ -101,6 +117,7 @@ bool step_half(SceneImages& images, HalfImage& half, const SceneParams& full_sce
         renderer.push.truth_first = 0;
         renderer.push.truth_count = scale > 1 ? 1 : 0;
         half.image = render_frame(renderer, scene);
+        half.shown = renderer.kind == RenderKind::compute ? nullptr : &renderer;
         half.complete = scale <= 1 && half.options.filter != Filter::ground_truth;
         half.samples_done = 0;
         half.sum.clear();
@@ -115,6 +132,7 @@ bool step_half(SceneImages& images, HalfImage& half, const SceneParams& full_sce
             half.sum[i] += glm::dvec4(chunk.texels[i]) * double(count);
         half.samples_done += count;
         half.image = chunk;
+        half.shown = nullptr; // the mean of several renders lives on the host only
         for (size_t i = 0; i < chunk.texels.size(); ++i)
             half.image.texels[i] = glm::vec4(half.sum[i] / double(half.samples_done));
         half.complete = half.samples_done >= total;
@@ -130,8 +148,9 @@ double fetches_per_pixel(SceneImages& images, const HalfImage& half, const Scene
         return -1.0;
     RenderOptions render = half.render;
     render.view = DebugView::data;
-    HalfImage& stats = images.stats; // measured once the view settles: a renderer made for it is cheap enough
-    stats.renderers.clear();
+    HalfImage& stats = images.stats; // its renderers kept while the options stay: a pipeline takes ~1 s to make
+    if (!same_options(stats.options, half.options) || !same_render(stats.render, render))
+        stats.renderers.clear();
     stats.options = half.options;
     stats.render = render;
     const SceneParams scene = scaled_scene(full_scene, 4);

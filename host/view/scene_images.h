@@ -24,6 +24,9 @@ struct HalfImage {
     int samples_done = 0;    // ground truth: samples accumulated into `sum`
     std::vector<glm::dvec4> sum;
     double last_ms = 0;      // the last render's wall time
+    // The renderer whose colour target (RGBA32F, TRANSFER_SRC layout) holds `image` exactly, so that the
+    // window can blit it; null for the compute stage (a buffer) and an accumulated ground truth.
+    const GpuRenderer* shown = nullptr;
 };
 
 struct SceneImages {

@@ -6,25 +6,26 @@ namespace tf {
 
 namespace {
 
-VkRenderPass create_render_pass(const VulkanContext& context, VkFormat format)
+VkRenderPass create_render_pass(const VulkanContext& context, VkFormat format, bool load)
 {
     // The composition covers every pixel, so nothing is loaded; the image ends ready to present. A screenshot
     // moves it to TRANSFER_SRC and back itself.
     VkAttachmentDescription color{};
     color.format = format;
     color.samples = VK_SAMPLE_COUNT_1_BIT;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    color.loadOp = load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    color.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    color.initialLayout = load ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
     color.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
     VkAttachmentReference reference{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
     subpass.colorAttachmentCount = 1;
     subpass.pColorAttachments = &reference;
-    // The acquire semaphore is waited at COLOR_ATTACHMENT_OUTPUT: the layout change waits for it too.
+    // The acquire semaphore is waited at COLOR_ATTACHMENT_OUTPUT: the layout change waits for it too. (With
+    // `load`, the blits before the pass have their own barrier into COLOR_ATTACHMENT_OPTIMAL.)
     VkSubpassDependency dependency{};
     dependency.srcSubpass = VK_SUBPASS_EXTERNAL;
     dependency.dstSubpass = 0;
@@ -88,11 +89,19 @@ void create_swapchain(const VulkanContext& context, VkSurfaceKHR surface, uint32
 {
     VkSurfaceCapabilitiesKHR caps{};
     TF_VK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context.physical, surface, &caps));
-    const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     if ((caps.supportedUsageFlags & usage) != usage)
         throw Error("view: the window's surface on " + context.info.name +
                     " cannot be copied from (no TRANSFER_SRC usage): screenshots need it");
     VkSurfaceFormatKHR format = choose_surface_format(context, surface);
+    // Blits put the scene on the window (a fraction of a full-screen pass's cost on a CPU rasterizer); where the
+    // surface or format does not take them, the composition pass does it all.
+    VkFormatProperties features{};
+    vkGetPhysicalDeviceFormatProperties(context.physical, format.format, &features);
+    s.blit_target = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT) &&
+                    (features.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT);
+    if (s.blit_target)
+        usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     VkExtent2D extent{width, height};
     if (caps.currentExtent.width != UINT32_MAX)
         extent = caps.currentExtent; // X11: the window's size, which the surface dictates
@@ -127,13 +136,16 @@ void create_swapchain(const VulkanContext& context, VkSurfaceKHR surface, uint32
     s.handle = handle;
     if (s.render_pass && s.format != format.format) {
         vkDestroyRenderPass(context.device, s.render_pass, nullptr);
-        s.render_pass = VK_NULL_HANDLE;
+        vkDestroyRenderPass(context.device, s.load_pass, nullptr);
+        s.render_pass = s.load_pass = VK_NULL_HANDLE;
     }
     s.format = format.format;
     s.extent = extent;
     s.min_image_count = images;
-    if (!s.render_pass)
-        s.render_pass = create_render_pass(context, s.format);
+    if (!s.render_pass) {
+        s.render_pass = create_render_pass(context, s.format, false);
+        s.load_pass = create_render_pass(context, s.format, true);
+    }
 
     uint32_t count = 0;
     TF_VK(vkGetSwapchainImagesKHR(context.device, s.handle, &count, nullptr));
@@ -169,6 +181,8 @@ void destroy_swapchain(const VulkanContext& context, Swapchain& s)
         vkDestroySwapchainKHR(context.device, s.handle, nullptr);
     if (s.render_pass)
         vkDestroyRenderPass(context.device, s.render_pass, nullptr);
+    if (s.load_pass)
+        vkDestroyRenderPass(context.device, s.load_pass, nullptr);
     s = Swapchain{};
 }
 

@@ -17,6 +17,10 @@ struct Swapchain {
     std::vector<VkFramebuffer> framebuffers;
     std::vector<VkSemaphore> rendered; // one per image: the image's drawing finished, present may read it
     VkRenderPass render_pass = VK_NULL_HANDLE; // kept across recreation while the format stays
+    // The UI over what blits wrote (loads the image, which is in COLOR_ATTACHMENT_OPTIMAL); compatible with
+    // render_pass, so the framebuffers and pipelines serve both.
+    VkRenderPass load_pass = VK_NULL_HANDLE;
+    bool blit_target = false; // the images take blits (TRANSFER_DST usage, BLIT_DST format feature)
 };
 
 // An sRGB colour format the surface offers (B8G8R8A8_SRGB first): the composition writes linear light and

@@ -77,14 +77,16 @@ const SamplerFlag kSamplerFlags[] = {
 
 const char* const kDebugViews[] = {"color", "lod", "anisotropy", "fetches", "error"};
 
-std::string png_b_path(const std::string& png_path) // shot.png -> shot-b.png; the folder kept
+std::string png_suffixed_path(const std::string& png_path, const std::string& suffix) // shot.png -> shot-b.png
 {
     const size_t slash = png_path.find_last_of('/');
     const size_t dot = png_path.find_last_of('.');
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-        return png_path + "-b";
-    return png_path.substr(0, dot) + "-b" + png_path.substr(dot);
+        return png_path + suffix;
+    return png_path.substr(0, dot) + suffix + png_path.substr(dot);
 }
+
+std::string png_b_path(const std::string& png_path) { return png_suffixed_path(png_path, "-b"); }
 
 // ---------------------------------------------------------------------------------------------------
 // Reading: each field checked where it is, the message naming the file and the field.
@@ -292,9 +294,22 @@ std::vector<std::string> render_flag_words(const ViewState& state, const ViewHal
         words.insert(words.end(), {"--camera", state.camera});
     if (state.frame != 0)
         words.insert(words.end(), {"--frame", std::to_string(state.frame)});
-    if (state.view != "color")
+    // The debug views are the harness's; the error view is the viewer's own (A against the truth, below), and
+    // the ground truth and none have no view but colour.
+    const Filter f = half.options.filter;
+    if (state.view != "color" && state.view != "error" && f != Filter::ground_truth && f != Filter::none)
         words.insert(words.end(), {"--view", state.view});
     return words;
+}
+
+ViewHalf truth_half(const ViewHalf& a)
+{
+    ViewHalf t;
+    t.options.filter = Filter::ground_truth;
+    t.options.wrap = a.options.wrap;
+    t.options.truth_side = a.options.truth_side; // A's --spp and --pixel-filter choose the truth's
+    t.options.pixel_filter = a.options.pixel_filter;
+    return t;
 }
 
 std::vector<std::string> render_command_lines(const ViewState& state, const std::string& png_path)
@@ -308,6 +323,8 @@ std::vector<std::string> render_command_lines(const ViewState& state, const std:
     std::vector<std::string> lines = {line(state.a, png_path)};
     if (state.b)
         lines.push_back(line(*state.b, png_b_path(png_path)));
+    if (state.view == "error") // the heat map's other input: the ground truth it measures A against
+        lines.push_back(line(truth_half(state.a), png_suffixed_path(png_path, "-truth")));
     return lines;
 }
 

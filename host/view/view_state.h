@@ -40,8 +40,13 @@ struct ViewState {
 };
 
 // `texfilter render --scene ... -o PNG` for A, and with B a second line writing PNG's stem + "-b" (shot.png ->
-// shot-b.png), each word shell-quoted where it needs it.
+// shot-b.png), each word shell-quoted where it needs it. The error view adds the ground truth it measures A
+// against (truth_half, PNG's stem + "-truth"); its heat map itself has no render of its own.
 std::vector<std::string> render_command_lines(const ViewState& state, const std::string& png_path);
+
+// The ground truth the error view (and truth mode) measures `a` against: a's wrap, samples (--spp) and pixel
+// filter.
+ViewHalf truth_half(const ViewHalf& a);
 
 // The render flags (without "texfilter render" and -o) of one half, as separate words, unquoted.
 std::vector<std::string> render_flag_words(const ViewState& state, const ViewHalf& half);

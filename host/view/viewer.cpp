@@ -3,6 +3,7 @@
 #include "texture/error.h"
 #include "vulkan/barriers.h"
 #include "vulkan/readback.h"
+#include "view/blit_composition.h"
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -110,16 +111,19 @@ void update_images(Viewer& v)
     if (changed) {
         v.stats.render_ms = ms;
         v.stats.preview_scale = scale;
-        set_compose_image(v.compose, ComposeImage::a, im.a.image);
-        if (im.has_b)
-            set_compose_image(v.compose, ComposeImage::b, im.b.image);
-        if (im.wants_truth)
-            set_compose_image(v.compose, ComposeImage::truth, im.truth.image);
+        v.compose_stale = true;
     }
-    if (preview && changed) { // keep the next preview within the budget
-        if (ms > frame_budget_ms && v.preview_scale < 16)
+    // The preview's fraction from the last full-size render (a render's time goes with its pixels), corrected
+    // by the previews' own times only when well off: each new fraction is a new pipeline (~1 s on lavapipe).
+    if (changed && scale == 1) {
+        int k = 1;
+        while (k < 16 && ms / (k * k) > frame_budget_ms)
+            k *= 2;
+        v.preview_scale = k;
+    } else if (changed && preview) {
+        if (ms > 2 * frame_budget_ms && v.preview_scale < 16)
             v.preview_scale *= 2;
-        else if (ms < frame_budget_ms / 5 && v.preview_scale > 1)
+        else if (ms < frame_budget_ms / 8 && v.preview_scale > 1)
             v.preview_scale /= 2;
     }
 }
@@ -159,6 +163,16 @@ void record_capture(VkCommandBuffer cb, VkImage image, VkExtent2D extent, const 
 }
 
 } // namespace
+
+void upload_compose_images(Viewer& v)
+{
+    const SceneImages& im = v.images;
+    set_compose_image(v.compose, ComposeImage::a, im.a.image);
+    if (im.has_b)
+        set_compose_image(v.compose, ComposeImage::b, im.b.image);
+    if (im.wants_truth)
+        set_compose_image(v.compose, ComposeImage::truth, im.truth.image);
+}
 
 SceneParams current_scene(const Viewer& v)
 {
@@ -219,12 +233,20 @@ bool draw_frame(Viewer& v, bool with_ui, const Buffer* capture)
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     TF_VK(vkBeginCommandBuffer(cb, &begin));
+    const bool blit = can_blit(v);
+    if (!blit && v.compose_stale) { // the composition pass reads the images from its buffers
+        upload_compose_images(v);
+        v.compose_stale = false;
+    }
+    if (blit) // the scene by blits, the UI over it in the pass that keeps them
+        record_blit_composition(cb, v, v.swapchain.images[index], with_ui);
     VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    pass.renderPass = v.swapchain.render_pass;
+    pass.renderPass = blit ? v.swapchain.load_pass : v.swapchain.render_pass;
     pass.framebuffer = v.swapchain.framebuffers[index];
     pass.renderArea = {{0, 0}, v.swapchain.extent};
     vkCmdBeginRenderPass(cb, &pass, VK_SUBPASS_CONTENTS_INLINE);
-    record_compose(cb, v.compose, v.swapchain.extent, compose_params(v, with_ui));
+    if (!blit)
+        record_compose(cb, v.compose, v.swapchain.extent, compose_params(v, with_ui));
     if (with_ui)
         record_imgui(cb);
     vkCmdEndRenderPass(cb);
@@ -232,7 +254,8 @@ bool draw_frame(Viewer& v, bool with_ui, const Buffer* capture)
         record_capture(cb, v.swapchain.images[index], v.swapchain.extent, *capture);
     TF_VK(vkEndCommandBuffer(cb));
 
-    VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    // The blits write the image too: they wait for the acquire as the attachment writes do.
+    VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     submit.waitSemaphoreCount = 1;
     submit.pWaitSemaphores = &v.acquired;
@@ -273,11 +296,7 @@ void finish_images(Viewer& v)
         while (!h->complete)
             step_half(im, *h, scene, 1, samples_per_pixel(h->options));
     }
-    set_compose_image(v.compose, ComposeImage::a, im.a.image);
-    if (im.has_b)
-        set_compose_image(v.compose, ComposeImage::b, im.b.image);
-    if (im.wants_truth)
-        set_compose_image(v.compose, ComposeImage::truth, im.truth.image);
+    v.compose_stale = true;
 }
 
 } // namespace tf

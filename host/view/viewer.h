@@ -68,6 +68,7 @@ struct Viewer {
     VkCommandBuffer command_buffer = VK_NULL_HANDLE;
     FrameStats stats;
     int preview_scale = 1;
+    bool compose_stale = true; // the halves' images changed since they were copied for the composition pass
     std::chrono::steady_clock::time_point last_move{};
     bool quit = false;
     int scene_width = 0, scene_height = 0; // even: the framebuffer's size rounded down
@@ -88,6 +89,7 @@ bool draw_frame(Viewer& viewer, bool with_ui, const Buffer* capture = nullptr);
 void finish_images(Viewer& viewer);
 std::string view_title(const Viewer& viewer);
 
+void upload_compose_images(Viewer& viewer); // the halves' images into the composition pass's buffers
 bool moving_now(const Viewer& viewer);      // the camera moved within the settle time, or animates
 bool images_complete(const Viewer& viewer); // every half at full size with all its samples
 void take_dropped_files(Viewer& viewer);    // a file dropped onto the window becomes the texture

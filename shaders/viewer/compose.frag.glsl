@@ -27,17 +27,24 @@ layout(push_constant) uniform Compose {
 
 layout(location = 0) out vec4 outColor;
 
+// Window pixel to image pixel: the pixel whose span holds the window pixel's centre (identity at full size).
+// In float: an integer division a lane is slow on a CPU rasterizer, and the products are exact below 2^24.
+ivec2 image_pixel(ivec2 q, ivec2 size)
+{
+    return min(ivec2((vec2(q) + 0.5) * (vec2(size) / vec2(pc.full))), size - 1);
+}
+
 vec4 fetch_image(int which, ivec2 q)
 {
     ivec2 size = which == 0 ? pc.sizeA : pc.sizeB;
-    ivec2 p = (q * size) / pc.full; // window pixel to image pixel: identity at full size
+    ivec2 p = image_pixel(q, size);
     int i = p.y * size.x + p.x;
     return which == 0 ? a[i] : b[i];
 }
 
 vec4 fetch_truth(ivec2 q)
 {
-    ivec2 p = (q * pc.sizeTruth) / pc.full;
+    ivec2 p = image_pixel(q, pc.sizeTruth);
     return truth[p.y * pc.sizeTruth.x + p.x];
 }
 
