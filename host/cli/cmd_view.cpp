@@ -1,7 +1,9 @@
 #include "cli/commands.h"
 #include "flags/cli_common.h"
+#include "io/output_path.h"
 #include "texture/error.h"
 #include <cstdio>
+#include <filesystem>
 
 #if TEXFILTER_VIEWER
 #include "view/script.h"
@@ -9,6 +11,18 @@
 #endif
 
 namespace tf {
+
+#if TEXFILTER_VIEWER
+namespace {
+
+std::string parent_directory(const std::string& path)
+{
+    const std::string parent = std::filesystem::path(path).parent_path().string();
+    return parent.empty() ? "." : parent;
+}
+
+} // namespace
+#endif
 
 int run_view(const std::vector<std::string>& argv)
 {
@@ -74,10 +88,14 @@ int run_view(const std::vector<std::string>& argv)
     if (args.has("--script")) {
         options.script_name = args.get("--script", "");
         options.script = read_script(options.script_name); // every line checked before the window opens
+        for (const ScriptAction& action : options.script) // and where its screenshots go
+            if (action.verb == "screenshot" || action.verb == "screenshot-ui")
+                check_writable_directory(parent_directory(script_path(action)),
+                                         options.script_name + ":" + std::to_string(action.line) + ": " + action.verb);
     }
     options.preview = !args.has("--no-preview");
     if (args.has("--frame-log"))
-        options.frame_log = args.get("--frame-log", "");
+        options.frame_log = checked_output_path(args.get("--frame-log", ""), {".csv"});
     return run_viewer(options);
 #endif
 }

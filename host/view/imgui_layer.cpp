@@ -28,7 +28,7 @@ void create_imgui_layer(const VulkanContext& context, Window& window, const Swap
     layer.started = true;
     if (!ImGui_ImplVulkan_LoadFunctions(load_function, const_cast<VulkanContext*>(&context)))
         throw Error("view: Dear ImGui's Vulkan backend could not load its Vulkan entry points");
-    ImGui_ImplGlfw_InitForVulkan(window.handle, true);
+    layer.glfw_started = ImGui_ImplGlfw_InitForVulkan(window.handle, true);
 
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
     VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -49,19 +49,23 @@ void create_imgui_layer(const VulkanContext& context, Window& window, const Swap
     info.ImageCount = uint32_t(swapchain.images.size());
     info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
     info.CheckVkResultFn = check_result;
-    ImGui_ImplVulkan_Init(&info, swapchain.render_pass);
+    layer.vulkan_started = ImGui_ImplVulkan_Init(&info, swapchain.render_pass);
+    if (!layer.vulkan_started)
+        throw Error("view: Dear ImGui's Vulkan backend did not start");
     submit_and_wait(context, [](VkCommandBuffer cb) { ImGui_ImplVulkan_CreateFontsTexture(cb); });
     ImGui_ImplVulkan_DestroyFontUploadObjects();
 }
 
 void destroy_imgui_layer(const VulkanContext& context, ImGuiLayer& layer)
 {
-    if (layer.started) {
+    if (context.device)
         vkDeviceWaitIdle(context.device);
+    if (layer.vulkan_started)
         ImGui_ImplVulkan_Shutdown();
+    if (layer.glfw_started)
         ImGui_ImplGlfw_Shutdown();
+    if (layer.started)
         ImGui::DestroyContext();
-    }
     if (layer.pool)
         vkDestroyDescriptorPool(context.device, layer.pool, nullptr);
     layer = ImGuiLayer{};

@@ -9,7 +9,9 @@ namespace tf {
 
 struct ImGuiLayer {
     VkDescriptorPool pool = VK_NULL_HANDLE; // the font texture's descriptor
-    bool started = false;
+    bool started = false;        // the ImGui context
+    bool glfw_started = false;   // its GLFW backend
+    bool vulkan_started = false; // its Vulkan backend: each undone only if it was done
 };
 
 void create_imgui_layer(const VulkanContext& context, Window& window, const Swapchain& swapchain, ImGuiLayer& layer);

@@ -17,10 +17,12 @@ void start_over(HalfImage& half)
     half.sum.clear();
 }
 
-GpuRenderer& renderer_for(SceneImages& images, HalfImage& half, const SceneParams& scene)
+GpuRenderer& renderer_for(SceneImages& images, HalfImage& half, const SceneParams& scene, bool* created = nullptr)
 {
     auto key = std::make_pair(int(scene.kind_size.y), int(scene.kind_size.z));
     auto found = half.renderers.find(key);
+    if (created)
+        *created = found == half.renderers.end();
     if (found != half.renderers.end())
         return *found->second;
     if (half.renderers.size() >= 6) { // full size and the previews' sizes (1/2 .. 1/16), a window resize or two
@@ -110,12 +112,17 @@ bool step_half(SceneImages& images, HalfImage& half, const SceneParams& full_sce
         return false;
     const SceneParams scene = scaled_scene(full_scene, scale);
     const int total = samples_per_pixel(half.options);
-    GpuRenderer& renderer = renderer_for(images, half, scene);
+    bool created = false;
+    GpuRenderer& renderer = renderer_for(images, half, scene, &created);
+    half.last_was_first = created;
     const auto start = std::chrono::steady_clock::now();
     if (half.options.filter != Filter::ground_truth || scale > 1) {
         // A preview of the ground truth is its first sample alone: the pattern's, noisy, cheap.
         renderer.push.truth_first = 0;
         renderer.push.truth_count = scale > 1 ? 1 : 0;
+        // A preview pixel keeps a full-size pixel's footprint: the LOD seen while moving is the real one, and
+        // filters whose cost grows with the footprint (EWA, sat, aniso) cost what they cost at full size.
+        renderer.push.gradient_scale = 1.0f / float(scale);
         half.image = render_frame(renderer, scene);
         half.shown = renderer.kind == RenderKind::compute ? nullptr : &renderer;
         half.complete = scale <= 1 && half.options.filter != Filter::ground_truth;
@@ -141,6 +148,22 @@ bool step_half(SceneImages& images, HalfImage& half, const SceneParams& full_sce
     return true;
 }
 
+bool warm_preview(SceneImages& images, HalfImage& half, const SceneParams& full_scene, int scale)
+{
+    if (scale <= 1)
+        return false;
+    const SceneParams scene = scaled_scene(full_scene, scale);
+    bool created = false;
+    GpuRenderer& renderer = renderer_for(images, half, scene, &created);
+    if (created) {
+        renderer.push.truth_first = 0;
+        renderer.push.truth_count = 1; // a ground truth's preview is its first sample
+        renderer.push.gradient_scale = 1.0f / float(scale);
+        render_frame(renderer, scene);
+    }
+    return created;
+}
+
 double fetches_per_pixel(SceneImages& images, const HalfImage& half, const SceneParams& full_scene)
 {
     const Filter f = half.options.filter;
@@ -155,6 +178,7 @@ double fetches_per_pixel(SceneImages& images, const HalfImage& half, const Scene
     stats.render = render;
     const SceneParams scene = scaled_scene(full_scene, 4);
     GpuRenderer& renderer = renderer_for(images, stats, scene);
+    renderer.push.gradient_scale = 0.25f; // each pixel's footprint a full-size pixel's: its fetches are theirs
     const Image data = render_frame(renderer, scene);
     double sum = 0.0;
     int covered = 0;

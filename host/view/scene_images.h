@@ -24,6 +24,7 @@ struct HalfImage {
     int samples_done = 0;    // ground truth: samples accumulated into `sum`
     std::vector<glm::dvec4> sum;
     double last_ms = 0;      // the last render's wall time
+    bool last_was_first = false; // ... and it was its renderer's first: on lavapipe that one also compiles (JIT)
     // The renderer whose colour target (RGBA32F, TRANSFER_SRC layout) holds `image` exactly, so that the
     // window can blit it; null for the compute stage (a buffer) and an accumulated ground truth.
     const GpuRenderer* shown = nullptr;
@@ -54,8 +55,14 @@ bool step_half(SceneImages& images, HalfImage& half, const SceneParams& scene, i
 
 int samples_per_pixel(const SamplerOptions& options); // ground truth: side^2; others 1
 
+// Makes (and draws once, discarding the frame) `half`'s renderer at `scale`, if it has none: a first draw
+// compiles the shader on lavapipe (a second or more), which then happens at rest rather than at the first
+// move. Returns true when it did.
+bool warm_preview(SceneImages& images, HalfImage& half, const SceneParams& scene, int scale);
+
 // `half`'s texel fetches and hardware lookups per covered pixel (the HUD's figure): its `data` view (B = the
-// pixel's count) rendered at 1/4 of the size, averaged over the pixels the scene's surface covers. -1 for the
+// pixel's count) rendered at 1/4 of the size with full-size footprints (a sample of the full frame's pixels),
+// averaged over the pixels the scene's surface covers. -1 for the
 // ground truth and none.
 double fetches_per_pixel(SceneImages& images, const HalfImage& half, const SceneParams& scene);
 

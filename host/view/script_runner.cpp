@@ -137,10 +137,9 @@ bool run_script_step(Viewer& v, ScriptRun& run)
 {
     if (std::chrono::steady_clock::now() < run.hold_until)
         return true;
-    if (run.wait_frames > 0) {
-        --run.wait_frames;
+    // `wait N`: the frame drawn right after the action is the first of the N.
+    if (run.wait_frames > 0 && --run.wait_frames > 0)
         return true;
-    }
     while (run.next < v.options.script.size() && run.wait_frames == 0 && !v.quit &&
            std::chrono::steady_clock::now() >= run.hold_until) {
         const ScriptAction& action = v.options.script[run.next++];

@@ -98,15 +98,15 @@ void update_images(Viewer& v)
     const SceneParams scene = current_scene(v);
     SceneImages& im = v.images;
     double ms = 0;
-    bool changed = step_half(im, im.a, scene, scale, truth_samples_a_step);
-    ms += changed ? im.a.last_ms : 0;
-    if (im.has_b && step_half(im, im.b, scene, scale, truth_samples_a_step)) {
-        changed = true;
-        ms += im.b.last_ms;
-    }
-    if (im.wants_truth && step_half(im, im.truth, scene, scale, truth_samples_a_step)) {
-        changed = true;
-        ms += im.truth.last_ms;
+    bool changed = false, first = false; // first: a renderer's first frame, which on lavapipe includes its JIT
+    for (HalfImage* h : {&im.a, &im.b, &im.truth}) {
+        if ((h == &im.b && !im.has_b) || (h == &im.truth && !im.wants_truth))
+            continue;
+        if (step_half(im, *h, scene, scale, truth_samples_a_step)) {
+            changed = true;
+            ms += h->last_ms;
+            first = first || h->last_was_first;
+        }
     }
     if (changed) {
         v.stats.render_ms = ms;
@@ -115,7 +115,9 @@ void update_images(Viewer& v)
     }
     // The preview's fraction from the last full-size render (a render's time goes with its pixels), corrected
     // by the previews' own times only when well off: each new fraction is a new pipeline (~1 s on lavapipe).
-    if (changed && scale == 1) {
+    if (changed && first) {
+        // a compile's time says nothing about the next frame's
+    } else if (changed && scale == 1) {
         int k = 1;
         while (k < 16 && ms / (k * k) > frame_budget_ms)
             k *= 2;
@@ -208,6 +210,11 @@ bool draw_frame(Viewer& v, bool with_ui, const Buffer* capture)
 
     const auto start = std::chrono::steady_clock::now();
     update_images(v);
+    if (v.options.preview && !moving_now(v) && images_complete(v)) { // at rest: the next move's pipelines now
+        const SceneParams scene = current_scene(v);
+        if (!warm_preview(v.images, v.images.a, scene, v.preview_scale) && v.images.has_b)
+            warm_preview(v.images, v.images.b, scene, v.preview_scale); // one a frame: the UI keeps answering
+    }
     if (with_ui && !v.stats.fetches_measured && images_complete(v)) {
         v.stats.fetches_per_pixel = fetches_per_pixel(v.images, v.images.a, current_scene(v));
         v.stats.fetches_measured = true;

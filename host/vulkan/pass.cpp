@@ -129,7 +129,7 @@ PushConstants make_push_constants(const SamplerOptions& options, uint32_t count,
             options.truth_side, int32_t(options.pixel_filter), view,
             {sat_offset.x, sat_offset.y, sat_offset.z, sat_offset.w},
             {sat_scale.x, sat_scale.y, sat_scale.z, sat_scale.w},
-            truth.first, truth.count, {0, 0}};
+            truth.first, truth.count, 1.0f, 0};
 }
 
 } // namespace tf

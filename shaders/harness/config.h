@@ -103,6 +103,7 @@
 #define HARNESS_PUSH_SAT_SCALE 80
 #define HARNESS_PUSH_TRUTH_FIRST 96  // ground-truth: the first sample of the range a frame takes (viewer)
 #define HARNESS_PUSH_TRUTH_COUNT 100 // ground-truth: samples in the range; 0 = every sample from the first on
+#define HARNESS_PUSH_GRADIENT_SCALE 104 // render: uv gradients times this (the viewer's previews; else 1)
 #define HARNESS_PUSH_SIZE 112        // padded to a multiple of 16, the block's alignment (vec4 members)
 
 // The scene's uniform block (std140 offsets in bytes; tf::SceneParams): ten vec4s of parameters, then

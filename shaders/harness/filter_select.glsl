@@ -59,6 +59,9 @@ layout(push_constant) uniform PushConstants {
     layout(offset = HARNESS_PUSH_SAT_SCALE) vec4 satScale;
     layout(offset = HARNESS_PUSH_TRUTH_FIRST) int truthFirst; // ground-truth: samples [first, first + count)
     layout(offset = HARNESS_PUSH_TRUTH_COUNT) int truthCount; // of the grid; 0 = from first to the end
+    // render: the gradients times this. 1, but in the viewer's previews, rendered at 1/k of the size: 1/k, so
+    // each preview pixel is filtered with the footprint of a full-size pixel (the same LOD and cost a lookup).
+    layout(offset = HARNESS_PUSH_GRADIENT_SCALE) float gradientScale;
 } pc;
 
 vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
@@ -94,6 +97,8 @@ vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
 // samples at. The host refuses views for ground-truth and none (no lookup).
 vec4 harness_shade(vec2 uv, vec2 dUVdx, vec2 dUVdy)
 {
+    dUVdx *= pc.gradientScale; // exact at 1
+    dUVdy *= pc.gradientScale;
     vec4 color = harness_filter(uv, dUVdx, dUVdy);
     if (pc.view == HARNESS_VIEW_COLOR)
         return color;
