@@ -87,8 +87,12 @@ viewer_ok() { # DESCRIPTION: the viewer ran the script to the end, exit 0, no va
 scene_group() { # SCENE: each filter's screenshot equals texfilter render of its printed line
     local scene=$1 script="scene $1
 texture checker --texture-size 64
-ui off" filters=(trilinear aniso ewa)
-    [[ $scene == zoom ]] && filters=(bilinear trilinear)
+ui off" filters=(trilinear)
+    # and one more family a scene, so that every family is on the window somewhere
+    case $scene in
+    plane) filters+=(ewa) ;; tunnel) filters+=(aniso) ;; zoom) filters=(bilinear nearest) ;;
+    minify) filters+=(sat) ;; slanted) filters+=(aniso) ;; triangles) filters+=(brilinear) ;; mesh) filters+=(ewa) ;;
+    esac
     for f in "${filters[@]}"; do script+="
 filter $f
 screenshot $scene-$f.png"; done
