@@ -94,8 +94,8 @@ TEST_CASE("every-action")
     CHECK(script_size(a[4]) == std::make_pair(640, 480));
     CHECK(script_count(a[5]) == 10);
     CHECK(a[6].verb == "camera" && a[6].line == 9 && script_word(a[6]) == "reset"); // line 8 was blank
-    const std::array<double, 5> pose = script_camera_pose(a[7]);
-    CHECK(pose == (std::array<double, 5>{1.5, -2, 0.25, 90, -10}));
+    const Camera pose = script_camera_pose(a[7]);
+    CHECK(pose.position == glm::dvec3(1.5, -2, 0.25) && pose.yaw == 90 && pose.pitch == -10);
     CHECK(script_camera_motion(a[8]) == (std::vector<double>{0.5, 0, -1}));
     CHECK(script_word(a[9]) == "turn" && script_camera_motion(a[9]) == (std::vector<double>{15, -5}));
     CHECK(script_word(a[10]) == "orbit" && script_camera_motion(a[10]) == (std::vector<double>{-30, 2.5}));
@@ -171,7 +171,8 @@ TEST_CASE("errors-name-the-line")
     CHECK_BAD_LINE("camera zoom 2", "unknown camera action 'zoom'");
     CHECK_BAD_LINE("camera reset now", "camera reset");
     CHECK_BAD_LINE("camera set 1,2,3,4", "X,Y,Z,YAW,PITCH");
-    CHECK_BAD_LINE("camera set 1,2,3,4,nan", "'nan' is not a finite number");
+    CHECK_BAD_LINE("camera set 1,2,3,4,nan", "PITCH is nan"); // tf::parse_camera's words, as render --camera's
+    CHECK_BAD_LINE("camera set 0,0,0,0,90", "PITCH");
     CHECK_BAD_LINE("camera set 1 2 3 4 5", "camera set X,Y,Z,YAW,PITCH");
     CHECK_BAD_LINE("camera fly 1 2", "camera fly DX DY DZ");
     CHECK_BAD_LINE("camera turn 1 x", "'x' is not a finite number");

@@ -38,7 +38,7 @@ void handle_input(Viewer& v, double seconds)
         if (ImGui::IsKeyPressed(GLFW_KEY_L))
             v.controls.loupe = !v.controls.loupe;
         if (ImGui::IsKeyPressed(GLFW_KEY_F12))
-            v.controls.pending_screenshot = "texfilter-view.png";
+            v.controls.pending_screenshot = v.controls.screenshot_field.data();
     }
     if (!io.WantCaptureMouse) {
         if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {

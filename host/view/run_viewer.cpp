@@ -5,25 +5,19 @@
 #include "vulkan/device_memory_check.h"
 #include "view/frame_log.h"
 #include <cstdio>
-#include <sstream>
 
 namespace tf {
 
 namespace {
 
-std::string options_key(const SamplerOptions& o, const RenderOptions& r)
+bool same_half(const HalfImage& half, const SamplerOptions& options, const RenderOptions& render)
 {
-    std::ostringstream s;
-    s << int(o.filter) << ' ' << int(o.wrap) << ' ' << o.lod_bias << ' ' << o.lod_min << ' ' << o.lod_max << ' '
-      << o.aniso << ' ' << o.band << ' ' << o.probes << ' ' << int(o.aniso_shape) << ' ' << int(o.taps) << ' '
-      << o.alpha << ' ' << o.max_aniso << ' ' << o.boxes << ' ' << int(o.pixel_filter) << ' ' << o.truth_side
-      << ' ' << int(r.stage) << ' ' << int(r.gradients) << ' ' << r.rasterize << ' ' << int(r.view);
-    return s.str();
+    return same_options(half.options, options) && same_render(half.render, render);
 }
 
-std::string texture_key(const TextureSource& t)
+bool same_texture(const TextureSource& a, const TextureSource& b)
 {
-    return t.name_or_path + '\n' + std::to_string(t.procedural_size) + '\n' + std::to_string(int(t.color));
+    return a.name_or_path == b.name_or_path && a.procedural_size == b.procedural_size && a.color == b.color;
 }
 
 SamplerOptions truth_options(const SamplerOptions& a) { return truth_half(ViewHalf{a}).options; }
@@ -71,7 +65,7 @@ std::string apply_state(Viewer& v, const ViewState& requested)
         v.controls.message = std::string(e.what()) + ": fragment stage, fine derivatives instead";
     }
     const bool first = im.chain.levels.empty();
-    if (first || texture_key(next.texture) != texture_key(v.state.texture)) {
+    if (first || !same_texture(next.texture, v.state.texture)) {
         try {
             DeviceLimits limits = device_limits(v.context.info);
             MipChain chain = load_texture(next.texture, {needs_sat(next), &limits});
@@ -85,21 +79,20 @@ std::string apply_state(Viewer& v, const ViewState& requested)
         scene_changed(v);
     }
     const bool scene_moved = next.scene != v.state.scene || next.frame != v.state.frame || first;
-    const std::string a_key = options_key(next.a.options, half_render(next, next.view, next.a.options));
-    if (first || a_key != options_key(im.a.options, im.a.render))
-        set_half_options(im, im.a, next.a.options, half_render(next, next.view, next.a.options));
+    const RenderOptions a_render = half_render(next, next.view, next.a.options);
+    if (first || !same_half(im.a, next.a.options, a_render))
+        set_half_options(im, im.a, next.a.options, a_render);
     std::optional<SamplerOptions> b;
     if (v.controls.truth)
         b = truth_options(next.a.options);
     else if (next.b)
         b = next.b->options;
     im.has_b = b.has_value();
-    if (b && options_key(*b, half_render(next, next.view, *b)) != options_key(im.b.options, im.b.render))
+    if (b && !same_half(im.b, *b, half_render(next, next.view, *b)))
         set_half_options(im, im.b, *b, half_render(next, next.view, *b));
     im.wants_truth = next.view == "error";
     const SamplerOptions truth = truth_options(next.a.options);
-    if (im.wants_truth && (first || options_key(truth, half_render(next, "color", truth)) !=
-                                        options_key(im.truth.options, im.truth.render)))
+    if (im.wants_truth && (first || !same_half(im.truth, truth, half_render(next, "color", truth))))
         set_half_options(im, im.truth, truth, half_render(next, "color", truth));
     const TextureSource texture = v.state.texture; // the one loaded
     const int width = v.state.width, height = v.state.height;
@@ -118,9 +111,11 @@ std::string apply_state(Viewer& v, const ViewState& requested)
     return "";
 }
 
-int run_viewer(const ViewOptions& options)
+namespace {
+
+// Everything between opening the display and tearing it all down again.
+void view_until_closed(const ViewOptions& options)
 {
-    init_window_system(); // no display: one sentence, before any work
     Viewer v;
     v.options = options;
     struct Teardown {
@@ -175,7 +170,8 @@ int run_viewer(const ViewOptions& options)
             wait_events(0.02); // minimised: nothing to draw until the window comes back
         }
         if (!v.controls.pending_screenshot.empty()) {
-            std::string path = std::move(v.controls.pending_screenshot);
+            // Asked for with a key or a button, perhaps many times: never over a file already there.
+            const std::string path = unused_screenshot_path(v.controls.pending_screenshot);
             v.controls.pending_screenshot.clear();
             try {
                 screenshot(v, path, false);
@@ -186,6 +182,15 @@ int run_viewer(const ViewOptions& options)
         }
     }
     log.write();
+}
+
+} // namespace
+
+int run_viewer(const ViewOptions& options)
+{
+    init_window_system(); // no display: one sentence, before any work
+    view_until_closed(options);
+    // After the teardown, so that a message from destroying the window's objects counts too.
     if (validation_message_count() > 0)
         throw Error("view: the Vulkan validation layers reported " + std::to_string(validation_message_count()) +
                     " message(s) (above)");

@@ -45,6 +45,8 @@ SceneParams scaled_scene(const SceneParams& scene, int scale)
     return s;
 }
 
+} // namespace
+
 bool same_options(const SamplerOptions& a, const SamplerOptions& b)
 {
     return a.filter == b.filter && a.wrap == b.wrap && a.lod_bias == b.lod_bias && a.lod_min == b.lod_min &&
@@ -57,8 +59,6 @@ bool same_render(const RenderOptions& a, const RenderOptions& b)
 {
     return a.stage == b.stage && a.gradients == b.gradients && a.rasterize == b.rasterize && a.view == b.view;
 }
-
-} // namespace
 
 int samples_per_pixel(const SamplerOptions& options)
 {

@@ -55,6 +55,11 @@ bool step_half(SceneImages& images, HalfImage& half, const SceneParams& scene, i
 
 int samples_per_pixel(const SamplerOptions& options); // ground truth: side^2; others 1
 
+// Field by field (the ground truth's sample range, the viewer's progress, left out): whether a half must start
+// over with new renderers.
+bool same_options(const SamplerOptions& a, const SamplerOptions& b);
+bool same_render(const RenderOptions& a, const RenderOptions& b);
+
 // Makes (and draws once, discarding the frame) `half`'s renderer at `scale`, if it has none: a first draw
 // compiles the shader on lavapipe (a second or more), which then happens at rest rather than at the first
 // move. Returns true when it did.

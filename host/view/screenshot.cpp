@@ -5,6 +5,7 @@
 #include "texture/error.h"
 #include "vulkan/cleanup.h"
 #include <cstdint>
+#include <filesystem>
 
 namespace tf {
 
@@ -28,7 +29,20 @@ Image decode_capture(const Buffer& capture, VkExtent2D extent, VkFormat format, 
 
 std::string stem_of(const std::string& path) { return path.substr(0, path.size() - 4); } // checked: ends in .png
 
+bool exists(const std::string& path) { return std::filesystem::symlink_status(path).type() != std::filesystem::file_type::not_found; }
+
 } // namespace
+
+std::string unused_screenshot_path(const std::string& wanted)
+{
+    const std::string stem = wanted.size() > 4 && wanted.substr(wanted.size() - 4) == ".png" ? stem_of(wanted) : wanted;
+    for (int n = 0; n < 10000; ++n) { // bounded: past that, checked_output_path says what is wrong
+        const std::string s = n ? stem + "-" + std::to_string(n) : stem;
+        if (!exists(s + ".png") && !exists(s + ".txt") && !exists(s + ".json"))
+            return s + ".png";
+    }
+    return wanted;
+}
 
 void screenshot(Viewer& v, const std::string& requested, bool with_ui)
 {

@@ -1,4 +1,5 @@
 #include "view/script.h"
+#include "scene/camera.h"
 #include "flags/args.h"
 #include "flags/cli_common.h"
 #include "texture/error.h"
@@ -147,7 +148,7 @@ void check_camera(const ScriptAction& a)
         arity(0, "camera reset");
     } else if (how == "set") {
         arity(1, "camera set X,Y,Z,YAW,PITCH");
-        parse_camera_text(a.words[1]);
+        parse_camera(a.words[1]);
     } else if (how == "fly") {
         arity(3, "camera fly DX DY DZ");
         numbers(a, 1, "distance");
@@ -385,13 +386,13 @@ double script_divider(const ScriptAction& a)
     return at_line(a, [&] { return divider(a); });
 }
 
-std::array<double, 5> script_camera_pose(const ScriptAction& a)
+Camera script_camera_pose(const ScriptAction& a)
 {
     require_verb(a, {"camera"}, "script_camera_pose");
     return at_line(a, [&] {
         if (a.words.size() != 2 || a.words[0] != "set")
             throw Error("not 'camera set X,Y,Z,YAW,PITCH'");
-        return parse_camera_text(a.words[1]);
+        return parse_camera(a.words[1]);
     });
 }
 

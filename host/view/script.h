@@ -21,6 +21,7 @@
 //          actions parse_script accepted and throw tf::Error (naming the line) when called on another verb.
 #include "core/filter.h"
 #include "io/texture_source.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
 #include <array>
 #include <optional>
@@ -53,7 +54,7 @@ std::string script_word(const ScriptAction& action);                // view, sta
 Stage script_stage(const ScriptAction& action);                     // stage
 Gradients script_gradients(const ScriptAction& action);             // derivatives
 double script_divider(const ScriptAction& action);                  // divider
-std::array<double, 5> script_camera_pose(const ScriptAction& action); // camera set: X, Y, Z, YAW, PITCH
+Camera script_camera_pose(const ScriptAction& action);              // camera set X,Y,Z,YAW,PITCH (parse_camera)
 std::vector<double> script_camera_motion(const ScriptAction& action); // camera fly (3), turn and orbit (2)
 std::array<int, 3> script_loupe(const ScriptAction& action);        // loupe X Y ZOOM (not off)
 std::array<int, 2> script_cursor(const ScriptAction& action);       // cursor X Y

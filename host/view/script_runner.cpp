@@ -1,7 +1,5 @@
 // texfilter view --script: the actions of host/view/script.h applied to the viewer between frames.
 #include "view/viewer.h"
-#include "flags/args.h"
-#include "flags/cli_common.h"
 #include "texture/error.h"
 #include <thread>
 
@@ -9,21 +7,10 @@ namespace tf {
 
 namespace {
 
-double number(const std::string& word) { return std::stod(word); } // the script parser checked every word
-
-// "filter F --flag value ...": the render command's own flag parser, so the script means what the CLI means.
-SamplerOptions filter_options(const ScriptAction& action)
-{
-    std::vector<std::string> argv = {"--filter", action.words.at(0)};
-    argv.insert(argv.end(), action.words.begin() + 1, action.words.end());
-    Args args = parse_args("view script", argv, sampler_flags(SamplerFlags::scenes), 0);
-    return sampler_options_from(args);
-}
-
+// The words were checked when the script was read; the typed getters of view/script.h read them.
 void run_action(Viewer& v, const ScriptAction& a, ScriptRun& run)
 {
     const std::string& verb = a.verb;
-    const std::vector<std::string>& w = a.words;
     ViewState next = v.state;
     auto apply = [&] {
         std::string problem = apply_state(v, next);
@@ -34,52 +21,49 @@ void run_action(Viewer& v, const ScriptAction& a, ScriptRun& run)
         }
     };
     if (verb == "scene") {
-        next.scene = parse_scene(w[0]);
+        next.scene = script_scene(a);
         v.controls.camera_set = false;
         apply();
     } else if (verb == "texture") {
-        next.texture.name_or_path = w[0];
-        for (size_t i = 1; i < w.size(); ++i) {
-            if (w[i] == "--texture-size")
-                next.texture.procedural_size = std::stoi(w[++i]);
-            else if (w[i] == "--linear")
-                next.texture.color = ColorSpace::linear;
-        }
+        next.texture = script_texture(a);
         apply();
     } else if (verb == "filter") {
-        next.a.options = filter_options(a);
+        next.a.options = script_sampler(a);
         apply();
     } else if (verb == "compare") {
-        if (w[0] == "off")
+        if (script_off(a))
             next.b.reset();
         else
-            next.b = ViewHalf{filter_options(a)};
+            next.b = ViewHalf{script_sampler(a)};
         v.controls.truth = false;
         apply();
     } else if (verb == "truth") {
-        v.controls.truth = w[0] == "on";
+        v.controls.truth = !script_off(a);
         if (!v.controls.truth)
             next.b.reset();
         apply();
     } else if (verb == "view") {
-        next.view = w[0];
+        next.view = script_word(a);
         apply();
     } else if (verb == "stage") {
-        next.render.stage = parse_stage(w[0]);
+        next.render.stage = script_stage(a);
         apply();
     } else if (verb == "derivatives") {
-        next.render.gradients = parse_gradients(w[0]);
+        next.render.gradients = script_gradients(a);
+        apply();
+    } else if (verb == "frame") {
+        next.frame = script_count(a);
         apply();
     } else if (verb == "resize") {
-        auto [width, height] = parse_size("resize", w[0], 2, 8192);
+        auto [width, height] = script_size(a);
         set_window_size(*v.window, width, height);
         run.wait_frames = 2; // the window system answers between frames
     } else if (verb == "wait") {
-        run.wait_frames = std::stoi(w[0]);
+        run.wait_frames = script_count(a);
     } else if (verb == "hold") {
-        run.hold_until = std::chrono::steady_clock::now() + std::chrono::milliseconds(std::stoi(w[0]));
+        run.hold_until = std::chrono::steady_clock::now() + std::chrono::milliseconds(script_count(a));
     } else if (verb == "screenshot" || verb == "screenshot-ui") {
-        screenshot(v, w[0], verb == "screenshot-ui");
+        screenshot(v, script_path(a), verb == "screenshot-ui");
     } else if (verb == "quit") {
         v.quit = true;
     } else if (verb == "close") {
@@ -87,39 +71,38 @@ void run_action(Viewer& v, const ScriptAction& a, ScriptRun& run)
         run.wait_frames = 1;
     } else if (verb == "camera") {
         const SceneParams scene = current_scene(v);
-        Camera c = v.controls.camera_set ? v.controls.camera : camera_of(scene);
-        if (w[0] == "reset") {
+        const Camera c = v.controls.camera_set ? v.controls.camera : camera_of(scene);
+        const std::string how = script_word(a);
+        if (how == "reset") {
             v.controls.camera_set = false;
         } else {
-            if (w[0] == "set")
-                c = parse_camera(w[1]);
-            else if (w[0] == "fly")
-                c = fly(c, scene, {number(w[1]), number(w[2]), number(w[3])});
-            else if (w[0] == "turn")
-                c = turn(c, number(w[1]), number(w[2]));
-            else if (w[0] == "orbit")
-                c = orbit(c, scene, look_target(scene), number(w[1]), number(w[2]));
-            v.controls.camera = c;
+            if (how == "set") {
+                v.controls.camera = script_camera_pose(a);
+            } else {
+                const std::vector<double> m = script_camera_motion(a);
+                v.controls.camera = how == "fly"  ? fly(c, scene, {m[0], m[1], m[2]})
+                                    : how == "turn" ? turn(c, m[0], m[1])
+                                                    : orbit(c, scene, look_target(scene), m[0], m[1]);
+            }
             v.controls.camera_set = true;
         }
         scene_changed(v);
     } else if (verb == "animate") {
-        v.controls.animate = w[0] == "on";
-    } else if (verb == "frame") {
-        next.frame = std::stoi(w[0]);
-        apply();
+        v.controls.animate = !script_off(a);
     } else if (verb == "divider") {
-        v.state.divider = float(number(w[0]));
+        v.state.divider = float(script_divider(a));
     } else if (verb == "loupe") {
-        v.controls.loupe = w[0] != "off";
+        v.controls.loupe = !script_off(a);
         if (v.controls.loupe) {
-            v.controls.loupe_center = {std::stoi(w[0]), std::stoi(w[1])};
-            v.controls.loupe_zoom = std::stoi(w[2]);
+            const std::array<int, 3> l = script_loupe(a);
+            v.controls.loupe_center = {l[0], l[1]};
+            v.controls.loupe_zoom = l[2];
         }
     } else if (verb == "cursor") {
-        v.controls.cursor = {std::stoi(w[0]), std::stoi(w[1])};
+        const std::array<int, 2> c = script_cursor(a);
+        v.controls.cursor = {c[0], c[1]};
     } else if (verb == "ui") {
-        v.controls.ui = w[0] == "on";
+        v.controls.ui = !script_off(a);
     } else if (verb == "minimize") {
         iconify(*v.window);
         run.wait_frames = 2;
@@ -127,7 +110,7 @@ void run_action(Viewer& v, const ScriptAction& a, ScriptRun& run)
         restore(*v.window);
         run.wait_frames = 2;
     } else {
-        throw Error(v.options.script_name + ":" + std::to_string(a.line) + ": unknown action '" + verb + "'");
+        throw Error("unknown action '" + verb + "'");
     }
 }
 

@@ -195,13 +195,13 @@ void build_ui(Viewer& v)
     ImGui::SetNextWindowBgAlpha(0.85f);
     if (ImGui::Begin("texfilter")) {
         changed |= enum_combo("scene", next.scene, 0, int(SceneKind::mesh), scene_name);
-        static char texture[512];
-        static bool texture_filled = false;
-        if (!texture_filled) {
-            std::snprintf(texture, sizeof texture, "%s", v.state.texture.name_or_path.c_str());
-            texture_filled = true;
+        // The field is filled with the loaded texture whenever that changes (load, a drop, a script).
+        char* texture = v.controls.texture_field.data();
+        if (v.controls.texture_shown != v.state.texture.name_or_path) {
+            std::snprintf(texture, v.controls.texture_field.size(), "%s", v.state.texture.name_or_path.c_str());
+            v.controls.texture_shown = v.state.texture.name_or_path;
         }
-        ImGui::InputText("texture", texture, sizeof texture);
+        ImGui::InputText("texture", texture, v.controls.texture_field.size());
         ImGui::SliderInt("texture size", &next.texture.procedural_size, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
         if (ImGui::Button("load") || next.texture.procedural_size != v.state.texture.procedural_size) {
             next.texture.name_or_path = texture;
@@ -260,8 +260,8 @@ void build_ui(Viewer& v)
             ImGui::SliderInt("zoom", &v.controls.loupe_zoom, 2, 32);
             ImGui::Checkbox("footprint under the cursor", &v.controls.footprint);
         }
-        static char shot[512] = "texfilter-view.png";
-        ImGui::InputText("##shot", shot, sizeof shot);
+        char* shot = v.controls.screenshot_field.data();
+        ImGui::InputText("##shot", shot, v.controls.screenshot_field.size());
         ImGui::SameLine();
         if (ImGui::Button("screenshot")) {
             v.controls.pending_screenshot = shot; // taken between frames, not inside this one

@@ -1,5 +1,6 @@
 #include "view/view_state.h"
 #include "core/procedural.h"
+#include "scene/camera.h"
 #include "flags/args.h"
 #include "flags/cli_common.h"
 #include "texture/error.h"
@@ -231,25 +232,6 @@ std::string check_debug_view(const std::string& name)
     throw Error("unknown view '" + name + "' (expected color, lod, anisotropy, fetches or error)");
 }
 
-std::array<double, 5> parse_camera_text(const std::string& text)
-{
-    std::array<double, 5> values{};
-    size_t start = 0;
-    for (size_t i = 0; i < values.size(); ++i) {
-        const size_t comma = text.find(',', start);
-        const bool last = i + 1 == values.size();
-        if ((comma == std::string::npos) != last)
-            throw Error("'" + text + "' is not X,Y,Z,YAW,PITCH (five numbers separated by commas)");
-        const std::string part = text.substr(start, last ? std::string::npos : comma - start);
-        char* end = nullptr;
-        values[i] = std::strtod(part.c_str(), &end);
-        if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(values[i]))
-            throw Error("'" + text + "': '" + part + "' is not a finite number (X,Y,Z,YAW,PITCH)");
-        start = comma + 1;
-    }
-    return values;
-}
-
 std::string shell_quote(const std::string& word)
 {
     bool safe = !word.empty();
@@ -412,7 +394,7 @@ ViewState state_from_json(const std::string& text, const std::string& name)
     if (j.contains("camera")) {
         s.camera = r.string(j["camera"], "camera");
         if (!s.camera.empty())
-            r.parsed("camera", [&] { return parse_camera_text(s.camera); });
+            r.parsed("camera", [&] { return parse_camera(s.camera); });
     }
     if (j.contains("frame"))
         s.frame = r.integer(j["frame"], "frame", 0, 1 << 30);

@@ -34,7 +34,7 @@ struct ViewState {
     ViewHalf a;
     std::optional<ViewHalf> b; // split view
     float divider = 0.5f;      // where A ends, 0..1 of the width
-    std::string camera;        // "" = the scene's own; else "X,Y,Z,YAW,PITCH" (another engineer writes tf::Camera)
+    std::string camera;        // "" = the scene's own; else to_string(tf::Camera), "X,Y,Z,YAW,PITCH"
     int frame = 0;             // the benchmark camera path's frame
     std::string view = "color"; // another engineer adds DebugView; kept a string here
 };
@@ -62,8 +62,6 @@ std::string shell_quote(const std::string& word);
 const std::vector<std::string>& debug_view_names();
 std::string check_debug_view(const std::string& name);
 
-// "X,Y,Z,YAW,PITCH": five finite numbers. Throws tf::Error saying what is wrong.
-std::array<double, 5> parse_camera_text(const std::string& text);
 
 // JSON through nlohmann-json. state_from_json checks every field (the sampler options with the CLI's own
 // parser) and throws tf::Error naming `name` and the field ("shot.json: a.band: ...").

@@ -10,6 +10,7 @@
 #include "view/view_state.h"
 #include "view/window.h"
 #include "scene/camera.h"
+#include <array>
 #include <chrono>
 #include <optional>
 #include <string>
@@ -41,7 +42,10 @@ struct ViewControls {
     float error_max = 0.1f;
     bool orbit = false;       // mouse drag orbits the look target instead of turning
     std::string message;      // the last problem (a texture that did not load): shown in the UI
-    std::string pending_screenshot; // asked for in the UI: taken after the frame
+    std::string pending_screenshot; // asked for in the UI: taken after the frame, under a name no file has
+    std::array<char, 512> texture_field{};      // the panel's text fields
+    std::string texture_shown;                  // the texture the field was last filled with
+    std::array<char, 512> screenshot_field{"texfilter-view.png"};
 };
 
 struct FrameStats {
@@ -99,6 +103,8 @@ void destroy_frame_objects(Viewer& viewer);
 // screenshot.cpp: the frame just presented (the scene alone, or with_ui the whole window) to PNG, and beside a
 // scene screenshot PATH.txt (the texfilter render lines) and PATH.json (the state, for --state).
 void screenshot(Viewer& viewer, const std::string& path, bool with_ui);
+// `wanted`, or with -1, -2, ... before .png where it or its .txt/.json exists already.
+std::string unused_screenshot_path(const std::string& wanted);
 
 // script_runner.cpp: runs actions until one needs frames to pass. Returns false when the script is over.
 struct ScriptRun {

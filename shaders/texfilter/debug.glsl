@@ -137,18 +137,6 @@ float tf_debug_anisotropy(vec2 dUVdx, vec2 dUVdy, vec2 textureSize)
     return major2 / abs(cx.x * cy.y - cx.y * cy.x); // det 0: +Inf
 }
 
-// The LOD clamps of tfi_clamp_lod (lod.glsl), with the level count given: NaN counts as +Inf, a NaN bound
-// as none.
-float tfi_debug_clamp_lod(float lambda, tf_Sampler s, int levels)
-{
-    float lod = isnan(lambda) ? 1.0 / 0.0 : lambda;
-    if (!isnan(s.lodMin))
-        lod = max(lod, s.lodMin);
-    if (!isnan(s.lodMax))
-        lod = min(lod, s.lodMax);
-    return clamp(lod, 0.0, float(max(levels, 1) - 1));
-}
-
 // tf_aniso's probes (aniso.glsl, tfi_aniso_footprint): the same float operations on the same inputs, so
 // the same count, axis and LOD; with the level count given instead of the sampler.
 struct tfi_DebugProbes {
@@ -167,7 +155,7 @@ tfi_DebugProbes tfi_debug_aniso(vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int le
     int e;
     if (!tfi_debug_scaled_columns(dUVdx, dUVdy, textureSize, cx, cy, e)) {
         bool zero = tf_finite(dUVdx) && tf_finite(dUVdy) && all(equal(ax, vec2(0.0))) && all(equal(ay, vec2(0.0)));
-        p.lod = tfi_debug_clamp_lod(zero ? -1.0 / 0.0 : 1.0 / 0.0, s, levels);
+        p.lod = tfi_clamp_lod_levels(zero ? -1.0 / 0.0 : 1.0 / 0.0, s, levels);
         return p;
     }
     if (shape != TF_ANISO_FELINE) {
@@ -179,7 +167,7 @@ tfi_DebugProbes tfi_debug_aniso(vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int le
             p.axis = px2 >= py2 ? dUVdx : dUVdy;
         }
         float rho2 = max(dot(ax, ax), dot(ay, ay)); // tf_lod_unclamped's
-        p.lod = tfi_debug_clamp_lod(0.5 * log2(rho2) + bias, s, levels);
+        p.lod = tfi_clamp_lod_levels(0.5 * log2(rho2) + bias, s, levels);
         return p;
     }
     float E = 0.5 * (cx.x + cy.y), F = 0.5 * (cx.x - cy.y);
@@ -187,7 +175,7 @@ tfi_DebugProbes tfi_debug_aniso(vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int le
     float Q = length(vec2(E, H)), R = length(vec2(F, G));
     float major = Q + R, minor = abs(Q - R);
     p.probes = tfi_aniso_count(major / minor, maxN);
-    p.lod = tfi_debug_clamp_lod(float(e) + log2(max(minor, major / float(p.probes))) + s.lodBias, s, levels);
+    p.lod = tfi_clamp_lod_levels(float(e) + log2(max(minor, major / float(p.probes))) + s.lodBias, s, levels);
     if (p.probes > 1) {
         vec2 z = vec2(F * E - G * H, F * H + G * E);
         float r = length(z);
@@ -240,7 +228,7 @@ float tfi_debug_ewa(vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int levels, tf_Sam
             minor = 0.5 * m * sqrt(minor2) * vec2(-u1.y, u1.x);
         }
     }
-    return tfi_debug_clamp_lod(lambda, s, levels);
+    return tfi_clamp_lod_levels(lambda, s, levels);
 }
 
 tf_Footprint tf_debug_footprint(vec2 uv, vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int levels, tf_Sampler s,
@@ -264,7 +252,7 @@ tf_Footprint tf_debug_footprint(vec2 uv, vec2 dUVdx, vec2 dUVdy, vec2 textureSiz
         line = p.axis * textureSize;
     } else {
         // tf_lod's: non-finite gradients +Inf, zero ones log2(0) = -Inf.
-        f.lod = tfi_debug_clamp_lod(finite ? 0.5 * log2(max(dot(ax, ax), dot(ay, ay))) + s.lodBias : 1.0 / 0.0, s,
+        f.lod = tfi_clamp_lod_levels(finite ? 0.5 * log2(max(dot(ax, ax), dot(ay, ay))) + s.lodBias : 1.0 / 0.0, s,
                                     levels);
     }
     float texel = 0.5 * exp2(f.lod); // half the sampled level's texel, in level-0 texels

@@ -36,14 +36,19 @@ float tf_lod_unclamped(sampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias)
 // NaN is decided first, with isnan: a NaN λ counts as +∞ (blur fully, as non-finite gradients do: the
 // coarsest level the clamps allow), a NaN lodMin or lodMax as no bound. Finite input: clamp(clamp(λ, lodMin,
 // lodMax), 0, levels − 1) exactly. host/reference/reference.cpp clamp_lod follows the same rule.
-float tfi_clamp_lod(float lambda, tf_Sampler s, sampler2D tex)
+float tfi_clamp_lod_levels(float lambda, tf_Sampler s, int levels)
 {
     float lod = isnan(lambda) ? 1.0 / 0.0 : lambda;
     if (!isnan(s.lodMin))
         lod = max(lod, s.lodMin);
     if (!isnan(s.lodMax))
         lod = min(lod, s.lodMax);
-    return clamp(lod, 0.0, float(textureQueryLevels(tex) - 1)); // lod is not NaN here
+    return clamp(lod, 0.0, float(max(levels, 1) - 1)); // lod is not NaN here
+}
+
+float tfi_clamp_lod(float lambda, tf_Sampler s, sampler2D tex)
+{
+    return tfi_clamp_lod_levels(lambda, s, textureQueryLevels(tex));
 }
 
 float tf_lod(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
