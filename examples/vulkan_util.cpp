@@ -182,13 +182,25 @@ Context create_context()
     VkPhysicalDeviceFeatures2 features2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &supported};
     vkGetPhysicalDeviceFeatures2(context.physical, &features2);
     context.fullSubgroups = supported.computeFullSubgroups;
+    VkPhysicalDeviceVulkan12Features supported12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    features2.pNext = &supported12;
+    vkGetPhysicalDeviceFeatures2(context.physical, &features2);
+    if (!supported12.runtimeDescriptorArray)
+        context.bindlessMissing += " runtimeDescriptorArray";
+    if (!supported12.shaderSampledImageArrayNonUniformIndexing)
+        context.bindlessMissing += " shaderSampledImageArrayNonUniformIndexing";
+    context.bindless = context.bindlessMissing.empty();
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,
                                       .queueFamilyIndex = context.queueFamily,
                                       .queueCount = 1,
                                       .pQueuePriorities = &priority};
+    VkPhysicalDeviceVulkan12Features enabled12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                               .shaderSampledImageArrayNonUniformIndexing = context.bindless,
+                                               .runtimeDescriptorArray = context.bindless};
     VkPhysicalDeviceVulkan13Features enabled{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                                             .pNext = &enabled12,
                                              .computeFullSubgroups = supported.computeFullSubgroups,
                                              .dynamicRendering = VK_TRUE};
     VkDeviceCreateInfo deviceInfo{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
@@ -243,7 +255,7 @@ void destroy_buffer(const Context& context, Buffer& buffer)
 }
 
 Image create_image(const Context& context, VkFormat format, uint32_t width, uint32_t height, uint32_t levels,
-                   VkImageUsageFlags usage)
+                   VkImageUsageFlags usage, uint32_t layers)
 {
     Image image;
     VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
@@ -251,7 +263,7 @@ Image create_image(const Context& context, VkFormat format, uint32_t width, uint
                            .format = format,
                            .extent = {width, height, 1},
                            .mipLevels = levels,
-                           .arrayLayers = 1,
+                           .arrayLayers = layers,
                            .samples = VK_SAMPLE_COUNT_1_BIT,
                            .tiling = VK_IMAGE_TILING_OPTIMAL,
                            .usage = usage,
@@ -267,9 +279,9 @@ Image create_image(const Context& context, VkFormat format, uint32_t width, uint
     VK_CHECK(vkBindImageMemory(context.device, image.image, image.memory, 0));
     VkImageViewCreateInfo viewInfo{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
                                    .image = image.image,
-                                   .viewType = VK_IMAGE_VIEW_TYPE_2D,
+                                   .viewType = layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D,
                                    .format = format,
-                                   .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, 1}};
+                                   .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers}};
     VK_CHECK(vkCreateImageView(context.device, &viewInfo, nullptr, &image.view));
     return image;
 }
@@ -294,7 +306,8 @@ void image_barrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, 
                                  .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
                                  .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
                                  .image = image,
-                                 .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1}};
+                                 .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0,
+                                                      VK_REMAINING_ARRAY_LAYERS}};
     vkCmdPipelineBarrier(commands, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 

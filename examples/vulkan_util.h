@@ -20,6 +20,10 @@ struct Context {
     VkPhysicalDeviceProperties properties{};
     VkPhysicalDeviceSubgroupProperties subgroup{};
     bool fullSubgroups = false; // computeFullSubgroups enabled
+    // Descriptor indexing for bindless arrays (Vulkan 1.2 features runtimeDescriptorArray and
+    // shaderSampledImageArrayNonUniformIndexing), enabled where supported; else the features missing.
+    bool bindless = false;
+    std::string bindlessMissing;
     VkDevice device = VK_NULL_HANDLE;
     uint32_t queueFamily = 0; // graphics + compute
     VkQueue queue = VK_NULL_HANDLE;
@@ -44,13 +48,14 @@ void destroy_buffer(const Context& context, Buffer& buffer);
 struct Image {
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE; // all levels, colour aspect
+    VkImageView view = VK_NULL_HANDLE; // all levels and layers, colour aspect
 };
+// A 2D image and its view: VK_IMAGE_VIEW_TYPE_2D, or 2D_ARRAY with `layers` > 1 (what texture2DArray binds).
 Image create_image(const Context& context, VkFormat format, uint32_t width, uint32_t height, uint32_t levels,
-                   VkImageUsageFlags usage);
+                   VkImageUsageFlags usage, uint32_t layers = 1);
 void destroy_image(const Context& context, Image& image);
 
-// Layout transition of all levels of a colour image, with the given execution and memory dependency.
+// Layout transition of all levels and layers of a colour image, with the given execution and memory dependency.
 void image_barrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
                    VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
                    VkAccessFlags dstAccess);

@@ -17,12 +17,15 @@ prefix=$work/prefix
 cmake --install "$build" --prefix "$prefix" >/dev/null
 for file in bin/texfilter include/texfilter/texfilter.glsl include/texfilter/version.glsl \
     lib/cmake/texfilter/texfilterConfig.cmake lib/cmake/texfilter/texfilterConfigVersion.cmake \
-    lib/cmake/texfilter/texfilterShaders.cmake lib/cmake/texfilter/texfilterTargets.cmake \
-    include/texfilter/host.h lib/libtexfilter_host.a share/doc/texfilter/CHANGELOG.md; do
+    lib/cmake/texfilter/texfilterShaders.cmake lib/cmake/texfilter/texfilterEmbedSpirv.cmake \
+    lib/cmake/texfilter/texfilterTargets.cmake include/texfilter/host.h lib/libtexfilter_host.a \
+    share/doc/texfilter/CHANGELOG.md share/doc/texfilter/docs/API.md share/doc/texfilter/docs/images/api/ewa.png; do
     [[ -s $prefix/$file ]] || { echo "install_consumer: $file was not installed" >&2; exit 1; }
 done
-# Every include of the source tree and the one C++ header, nothing of the harness or the host's own headers.
-diff <( (cd "$root/shaders/texfilter" && ls *.glsl; echo host.h) | sort) <(cd "$prefix/include/texfilter" && ls | sort)
+# Every include of the source tree (subfolders too) and the one C++ header, nothing of the harness or the
+# host's own headers.
+diff <( (cd "$root/shaders/texfilter" && find . -name '*.glsl'; echo ./host.h) | sort) \
+    <(cd "$prefix/include/texfilter" && find . -type f | sort)
 "$prefix/bin/texfilter" --help >/dev/null
 
 # The package's version check: this minor version is found, another is refused.
@@ -52,6 +55,9 @@ VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation "$work/example/texfilter_example"
 for image in fragment.ppm compute.ppm; do
     [[ -s $work/out/$image ]] || { echo "install_consumer: the example wrote no $image" >&2; exit 1; }
 done
+# A texture2DArray with a separate sampler and a bindless sampler2D[] (nonuniformEXT), compiled by glslc,
+# every lookup checked against its layer's or element's colour; validation on as above.
+VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation "$work/example/texfilter_resources"
 # texfilter::host from the same prefix: SAT box sums against brute force, MIP chain, sRGB decode.
 "$work/example/texfilter_host_tables"
-echo "install_consumer: installed texfilter $version; the example built against it, rendered and checked texfilter::host"
+echo "install_consumer: installed texfilter $version; the examples built against it, rendered, checked the resource kinds and texfilter::host"
