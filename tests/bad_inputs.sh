@@ -646,10 +646,30 @@ reproducible_outputs() {
 }
 
 
+# --format: an unknown name lists the valid ones; integer data refuses every sampler filter (hw-* modes,
+# hardware taps) before any work, on either backend, in a manifest too.
+bad_formats() {
+    printf '%s\n0.5,0.5,0.01,0,0,0.01\n' "$LOOKUPS_HEADER" >formats.csv
+    expect_error "render --format bogus" "expected one of: rgba32f, rgba8-srgb, rgba8, rgba16f, r8, r16f, r32f, r16ui, r32ui" out.png -- \
+        "${RENDER[@]}" --format bogus -o out.png
+    expect_error "render --format r16ui --filter hw-bilinear" "--format r16ui holds integer data" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter hw-bilinear --format r16ui "${REF[@]}" -o out.png
+    expect_error "sample --format r32ui --filter ewa --taps hardware" "--taps hardware needs a float format" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter ewa --taps hardware --format r32ui --lookups formats.csv -o out.csv
+    expect_error "bench --format RGBA8 (names are lower case)" "unknown texture format 'RGBA8'" bench-out -- \
+        "$TEXFILTER" bench --quick --format RGBA8 --out bench-out
+    mkdir -p format-golden
+    printf 'bad zoom checker hw-trilinear format=r16ui\n' >format-golden/manifest.txt
+    expect_error "golden manifest: format=r16ui with hw-trilinear" "manifest.txt:1: --format r16ui holds integer data" out.png -- \
+        "$TEXFILTER" golden --golden-dir format-golden --out format-golden-out
+}
+
+
 # The groups, in order; ctest runs each as its own entry (bad_inputs.GROUP), listed by --list.
 CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups diff_contract ground_truth_and_bench_errors
     golden_errors vulkan_errors golden_output_directory outputs_and_inputs unwritable_outputs
-    signals_remove_temporaries truncated_images memory_budgets lookups_and_texels reproducible_outputs)
+    signals_remove_temporaries truncated_images memory_budgets lookups_and_texels reproducible_outputs
+    bad_formats)
 if [[ ${#SELECTED[@]} -eq 0 ]]; then
     SELECTED=("${CASE_GROUPS[@]}")
 fi

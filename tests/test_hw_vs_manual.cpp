@@ -3,7 +3,17 @@
 // test runs on (test::test_device_info(); 8 sub-texel and 4 mipmap bits on lavapipe): texel weights to
 // subTexelPrecisionBits, and the LOD and level blend to mipmapPrecisionBits (see lod_error). Anything
 // beyond that is a bug in one of the two. One test case a filter, texture and wrap.
+//
+// Formats (--format, every level rounded on the host as the upload stores it): both sides read the same
+// stored texels, so the weight bounds are taken from the rounded chain's texel contrast. On top, for 8-bit
+// formats, one quantum of the format at the result (1/255 for unorm8, the sRGB code's linear step): a
+// device may filter 8-bit texels in 8-bit fixed point and round the result to the format (lavapipe's
+// unorm8 path, DESIGN.md section 4). sRGB adds each side's decode allowance (test_formats.cpp: half the
+// step between the top two codes; the sampler and texelFetch may decode differently). binary16 is read
+// exactly: no extra term.
 #include "core/procedural.h"
+#include "core/texture_format.h"
+#include "texture/image.h"
 #include "reference/reference.h"
 #include "support.h"
 #include <algorithm>
@@ -38,10 +48,32 @@ std::string texfilter;
 std::filesystem::path work;
 
 std::vector<glm::dvec4> sample_colors(const std::string& texture, const std::string& filter, const std::string& wrap,
-                                      const std::string& lookups)
+                                      const std::string& lookups, TextureFormat format = TextureFormat::rgba32f)
 {
-    const std::string flags = "--texture " + texture + " --filter " + filter + " --wrap " + wrap;
+    const std::string flags =
+        "--texture " + texture + " --filter " + filter + " --wrap " + wrap + " --format " + to_string(format);
     return test::run_sample(texfilter, work, flags, lookups, false).colors;
+}
+
+// What the format adds to |manual - hardware| at a result of `value` (see the top of the file).
+double format_allowance(TextureFormat format, const glm::dvec4& value)
+{
+    const FormatInfo& info = format_info(format);
+    if (info.bits != 8)
+        return 0.0;
+    double quantum = 0;
+    for (int c = 0; c < info.channels; ++c)
+        quantum = std::max(quantum, format_quantum(format, std::clamp(value[c], 0.0, 1.0)));
+    const double decode = info.srgb ? 2 * 0.5 * (1.0 - double(srgb8_decode_table()[254])) : 0.0;
+    return quantum + decode;
+}
+
+// The procedural chain as the upload stores it in `format`.
+MipChain stored_chain(const std::string& texture, TextureFormat format)
+{
+    MipChain chain = make_procedural(texture, 256);
+    quantise_chain(chain, format);
+    return chain;
 }
 
 // How far 8-bit weights can move a bilinear lookup: one weight step times the texel differences.
@@ -112,34 +144,37 @@ void compare_nearest(const std::string& texture, Wrap wrap)
 }
 
 // bilinear: level 0 only on both sides.
-void compare_bilinear(const std::string& texture, Wrap wrap)
+void compare_bilinear(const std::string& texture, Wrap wrap, TextureFormat format = TextureFormat::rgba32f)
 {
     const std::string w = to_string(wrap), path = lookups_path();
     const std::vector<Lookup>& lookups = all_lookups();
-    const MipChain chain = make_procedural(texture, 256);
+    const MipChain chain = stored_chain(texture, format);
     {
-        auto manual = sample_colors(texture, "bilinear", w, path), hw = sample_colors(texture, "hw-bilinear", w, path);
-        Tally tally{"bilinear vs hw-bilinear (" + texture + ", " + w + ")"};
+        auto manual = sample_colors(texture, "bilinear", w, path, format),
+             hw = sample_colors(texture, "hw-bilinear", w, path, format);
+        Tally tally{"bilinear vs hw-bilinear (" + texture + ", " + w + ", " + to_string(format) + ")"};
         for (size_t i = 0; i < lookups.size(); ++i)
             tally.add(max_channel_diff(manual[i], hw[i]),
-                      bilinear_tolerance(chain.levels[0], lookups[i].u, lookups[i].v, wrap));
+                      bilinear_tolerance(chain.levels[0], lookups[i].u, lookups[i].v, wrap) +
+                          format_allowance(format, manual[i]));
         tally.report();
     }
 }
 
 // trilinear: the hardware may sit anywhere in [lambda - e, lambda + e]; trilinear is piecewise linear in
 // lambda, so its extremes there are at the ends or at whole levels in between.
-void compare_trilinear(const std::string& texture, Wrap wrap)
+void compare_trilinear(const std::string& texture, Wrap wrap, TextureFormat format = TextureFormat::rgba32f)
 {
     const std::string w = to_string(wrap), path = lookups_path();
     const std::vector<Lookup>& lookups = all_lookups();
-    const MipChain chain = make_procedural(texture, 256);
+    const MipChain chain = stored_chain(texture, format);
     SamplerOptions options;
     options.wrap = wrap;
     const double lod_error = ::lod_error();
     {
-        auto manual = sample_colors(texture, "trilinear", w, path), hw = sample_colors(texture, "hw-trilinear", w, path);
-        Tally tally{"trilinear vs hw-trilinear (" + texture + ", " + w + ")"};
+        auto manual = sample_colors(texture, "trilinear", w, path, format),
+             hw = sample_colors(texture, "hw-trilinear", w, path, format);
+        Tally tally{"trilinear vs hw-trilinear (" + texture + ", " + w + ", " + to_string(format) + ")"};
         int top = int(chain.levels.size()) - 1;
         for (size_t i = 0; i < lookups.size(); ++i) {
             const Lookup& l = lookups[i];
@@ -161,7 +196,7 @@ void compare_trilinear(const std::string& texture, Wrap wrap)
                 spread = std::max(spread, max_channel_diff(at(d), centre));
             for (int level = std::max(0, int(lambda - lod_error)); level <= std::min(top, int(lambda + lod_error) + 1); ++level)
                 weights = std::max(weights, bilinear_tolerance(chain.levels[size_t(level)], l.u, l.v, wrap));
-            tally.add(max_channel_diff(manual[i], hw[i]), spread + weights);
+            tally.add(max_channel_diff(manual[i], hw[i]), spread + weights + format_allowance(format, manual[i]));
         }
         tally.report();
     }
@@ -179,4 +214,13 @@ TEST_CASE("bilinear-zoneplate-mirror") { compare_bilinear("zoneplate", Wrap::mir
 TEST_CASE("trilinear-noise-repeat") { compare_trilinear("noise", Wrap::repeat); }
 TEST_CASE("trilinear-checker-clamp") { compare_trilinear("checker", Wrap::clamp); }
 TEST_CASE("trilinear-zoneplate-mirror") { compare_trilinear("zoneplate", Wrap::mirror); }
+// The stored formats (--format): 8-bit and binary16.
+TEST_CASE("bilinear-noise-repeat-rgba8") { compare_bilinear("noise", Wrap::repeat, TextureFormat::rgba8); }
+TEST_CASE("bilinear-noise-repeat-rgba8-srgb") { compare_bilinear("noise", Wrap::repeat, TextureFormat::rgba8_srgb); }
+TEST_CASE("bilinear-checker-clamp-r8") { compare_bilinear("checker", Wrap::clamp, TextureFormat::r8); }
+TEST_CASE("bilinear-zoneplate-mirror-rgba16f") { compare_bilinear("zoneplate", Wrap::mirror, TextureFormat::rgba16f); }
+TEST_CASE("bilinear-noise-repeat-r16f") { compare_bilinear("noise", Wrap::repeat, TextureFormat::r16f); }
+TEST_CASE("trilinear-zoneplate-mirror-rgba8-srgb") { compare_trilinear("zoneplate", Wrap::mirror, TextureFormat::rgba8_srgb); }
+TEST_CASE("trilinear-noise-repeat-rgba8") { compare_trilinear("noise", Wrap::repeat, TextureFormat::rgba8); }
+TEST_CASE("trilinear-noise-repeat-rgba16f") { compare_trilinear("noise", Wrap::repeat, TextureFormat::rgba16f); }
 TEST_SUITE_END();

@@ -4,6 +4,7 @@
 #include "cli/commands.h"
 #include "vulkan/device_memory_check.h"
 #include "texture/error.h"
+#include "vulkan/texture_format_support.h"
 #include "vulkan/frame_timer.h"
 #include "core/memory_budget.h"
 #include "io/output_path.h"
@@ -90,6 +91,8 @@ int run_bench(const std::vector<std::string>& argv)
           {"--texture", "T|PATH", "procedural texture (default checker) or an image file"},
           {"--texture-size", "N", "procedural textures: the side in texels (default 512)"},
           {"--memory-budget", "SIZE", "most host memory the texture may take (512M, 8G; default: half of physical memory)"},
+          {"--format", "F", "what the texture is uploaded as: " + texture_format_names() +
+                                " (default rgba32f; integer formats need --filters without hardware filtering)"},
           {"--spp", "N", "ground truth samples a pixel, a square number (default 256)"},
           {"--truth-backend", "B", "vulkan (default: the device) or reference (the CPU, in double)"},
           {"--warmup", "N", "untimed frames before timing (default 5)"},
@@ -122,6 +125,7 @@ int run_bench(const std::vector<std::string>& argv)
     config.texture.procedural_size = args.get_int("--texture-size", config.quick ? 256 : 512, 1, 16384);
     if (args.has("--memory-budget"))
         config.texture.memory_budget = parse_flag(args, "--memory-budget", "", parse_byte_size);
+    config.texture.format = parse_flag(args, "--format", "rgba32f", parse_texture_format);
     config.truth_side = parse_flag(args, "--spp", config.quick ? "64" : "256", parse_spp_side);
     std::string truth = args.get("--truth-backend", "vulkan");
     if (truth != "vulkan" && truth != "reference")
@@ -141,6 +145,8 @@ int run_bench(const std::vector<std::string>& argv)
         }
     }
     config.filters = select_filters(args.get("--filters", ""));
+    for (const BenchFilter& f : config.filters) // integer data and hardware filtering, before any work
+        check_format_filter(config.texture.format, f.options);
 
     std::string out_text = args.require("--out");
     while (out_text.size() > 1 && out_text.back() == '/') // results/ names the directory results
@@ -150,6 +156,8 @@ int run_bench(const std::vector<std::string>& argv)
     GpuSession gpu(context_options_from(args));
     // Every filter runs, the SAT ones too: the texture must fit the table, the memory budget and the device.
     const DeviceLimits limits = device_limits(gpu.context.info);
+    for (const BenchFilter& f : config.filters)
+        check_format_support(gpu.context, config.texture.format, f.options);
     MipChain chain = load_texture(config.texture, {true, &limits});
     StagingDirectory staging{temporary_path_for(out.string())};
     fs::create_directories(staging.path);

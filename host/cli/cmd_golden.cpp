@@ -4,6 +4,7 @@
 #include "texture/error.h"
 #include "cli/golden.h"
 #include "vulkan/backend.h"
+#include "vulkan/texture_format_support.h"
 #include "io/image_io.h"
 #include "io/output_dir.h"
 #include "io/output_path.h"
@@ -63,9 +64,10 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
     std::vector<ReportCase> report;
     int failures = 0;
     for (const GoldenCase& c : run.cases) {
+        check_format_support(gpu.context, c.texture.format, c.sampler);
         MipChain chain = load_texture(c.texture, {needs_sat(c.sampler.filter), &limits});
         SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
-        Image actual = with_texture(gpu.context, chain, needs_sat(c.sampler.filter),
+        Image actual = with_texture(gpu.context, chain, needs_sat(c.sampler.filter), c.texture.format,
                                     [&](auto& t) { return gpu_render(gpu.context, t, scene, c.sampler, c.render); });
 
         std::string golden_path = run.golden_dir + "/" + c.name + ".png";

@@ -2,6 +2,7 @@
 #include "cli/commands.h"
 #include "texture/error.h"
 #include "vulkan/backend.h"
+#include "vulkan/texture_format_support.h"
 #include "io/image_io.h"
 #include "io/output_path.h"
 #include "io/pfm.h"
@@ -56,6 +57,7 @@ int run_render(const std::vector<std::string>& argv)
     if (width % 2 || height % 2)
         throw Error("bad value for --size: '" + args.get("--size", "") + "' (sides must be even: derivatives come from 2x2 quads)");
     TextureSource source = texture_source_from(args);
+    check_format_filter(source.format, options); // integer data and hardware filtering, before any work
     std::string out = checked_output_path(args.require("-o"), {".png", ".exr", ".pfm"}, {source.name_or_path});
     if (render.view == DebugView::data && out.size() >= 4 && out.compare(out.size() - 4, 4, ".png") == 0)
         throw Error(out + ": --view data writes linear floats (LOD, anisotropy, fetches); use a .pfm or .exr output");
@@ -63,8 +65,12 @@ int run_render(const std::vector<std::string>& argv)
         throw Error(out + ": image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON; "
                           ".pfm output is built in)");
     CommandDevice device = open_command_device(backend, args);
+    if (device.gpu)
+        check_format_support(device.gpu->context, source.format, options);
     const bool sat = needs_sat(options.filter);
-    const bool streamed = device.gpu && streams_level0(source) && !sat; // no MipChain on the host
+    // No MipChain on the host: an RGBA32F file's levels are built in the staging buffer (other formats are
+    // rounded level by level on the host, from the whole chain).
+    const bool streamed = device.gpu && streams_level0(source) && !sat && source.format == TextureFormat::rgba32f;
     TextureUse use = device.texture_use(sat);
     use.streamed = streamed;
     // Every path checks the texture (size, budget, device limits) once, before decoding it.
@@ -91,7 +97,7 @@ int run_render(const std::vector<std::string>& argv)
                                       [&](glm::vec4* texels) { read_level0(source, size, texels); }, draw);
         gpu->finish();
     } else {
-        image = with_texture(gpu->context, *chain, sat, draw);
+        image = with_texture(gpu->context, *chain, sat, source.format, draw);
         gpu->finish();
     }
     write_image(out, image);

@@ -1,6 +1,7 @@
 #include "flags/cli_common.h"
 #include "cli/commands.h"
 #include "vulkan/backend.h"
+#include "vulkan/texture_format_support.h"
 #include "io/lookups_csv.h"
 #include "io/output_path.h"
 #include "reference/render.h"
@@ -58,12 +59,15 @@ int run_sample(const std::vector<std::string>& argv)
                     "(use render)");
     Backend backend = backend_from(args);
     TextureSource source = texture_source_from(args);
+    check_format_filter(source.format, options); // integer data and hardware filtering, before any work
     std::string out = checked_output_path(args.require("-o"), {".csv"}, {args.require("--lookups"), source.name_or_path});
     bool with_stats = args.has("--stats");
     if (with_stats && backend != Backend::vulkan)
         throw Error("--stats counts the shader's fetches: it needs --backend vulkan");
     std::vector<Lookup> lookups = read_lookups_csv(args.require("--lookups"));
     CommandDevice device = open_command_device(backend, args);
+    if (device.gpu)
+        check_format_support(device.gpu->context, source.format, options);
     MipChain chain = load_texture(source, device.texture_use(needs_sat(options.filter)));
     GpuSession* gpu = device.gpu.get();
 
@@ -72,7 +76,7 @@ int run_sample(const std::vector<std::string>& argv)
     if (!gpu) {
         colors = reference_sample_all(chain, lookups, options);
     } else {
-        std::vector<glm::vec4> results = with_texture(gpu->context, chain, needs_sat(options.filter), [&](auto& t) {
+        std::vector<glm::vec4> results = with_texture(gpu->context, chain, needs_sat(options.filter), source.format, [&](auto& t) {
             return gpu_sample(gpu->context, t, lookups, options, &stats);
         });
         gpu->finish();

@@ -50,6 +50,7 @@ std::vector<GoldenCase> parse_manifest(std::istream& in, const std::string& path
             c.scene = parse_flag(args, "--scene", "", parse_scene);
             c.texture = texture_source_from(args);
             c.sampler = sampler_options_from(args);
+            check_format_filter(c.texture.format, c.sampler);
             c.render = make_render_options(c.scene, parse_flag(args, "--stage", "fragment", parse_stage),
                                            parse_flag(args, "--derivatives", "fine", parse_gradients));
             std::tie(c.width, c.height) = parse_size("size", args.get("--size", "256x256"), 2, 4096);

@@ -11,6 +11,8 @@ std::vector<FlagSpec> texture_flags()
     return {{"--texture", "T|PATH", "procedural texture (checker, zoneplate, grid, noise, mipcolors) or an image file"},
             {"--texture-size", "N", "side of a procedural texture in texels (default 256)"},
             {"--linear", "", "the image file holds data/linear values: no sRGB decode"},
+            {"--format", "F", "what the texture is uploaded as: " + texture_format_names() +
+                                  " (default rgba32f; every level rounded to it, on both backends)"},
             {"--memory-budget", "SIZE", "most host memory a texture may take (512M, 8G; default: half of physical "
                                         "memory); checked from the file's header before decoding"}};
 }
@@ -73,6 +75,7 @@ TextureSource texture_source_from(const Args& args)
     source.name_or_path = args.require("--texture");
     source.procedural_size = args.get_int("--texture-size", 256, 1, max_texture_dimension);
     source.color = args.has("--linear") ? ColorSpace::linear : ColorSpace::automatic;
+    source.format = parse_flag(args, "--format", "rgba32f", parse_texture_format);
     if (args.has("--memory-budget"))
         source.memory_budget = parse_flag(args, "--memory-budget", "", parse_byte_size);
     return source;

@@ -46,6 +46,7 @@ MipChain load_texture(const TextureSource& source, const TextureUse& use)
     MipChain chain = is_procedural(source.name_or_path)
                          ? make_procedural(source.name_or_path, source.procedural_size)
                          : build_mip_chain(read_image(source.name_or_path, source.color, max_texture_dimension));
+    quantise_chain(chain, source.format); // before the table: the SAT sums the texels the format stores
     if (use.sat) // NaN/Inf texels have no place in an integer table: refused here, naming the texture
         check_sat_texels(chain.levels[0], source.name_or_path);
     return chain;

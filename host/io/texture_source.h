@@ -2,6 +2,7 @@
 // Where a texture comes from: a procedural name (checker, zoneplate, ...) or an image file.
 #include "io/image_io.h"
 #include "core/memory_budget.h"
+#include "core/texture_format.h"
 #include "texture/mip.h"
 #include <cstdint>
 #include <string>
@@ -13,6 +14,9 @@ struct TextureSource {
     int procedural_size = 256;       // --texture-size, procedural textures only
     ColorSpace color = ColorSpace::automatic; // files only: --linear forces data/linear
     uint64_t memory_budget = 0;      // --memory-budget in bytes; 0: default_memory_budget()
+    // --format: what the upload stores; load_texture rounds every level to it (quantise_chain), so the
+    // CPU reference reads the texels the device does.
+    TextureFormat format = TextureFormat::rgba32f;
 };
 
 // What the texture will be used for, which decides how much memory loading it takes.
@@ -27,8 +31,8 @@ struct TextureUse {
 constexpr int max_texture_dimension = 16384;
 
 // Checks the size (the file's header, or the procedural side) against the limits of `use` and the memory
-// budget before anything is decoded or allocated, then loads and builds the MIP chain. Throws tf::Error
-// naming the texture.
+// budget before anything is decoded or allocated, then loads and builds the MIP chain, every level rounded
+// to source.format. Throws tf::Error naming the texture.
 MipChain load_texture(const TextureSource& source, const TextureUse& use = {});
 
 // The checks of load_texture alone: the texture's level-0 size, nothing decoded.

@@ -70,7 +70,7 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
     }
     r.pass = create_pass(context, texture, options, stages, push_stages, buffers, cleanup);
     r.pipeline = create_render_pipeline(context, r.kind, r.pass.pipeline_layout, options.filter, r.width, r.height,
-                                        cleanup);
+                                        cleanup, texture.format);
     return renderer;
 }
 

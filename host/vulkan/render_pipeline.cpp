@@ -1,16 +1,12 @@
 #include "vulkan/render_pipeline.h"
 #include "harness/config.h"
 #include "texture/error.h"
+#include "vulkan/harness_shaders.h"
 #include "vulkan/mesh.h"
 #include "vulkan/pipeline.h"
 #include "vulkan/render_targets.h"
 #include <cstddef>
 
-#include "mesh_frag.h"
-#include "mesh_vert.h"
-#include "render_comp.h"
-#include "render_frag.h"
-#include "render_vert.h"
 
 namespace tf {
 
@@ -26,18 +22,20 @@ void check_render_kind(const VulkanContext& context, RenderKind kind)
 }
 
 VkPipeline create_render_pipeline(const VulkanContext& context, RenderKind kind, VkPipelineLayout layout,
-                                  Filter filter, uint32_t width, uint32_t height, Cleanup& cleanup)
+                                  Filter filter, uint32_t width, uint32_t height, Cleanup& cleanup,
+                                  TextureFormat format)
 {
     if (kind == RenderKind::compute)
-        return create_compute_pipeline(context, {render_comp, sizeof(render_comp)}, layout, filter, cleanup);
+        return create_compute_pipeline(context, harness_shader(HarnessShader::render_comp, format), layout, filter,
+                                       cleanup);
 
     GraphicsPipelineDesc desc;
     desc.color_format = render_color_format;
     desc.width = width;
     desc.height = height;
     if (kind == RenderKind::fragment) {
-        desc.vertex = {render_vert, sizeof(render_vert)};
-        desc.fragment = {render_frag, sizeof(render_frag)};
+        desc.vertex = harness_shader(HarnessShader::render_vert, format);
+        desc.fragment = harness_shader(HarnessShader::render_frag, format);
         return create_graphics_pipeline(context, desc, layout, filter, cleanup);
     }
     VkVertexInputBindingDescription binding{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX};
@@ -49,8 +47,8 @@ VkPipeline create_render_pipeline(const VulkanContext& context, RenderKind kind,
     vertex_input.pVertexBindingDescriptions = &binding;
     vertex_input.vertexAttributeDescriptionCount = 2;
     vertex_input.pVertexAttributeDescriptions = attributes;
-    desc.vertex = {mesh_vert, sizeof(mesh_vert)};
-    desc.fragment = {mesh_frag, sizeof(mesh_frag)};
+    desc.vertex = harness_shader(HarnessShader::mesh_vert, format);
+    desc.fragment = harness_shader(HarnessShader::mesh_frag, format);
     desc.vertex_input = &vertex_input;
     desc.depth_format = render_depth_format;
     return create_graphics_pipeline(context, desc, layout, filter, cleanup);

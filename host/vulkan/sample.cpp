@@ -3,6 +3,7 @@
 #include "vulkan/backend.h"
 #include "harness/config.h"
 #include "texture/error.h"
+#include "vulkan/harness_shaders.h"
 #include "vulkan/pass.h"
 #include "vulkan/pipeline.h"
 #include "vulkan/readback.h"
@@ -10,7 +11,6 @@
 #include <cstdint>
 #include <cstring>
 
-#include "sample_comp.h"
 
 namespace tf {
 
@@ -57,7 +57,7 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
                                    {HARNESS_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, output.buffer},
                                    {HARNESS_BINDING_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counts.buffer}},
                                   cleanup);
-    const VkPipeline pipeline = create_compute_pipeline(context, {sample_comp, sizeof(sample_comp)},
+    const VkPipeline pipeline = create_compute_pipeline(context, harness_shader(HarnessShader::sample_comp, texture.format),
                                                         pass.pipeline_layout, options.filter, cleanup);
     const PushConstants push =
         make_push_constants(options, count, texture.sat_offset, texture.sat_scale, HARNESS_GRADIENTS_FINE);

@@ -43,7 +43,15 @@ PassSamplers create_pass_samplers(const VulkanContext& context, const GpuTexture
 {
     VkDevice device = context.device;
     PassSamplers samplers;
-    VkSampler texture_sampler = samplers.texture = create_sampler(context, options, texture.levels);
+    // A format the sampler cannot filter (integer data, or no SAMPLED_IMAGE_FILTER_LINEAR on this device) is
+    // bound with a nearest sampler: the manual filters read it with texelFetch, which ignores the sampler,
+    // and the commands refuse hardware filtering of it before they start (check_format_support).
+    SamplerOptions texture_options = options;
+    if (!texture.filterable && !is_hardware(options.filter)) {
+        texture_options.filter = Filter::hw_nearest;
+        texture_options.lod_bias = 0.0f; // the shader applies the manual filters' bias
+    }
+    VkSampler texture_sampler = samplers.texture = create_sampler(context, texture_options, texture.levels);
     cleanup.add([=] { vkDestroySampler(device, texture_sampler, nullptr); });
     SamplerOptions nearest;
     nearest.filter = Filter::hw_nearest;

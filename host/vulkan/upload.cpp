@@ -8,6 +8,7 @@
 #include "vulkan/host_memory.h"
 #include "vulkan/image.h"
 #include "vulkan/resources.h"
+#include "vulkan/texture_format_support.h"
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -107,11 +108,14 @@ void upload_sat(const VulkanContext& context, const Image* level0, GpuTexture& t
 
 bool needs_sat(Filter filter) { return filter == Filter::sat || filter == Filter::sat_assembly; }
 
-GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat)
+GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format)
 {
     const Image& base = chain.levels.at(0);
     check_texture_size(context, base.width, base.height, with_sat);
+    check_format_support(context, format, SamplerOptions{});
     GpuTexture t;
+    t.format = format;
+    t.filterable = format_filterable(context, format);
     t.width = base.width;
     t.height = base.height;
     t.levels = int(chain.levels.size());
@@ -119,17 +123,20 @@ GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, b
     on_failure.add([&] { destroy_texture(context, t); });
     {
         const uint32_t levels = uint32_t(t.levels);
-        t.chain = create_sampled_image(context, VK_FORMAT_R32G32B32A32_SFLOAT,
-                                       {uint32_t(base.width), uint32_t(base.height)}, levels);
+        t.chain = create_sampled_image(context, vk_format(format), {uint32_t(base.width), uint32_t(base.height)},
+                                       levels);
         // One staging level at a time (the largest, level 0), reused for every level below it.
-        Buffer staging = create_host_buffer(context, base.texels.size() * sizeof(glm::vec4),
-                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        const size_t level0_bytes = base.texels.size() * texel_bytes(format);
+        Buffer staging = create_host_buffer(context, level0_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         Cleanup cleanup;
         cleanup.add([&] { destroy_buffer(context, staging); });
-        advise_huge_pages(staging.mapped, base.texels.size() * sizeof(glm::vec4));
+        advise_huge_pages(staging.mapped, level0_bytes);
         for (uint32_t l = 0; l < levels; ++l) {
             const Image& level = chain.levels[l];
-            std::memcpy(staging.mapped, level.texels.data(), level.texels.size() * sizeof(glm::vec4));
+            if (format == TextureFormat::rgba32f)
+                std::memcpy(staging.mapped, level.texels.data(), level.texels.size() * sizeof(glm::vec4));
+            else
+                pack_texels(level.texels.data(), level.texels.size(), format, staging.mapped);
             copy_level(context, t.chain, levels, staging, l, {uint32_t(level.width), uint32_t(level.height)},
                        {l == 0, l + 1 == levels});
         }

@@ -1,26 +1,33 @@
 #pragma once
-// Textures onto the device: the MIP chain (RGBA32F, every level) and, for the sat filters, the two
-// summed-area table images, each a sampled image in device-local memory.
+// Textures onto the device: the MIP chain (every level, in the --format's VkFormat; RGBA32F by default)
+// and, for the sat filters, the two summed-area table images, each a sampled image in device-local memory.
 #include "core/filter.h"
+#include "core/texture_format.h"
 #include "texture/mip.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
 #include "vulkan/image.h"
 #include <glm/vec4.hpp>
 #include <functional>
+#include <utility>
 
 namespace tf {
 
 struct GpuTexture {
-    GpuImage chain;              // RGBA32F, every MIP level
+    GpuImage chain;              // every MIP level, in vk_format(format)
+    TextureFormat format = TextureFormat::rgba32f;
+    bool filterable = true;      // the device filters the format linearly (else passes bind nearest samplers)
     GpuImage sat_low, sat_high;  // the summed-area table (1x1 zeros unless asked for)
     glm::vec4 sat_offset{0.0f}, sat_scale{0.0f}; // SatTable::offset, ::scale (zeros without a table)
     int width = 0, height = 0, levels = 0;
 };
 
 // with_sat: also build and upload the summed-area table (sat, sat-assembly filters). The levels go through
-// one staging buffer of level 0's size, one level at a time.
-GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat);
+// one staging buffer of level 0's size, one level at a time, packed to `format` (pack_texels): pass the
+// chain as load_texture gives it for that format (quantise_chain; for uint formats the codes as floats).
+// Throws tf::Error when the device cannot sample the format (check_format_support).
+GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat,
+                          TextureFormat format = TextureFormat::rgba32f);
 
 // The same chain without a MipChain on the host (no summed-area table): fill_level0 writes level 0, width x
 // height linear RGBA texels, straight into the staging buffer (an image decoder, say); after each level is
@@ -33,12 +40,19 @@ void destroy_texture(const VulkanContext& context, GpuTexture& texture);
 
 // Uploads the texture, runs body(texture) and destroys it again, also when body throws.
 template <typename Body>
-auto with_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, Body&& body)
+auto with_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format,
+                  Body&& body)
 {
-    GpuTexture texture = upload_texture(context, chain, with_sat);
+    GpuTexture texture = upload_texture(context, chain, with_sat, format);
     Cleanup cleanup;
     cleanup.add([&] { destroy_texture(context, texture); });
     return body(texture);
+}
+
+template <typename Body>
+auto with_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, Body&& body)
+{
+    return with_texture(context, chain, with_sat, TextureFormat::rgba32f, std::forward<Body>(body));
 }
 
 // upload_streamed_texture, then body(texture), then destroy, also when body throws.
