@@ -211,8 +211,34 @@ if [[ ${#includes[@]} -eq 0 ]]; then
     exit 1
 fi
 
+# The access layer's internal files (access, family, instantiate: re-included once per resource kind, so no
+# guard) are not for users: each must open with its header comment, say "internal", and refuse to compile
+# when included on its own (outside a family file's instantiation).
+internal_files=(access family instantiate)
+check_internal() {
+    local file=$1 name=$2 shader="$WORK/internal_$2.frag"
+    if head -1 "$file" | grep -q "^// texfilter/$name.glsl — internal"; then
+        printf 'ok    %-17s %s\n' "header" "$name.glsl (internal)"
+    else
+        printf 'FAIL  %-17s %s\n' "header" "$name.glsl: line 1 is not '// texfilter/$name.glsl — internal: ...'"
+        failures=$((failures + 1))
+    fi
+    printf '#version 450\n#extension GL_GOOGLE_include_directive : require\n#include "texfilter/%s.glsl"\nvoid main() {}\n' \
+        "$name" >"$shader"
+    if "$GLSLANG" -V -I"$INCLUDE_DIR" "$shader" -o "$WORK/internal.spv" >/dev/null 2>&1; then
+        printf 'FAIL  %-17s %s\n' "alone" "$name.glsl compiled on its own; it must refuse outside an instantiation"
+        failures=$((failures + 1))
+    else
+        printf 'ok    %-17s %s\n' "alone" "$name.glsl refuses to compile on its own"
+    fi
+}
+
 for file in "${includes[@]}"; do
     name=$(basename "$file" .glsl)
+    if [[ " ${internal_files[*]} " == *" $name "* ]]; then
+        check_internal "$file" "$name"
+        continue
+    fi
     if ! call_for "$name" frag >/dev/null; then
         echo "FAIL  $name.glsl: no test call for this include; add a case to call_for() in $0"
         failures=$((failures + 1))

@@ -9,7 +9,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers
-  glslang-tools glslc
+  glslang-tools glslc spirv-tools
   libglm-dev libopenimageio-dev openimageio-tools
   libvulkan-volk-dev nlohmann-json3-dev doctest-dev
   python3 python3-venv

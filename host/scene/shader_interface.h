@@ -36,7 +36,10 @@ struct PushConstants {
     int32_t truth_first;      // ground-truth: samples [first, first + count) of the grid (the viewer's
     int32_t truth_count;      // progressive accumulation); 0 = every sample from first on
     float gradient_scale;     // render: uv gradients times this (1; the viewer's previews: their fraction)
-    int32_t padding;          // the block's size is a multiple of its 16-byte alignment
+    int32_t layer;            // sample: the array layer (array kinds), the first bindless index
+    int32_t compare_op;       // sample, shadow kind: VkCompareOp of the manual filters' comparison
+    float dref;               // sample, shadow kind: the reference depth
+    int32_t padding[2];       // the block's size is a multiple of its 16-byte alignment
 };
 static_assert(offsetof(PushConstants, wrap_mode) == HARNESS_PUSH_WRAP_MODE);
 static_assert(offsetof(PushConstants, lod_bias) == HARNESS_PUSH_LOD_BIAS);
@@ -59,6 +62,9 @@ static_assert(offsetof(PushConstants, sat_scale) == HARNESS_PUSH_SAT_SCALE);
 static_assert(offsetof(PushConstants, truth_first) == HARNESS_PUSH_TRUTH_FIRST);
 static_assert(offsetof(PushConstants, truth_count) == HARNESS_PUSH_TRUTH_COUNT);
 static_assert(offsetof(PushConstants, gradient_scale) == HARNESS_PUSH_GRADIENT_SCALE);
+static_assert(offsetof(PushConstants, layer) == HARNESS_PUSH_LAYER);
+static_assert(offsetof(PushConstants, compare_op) == HARNESS_PUSH_COMPARE_OP);
+static_assert(offsetof(PushConstants, dref) == HARNESS_PUSH_DREF);
 static_assert(sizeof(PushConstants) == HARNESS_PUSH_SIZE);
 
 // SceneBlock in shaders/harness/scene.glsl (std140: vec4 members and vec4 arrays, 16 bytes each).

@@ -75,6 +75,20 @@
 #define HARNESS_BINDING_STATS 3   // storage buffer: HARNESS_STATS_UINTS a lookup (sample)
 #define HARNESS_BINDING_SAT_LOW 4  // usampler2D RGBA32UI: summed-area table, low 32 bits per channel
 #define HARNESS_BINDING_SAT_HIGH 5 // usampler2D R32UI: bits 32..39 of the four channels, one byte each
+#define HARNESS_BINDING_SAMPLER 6  // sampler (separate kinds) or samplerShadow (shadow): for the hardware taps
+
+// How the harness binds the texture (a -D define per SPIR-V variant; filter_select.glsl, api: access.glsl):
+#define HARNESS_RESOURCE_COMBINED 0       // sampler2D u_texture (and usampler2D SAT tables)
+#define HARNESS_RESOURCE_SEPARATE 1       // texture2D u_image + sampler u_sampler (utexture2D SAT tables)
+#define HARNESS_RESOURCE_ARRAY 2          // sampler2DArray u_texture, layer pc.layer (usampler2DArray tables)
+#define HARNESS_RESOURCE_SEPARATE_ARRAY 3 // texture2DArray u_image + sampler u_sampler (utexture2DArray tables)
+#define HARNESS_RESOURCE_BINDLESS 4       // sampler2D u_textures[HARNESS_BINDLESS_COUNT], index non-uniform
+#define HARNESS_RESOURCE_UINT 5           // usampler2D u_texture (integer data, manual filters only)
+#define HARNESS_RESOURCE_SINT 6           // isampler2D u_texture
+#define HARNESS_RESOURCE_SHADOW 7         // texture2D u_image (depth) + samplerShadow u_sampler: manual
+                                          // filters compare with tf_compare(pc.compareOp, pc.dref), hw with
+                                          // the sampler's compareOp
+#define HARNESS_BINDLESS_COUNT 4 // bindless: lookup i reads u_textures[(pc.layer + i) % HARNESS_BINDLESS_COUNT]
 
 // sample's records: a lookup is u, v, du/dx, dv/dx, du/dy, dv/dy (floats), its result a vec4, its stats
 // texel fetches and hardware lookups (uints).
@@ -104,7 +118,11 @@
 #define HARNESS_PUSH_TRUTH_FIRST 96  // ground-truth: the first sample of the range a frame takes (viewer)
 #define HARNESS_PUSH_TRUTH_COUNT 100 // ground-truth: samples in the range; 0 = every sample from the first on
 #define HARNESS_PUSH_GRADIENT_SCALE 104 // render: uv gradients times this (the viewer's previews; else 1)
-#define HARNESS_PUSH_SIZE 112        // padded to a multiple of 16, the block's alignment (vec4 members)
+#define HARNESS_PUSH_LAYER 108       // sample: the array layer read (array kinds), the first bindless index
+#define HARNESS_PUSH_COMPARE_OP 112  // sample, shadow kind: VkCompareOp of the manual filters' comparison
+#define HARNESS_PUSH_DREF 116        // sample, shadow kind: the reference depth
+#define HARNESS_PUSH_SIZE 128        // padded to a multiple of 16, the block's alignment (vec4 members); 128 is
+                                     // Vulkan's least maxPushConstantsSize: nothing more fits
 
 // The scene's uniform block (std140 offsets in bytes; tf::SceneParams): ten vec4s of parameters, then
 // three corners a triangle of positions, then of uvs (vec4 arrays: 16-byte stride in std140).

@@ -11,6 +11,28 @@ uint hwLookupCount = 0u;
 #define TF_COUNT_FETCHES(n) fetchCount += uint(n)
 #define TF_COUNT_HW_LOOKUPS(n) hwLookupCount += uint(n)
 
+#ifndef HARNESS_RESOURCE
+#define HARNESS_RESOURCE HARNESS_RESOURCE_COMBINED
+#endif
+// Only the resource kinds this variant binds are instantiated (compile time); the SAT's usampler2D tables
+// come with TF_RESOURCE_SAMPLER_2D.
+#if HARNESS_RESOURCE == HARNESS_RESOURCE_SEPARATE
+#define TF_RESOURCES TF_RESOURCE_TEXTURE_2D
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_ARRAY
+#define TF_RESOURCES TF_RESOURCE_SAMPLER_2D_ARRAY
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_SEPARATE_ARRAY
+#define TF_RESOURCES TF_RESOURCE_TEXTURE_2D_ARRAY
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_UINT || HARNESS_RESOURCE == HARNESS_RESOURCE_SINT
+#define TF_RESOURCES (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_INTEGER)
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_SHADOW
+#define TF_RESOURCES (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_SHADOW)
+#else
+#define TF_RESOURCES TF_RESOURCE_SAMPLER_2D
+#endif
+#if HARNESS_RESOURCE == HARNESS_RESOURCE_BINDLESS
+#extension GL_EXT_nonuniform_qualifier : require
+#define TF_NONUNIFORM nonuniformEXT // every image instruction in the includes: the index is divergent
+#endif
 #include "texfilter/texfilter.glsl"
 #include "texfilter/debug.glsl"
 
@@ -26,9 +48,102 @@ uint hwLookupCount = 0u;
 #error "config.h: HARNESS_TAPS_* must equal texfilter's TF_TAPS_*"
 #endif
 
-layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform sampler2D u_texture;
+// The texture as HARNESS_RESOURCE binds it (config.h), and how harness_filter passes it to the includes:
+// HARNESS_TEX / HARNESS_X the texture and the extras after uv for the manual forms, HARNESS_TEX_HW /
+// HARNESS_X_HW for the _hw forms (none for integer data), HARNESS_SAT / HARNESS_SAT_X the SAT's tables,
+// HARNESS_GRAD the hw-* modes' lookup, HARNESS_SIZE0 / HARNESS_LEVELS the queries of the debug views.
+// sample's lookup index (bindless: which texture a lookup reads); 0 in render.
+uint harnessLookupIndex = 0u;
+
+#if HARNESS_RESOURCE == HARNESS_RESOURCE_COMBINED || HARNESS_RESOURCE == HARNESS_RESOURCE_BINDLESS || \
+    HARNESS_RESOURCE == HARNESS_RESOURCE_UINT || HARNESS_RESOURCE == HARNESS_RESOURCE_SINT || \
+    HARNESS_RESOURCE == HARNESS_RESOURCE_SHADOW
 layout(set = 0, binding = HARNESS_BINDING_SAT_LOW) uniform usampler2D u_satLow;
 layout(set = 0, binding = HARNESS_BINDING_SAT_HIGH) uniform usampler2D u_satHigh;
+#define HARNESS_SAT_X
+#endif
+
+#if HARNESS_RESOURCE == HARNESS_RESOURCE_COMBINED
+layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform sampler2D u_texture;
+#define HARNESS_TEX u_texture
+#define HARNESS_X
+#define HARNESS_TEX_HW u_texture
+#define HARNESS_X_HW
+#define HARNESS_GRAD(uv, dx, dy) textureGrad(u_texture, uv, dx, dy)
+#define HARNESS_SIZE0 textureSize(u_texture, 0)
+#define HARNESS_LEVELS textureQueryLevels(u_texture)
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_SEPARATE
+layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform texture2D u_image;
+layout(set = 0, binding = HARNESS_BINDING_SAMPLER) uniform sampler u_sampler;
+layout(set = 0, binding = HARNESS_BINDING_SAT_LOW) uniform utexture2D u_satLow;
+layout(set = 0, binding = HARNESS_BINDING_SAT_HIGH) uniform utexture2D u_satHigh;
+#define HARNESS_SAT_X
+#define HARNESS_TEX u_image
+#define HARNESS_X
+#define HARNESS_TEX_HW u_image, u_sampler
+#define HARNESS_X_HW
+#define HARNESS_GRAD(uv, dx, dy) textureGrad(sampler2D(u_image, u_sampler), uv, dx, dy)
+#define HARNESS_SIZE0 textureSize(u_image, 0)
+#define HARNESS_LEVELS textureQueryLevels(u_image)
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_ARRAY
+layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform sampler2DArray u_texture;
+layout(set = 0, binding = HARNESS_BINDING_SAT_LOW) uniform usampler2DArray u_satLow;
+layout(set = 0, binding = HARNESS_BINDING_SAT_HIGH) uniform usampler2DArray u_satHigh;
+#define HARNESS_SAT_X , pc.layer
+#define HARNESS_TEX u_texture
+#define HARNESS_X , pc.layer
+#define HARNESS_TEX_HW u_texture
+#define HARNESS_X_HW , pc.layer
+#define HARNESS_GRAD(uv, dx, dy) textureGrad(u_texture, vec3(uv, float(pc.layer)), dx, dy)
+#define HARNESS_SIZE0 textureSize(u_texture, 0).xy
+#define HARNESS_LEVELS textureQueryLevels(u_texture)
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_SEPARATE_ARRAY
+layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform texture2DArray u_image;
+layout(set = 0, binding = HARNESS_BINDING_SAMPLER) uniform sampler u_sampler;
+layout(set = 0, binding = HARNESS_BINDING_SAT_LOW) uniform utexture2DArray u_satLow;
+layout(set = 0, binding = HARNESS_BINDING_SAT_HIGH) uniform utexture2DArray u_satHigh;
+#define HARNESS_SAT_X , pc.layer
+#define HARNESS_TEX u_image
+#define HARNESS_X , pc.layer
+#define HARNESS_TEX_HW u_image, u_sampler
+#define HARNESS_X_HW , pc.layer
+#define HARNESS_GRAD(uv, dx, dy) textureGrad(sampler2DArray(u_image, u_sampler), vec3(uv, float(pc.layer)), dx, dy)
+#define HARNESS_SIZE0 textureSize(u_image, 0).xy
+#define HARNESS_LEVELS textureQueryLevels(u_image)
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_BINDLESS
+layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform sampler2D u_textures[HARNESS_BINDLESS_COUNT];
+#define HARNESS_INDEX ((uint(pc.layer) + harnessLookupIndex) % uint(HARNESS_BINDLESS_COUNT))
+#define HARNESS_TEX u_textures[nonuniformEXT(HARNESS_INDEX)]
+#define HARNESS_X
+#define HARNESS_TEX_HW HARNESS_TEX
+#define HARNESS_X_HW
+#define HARNESS_GRAD(uv, dx, dy) textureGrad(HARNESS_TEX, uv, dx, dy)
+#define HARNESS_SIZE0 textureSize(HARNESS_TEX, 0)
+#define HARNESS_LEVELS textureQueryLevels(HARNESS_TEX)
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_UINT || HARNESS_RESOURCE == HARNESS_RESOURCE_SINT
+#if HARNESS_RESOURCE == HARNESS_RESOURCE_UINT
+layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform usampler2D u_texture;
+#else
+layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform isampler2D u_texture;
+#endif
+#define HARNESS_TEX u_texture
+#define HARNESS_X
+#define HARNESS_GRAD(uv, dx, dy) vec4(0.0) // integer formats cannot be filtered: the host refuses hw-*
+#define HARNESS_SIZE0 textureSize(u_texture, 0)
+#define HARNESS_LEVELS textureQueryLevels(u_texture)
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_SHADOW
+layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform texture2D u_image;
+layout(set = 0, binding = HARNESS_BINDING_SAMPLER) uniform samplerShadow u_sampler;
+#define HARNESS_TEX u_image
+#define HARNESS_X , tf_compare(pc.compareOp, pc.dref)
+#define HARNESS_TEX_HW u_image, u_sampler
+#define HARNESS_X_HW , pc.dref
+#define HARNESS_GRAD(uv, dx, dy) vec4(textureGrad(sampler2DShadow(u_image, u_sampler), vec3(uv, pc.dref), dx, dy))
+#define HARNESS_SIZE0 textureSize(u_image, 0)
+#define HARNESS_LEVELS textureQueryLevels(u_image)
+#else
+#error "HARNESS_RESOURCE: unknown resource kind"
+#endif
 
 // The filter is a specialization constant, so each pipeline holds one filter's code: with a run-time
 // switch every family's texture calls stayed in the shader, and lavapipe generated its anisotropic
@@ -62,6 +177,9 @@ layout(push_constant) uniform PushConstants {
     // render: the gradients times this. 1, but in the viewer's previews, rendered at 1/k of the size: 1/k, so
     // each preview pixel is filtered with the footprint of a full-size pixel (the same LOD and cost a lookup).
     layout(offset = HARNESS_PUSH_GRADIENT_SCALE) float gradientScale;
+    layout(offset = HARNESS_PUSH_LAYER) int layer;         // sample: array layer, first bindless index
+    layout(offset = HARNESS_PUSH_COMPARE_OP) int compareOp; // sample, shadow: VkCompareOp (manual filters)
+    layout(offset = HARNESS_PUSH_DREF) float dref;          // sample, shadow: the reference depth
 } pc;
 
 vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
@@ -69,26 +187,35 @@ vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
     tf_Sampler s = tf_Sampler(pc.wrapMode, pc.lodBias, pc.lodMin, pc.lodMax);
     bool hardwareTaps = pc.taps == TF_TAPS_HARDWARE;
     switch (FILTER_ID) {
-    case HARNESS_FILTER_NEAREST: return tf_nearest(u_texture, uv, s);
-    case HARNESS_FILTER_BILINEAR: return tf_bilinear(u_texture, uv, s);
-    case HARNESS_FILTER_TRILINEAR: return tf_trilinear(u_texture, uv, dUVdx, dUVdy, s);
-    case HARNESS_FILTER_NEAREST_MIP: return tf_nearest_mip(u_texture, uv, dUVdx, dUVdy, s);
-    case HARNESS_FILTER_BILINEAR_MIP: return tf_bilinear_mip(u_texture, uv, dUVdx, dUVdy, s);
-    case HARNESS_FILTER_BRILINEAR: return tf_brilinear(u_texture, uv, dUVdx, dUVdy, s, pc.band);
+    case HARNESS_FILTER_NEAREST: return tf_nearest(HARNESS_TEX, uv HARNESS_X, s);
+    case HARNESS_FILTER_BILINEAR: return tf_bilinear(HARNESS_TEX, uv HARNESS_X, s);
+    case HARNESS_FILTER_TRILINEAR: return tf_trilinear(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s);
+    case HARNESS_FILTER_NEAREST_MIP: return tf_nearest_mip(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s);
+    case HARNESS_FILTER_BILINEAR_MIP: return tf_bilinear_mip(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s);
+    case HARNESS_FILTER_BRILINEAR: return tf_brilinear(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.band);
+#ifdef HARNESS_TEX_HW
     case HARNESS_FILTER_ANISO:
-        return hardwareTaps ? tf_aniso_hw(u_texture, uv, dUVdx, dUVdy, s, pc.probes, pc.anisoShape)
-                            : tf_aniso(u_texture, uv, dUVdx, dUVdy, s, pc.probes, pc.anisoShape);
+        return hardwareTaps ? tf_aniso_hw(HARNESS_TEX_HW, uv HARNESS_X_HW, dUVdx, dUVdy, s, pc.probes, pc.anisoShape)
+                            : tf_aniso(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.probes, pc.anisoShape);
     case HARNESS_FILTER_EWA:
-        return hardwareTaps ? tf_ewa_hw(u_texture, uv, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso)
-                            : tf_ewa(u_texture, uv, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso);
-    case HARNESS_FILTER_SAT: return tf_sat(u_satLow, u_satHigh, uv, dUVdx, dUVdy, s, pc.satOffset, pc.satScale);
+        return hardwareTaps ? tf_ewa_hw(HARNESS_TEX_HW, uv HARNESS_X_HW, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso)
+                            : tf_ewa(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso);
+#else // integer data: no sampler can filter it, so manual taps only (the host refuses --taps hardware)
+    case HARNESS_FILTER_ANISO: return tf_aniso(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.probes, pc.anisoShape);
+    case HARNESS_FILTER_EWA: return tf_ewa(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso);
+#endif
+#ifdef HARNESS_SAT_X
+    case HARNESS_FILTER_SAT:
+        return tf_sat(u_satLow, u_satHigh, uv HARNESS_SAT_X, dUVdx, dUVdy, s, pc.satOffset, pc.satScale);
     case HARNESS_FILTER_SAT_ASSEMBLY:
-        return tf_sat_assembly(u_satLow, u_satHigh, uv, dUVdx, dUVdy, s, pc.satOffset, pc.satScale, pc.boxes);
+        return tf_sat_assembly(u_satLow, u_satHigh, uv HARNESS_SAT_X, dUVdx, dUVdy, s, pc.satOffset, pc.satScale,
+                               pc.boxes);
+#endif
     case HARNESS_FILTER_NONE: return vec4(fract(uv), 0.5, 1.0); // the scene without the texture: baseline cost
     case HARNESS_FILTER_GROUND_TRUTH: return vec4(0.0);         // per pixel, not per lookup: see ground_truth.glsl
     default:
         TF_COUNT_HW_LOOKUPS(1);
-        return textureGrad(u_texture, uv, dUVdx, dUVdy); // hw-*: sampler state set by the host
+        return HARNESS_GRAD(uv, dUVdx, dUVdy); // hw-*: sampler state set by the host
     }
 }
 
@@ -106,8 +233,8 @@ vec4 harness_shade(vec2 uv, vec2 dUVdx, vec2 dUVdy)
                  : FILTER_ID == HARNESS_FILTER_EWA ? TF_DEBUG_EWA
                                                    : TF_DEBUG_ISOTROPIC;
     tf_Sampler s = tf_Sampler(pc.wrapMode, pc.lodBias, pc.lodMin, pc.lodMax);
-    tf_Footprint f = tf_debug_footprint(uv, dUVdx, dUVdy, vec2(textureSize(u_texture, 0)),
-                                        textureQueryLevels(u_texture), s, family, pc.probes, pc.anisoShape,
+    tf_Footprint f = tf_debug_footprint(uv, dUVdx, dUVdy, vec2(HARNESS_SIZE0), HARNESS_LEVELS, s, family, pc.probes,
+                                        pc.anisoShape,
                                         pc.maxAniso);
     float work = float(fetchCount + hwLookupCount);
     switch (pc.view) {

@@ -48,7 +48,7 @@ vec4 ground_truth(ivec2 pixel)
     vec4 sum = vec4(0.0);
     [[dont_unroll]] for (int i = first; i < first + count; ++i) {
         Hit h = scene_hit(scene, truth_sample(pixel, i, side, pc.pixelFilter));
-        sum += h.hit ? tf_bilinear(u_texture, h.uv, s) : scene.background;
+        sum += h.hit ? tf_bilinear(HARNESS_TEX, h.uv HARNESS_X, s) : scene.background;
     }
     return sum / float(count);
 }

@@ -3,6 +3,14 @@
 // Use:     vec4 tf_aniso(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
 //          vec4 tf_aniso_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes,
 //                           int shape); // the same probes as hardware trilinear lookups
+//          Every resource kind (access.glsl, docs/API.md "Resources"): the manual form also with texture2D,
+//          u/isampler2D, u/itexture2D, sampler2DArray / texture2DArray + `int layer` after uv, or a depth
+//          sampler2D / texture2D + `tf_Compare cmp` after uv (percentage-closer filtering over the footprint);
+//          the _hw form also with texture2D + sampler, sampler2DArray, texture2DArray + sampler (+ `int layer`),
+//          sampler2DShadow or texture2D + samplerShadow + `float dref` after uv (each tap a hardware
+//          comparison), e.g.
+//          tf_aniso_hw(texture2D tex, sampler smp, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes,
+//                      int shape).
 // Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as in lod.glsl; maxProbes N_max, clamped to
 //          [1, TF_ANISO_MAX_PROBES = 16]; shape TF_ANISO_GPU or TF_ANISO_FELINE (any other value: TF_ANISO_GPU).
 //          TF_ANISO_RATIO_SLACK: define before including (default 1.0 / 64.0): the slack s_r in N below,
@@ -68,16 +76,24 @@ int tfi_aniso_count(float ratio, int maxN)
     return ratio < float(maxN) ? max(1, int(ceil(ratio - TF_ANISO_RATIO_SLACK))) : maxN;
 }
 
-tfi_AnisoFootprint tfi_aniso_footprint(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
+#define TFI_FAMILY TFI_FAMILY_ANISO
+#include "instantiate.glsl"
+#undef TFI_FAMILY
+
+#elif defined(TFI_FAMILY)
+#if TFI_FAMILY == TFI_FAMILY_ANISO && 1 // per resource kind (access.glsl)
+
+#if TFI_OWNS_T
+tfi_AnisoFootprint tfi_aniso_footprint(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
 {
     int maxN = clamp(maxProbes, 1, TF_ANISO_MAX_PROBES);
     tfi_AnisoFootprint fp = tfi_AnisoFootprint(vec2(0.0), 1, 0.0);
-    vec2 size0 = vec2(textureSize(tex, 0));
+    vec2 size0 = vec2(TFI_SIZE0);
     vec2 ax = dUVdx * size0, ay = dUVdy * size0; // the columns of J, in level-0 texels
     float m = max(max(abs(ax.x), abs(ax.y)), max(abs(ay.x), abs(ay.y)));
     if (!(m > 0.0) || isinf(m) || !tf_finite(dUVdx) || !tf_finite(dUVdy)) {
         // Zero gradients: λ = −∞, the finest level. NaN/±Inf (or past float range in texels): +∞, the coarsest.
-        fp.lod = tf_lod(tex, dUVdx, dUVdy, s);
+        fp.lod = tf_lod(TFI_A, dUVdx, dUVdy, s);
         return fp;
     }
     // J scaled by a power of two so that its largest entry is in [½, 1): the scale is exact, and nothing
@@ -94,7 +110,7 @@ tfi_AnisoFootprint tfi_aniso_footprint(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf
             t.lodBias -= log2(float(fp.probes));
             fp.axis = px2 >= py2 ? dUVdx : dUVdy; // ties: dUVdx
         }
-        fp.lod = tf_lod(tex, dUVdx, dUVdy, t);
+        fp.lod = tf_lod(TFI_A, dUVdx, dUVdy, t);
         return fp;
     }
 
@@ -107,7 +123,7 @@ tfi_AnisoFootprint tfi_aniso_footprint(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf
     float major = Q + R, minor = abs(Q - R); // σ1, σ2 times 2^-e
     fp.probes = tfi_aniso_count(major / minor, maxN);
     float lambda = float(e) + log2(max(minor, major / float(fp.probes))) + s.lodBias;
-    fp.lod = tfi_clamp_lod(lambda, s, tex);
+    fp.lod = tfi_clamp_lod(lambda, s, TFI_A);
     if (fp.probes > 1) { // then major > minor, so R > 0, Q > 0 and z != 0
         vec2 z = vec2(F * E - G * H, F * H + G * E);
         float r = length(z);
@@ -116,33 +132,38 @@ tfi_AnisoFootprint tfi_aniso_footprint(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf
     }
     return fp;
 }
+#endif
 
 // One trilinear probe at a given LOD in [0, levels−1], from texelFetch: tf_trilinear's blend.
-vec4 tfi_aniso_probe(sampler2D tex, vec2 uv, float lod, int wrapMode)
+vec4 tfi_aniso_probe(TFI_T, vec2 uv TFI_X, float lod, int wrapMode)
 {
+#if !TFI_CAN_FETCH
+    return vec4(0.0); // no texelFetch on this kind: it has only the _hw entry points, which never come here
+#else
     float f;
     int lo = tfi_split_lod(lod, f);
-#define TFI_PROBE_LEVEL(level) tf_bilinear_level(tex, uv, level, wrapMode)
+#define TFI_PROBE_LEVEL(level) tf_bilinear_level(TFI_A, uv TFI_XA, level, wrapMode)
     return TFI_BLEND_LEVELS(TFI_PROBE_LEVEL, lo, f);
 #undef TFI_PROBE_LEVEL
+#endif
 }
 
 // One trilinear probe through the hardware sampler, at uv moved by whole periods as the manual form's
 // bilinear lookups do (a sampler given |uv| >= ~1e37 returns NaN on lavapipe: uv·size overflows).
-vec4 tfi_aniso_probe_hw(sampler2D tex, vec2 uv, float lod, int wrapMode)
+vec4 tfi_aniso_probe_hw(TFI_T, vec2 uv TFI_X, float lod, int wrapMode)
 {
     TF_COUNT_HW_LOOKUPS(1);
-    return textureLod(tex, tf_reduce_uv(uv, wrapMode), lod);
+    return TFI_LOOKUP(tf_reduce_uv(uv, wrapMode), lod);
 }
 
-vec4 tfi_aniso_filter(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape,
+vec4 tfi_aniso_filter(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape,
                      bool hardware)
 {
     if (!tf_finite(uv))
         return vec4(0.0);
-    tfi_AnisoFootprint fp = tfi_aniso_footprint(tex, dUVdx, dUVdy, s, maxProbes, shape);
+    tfi_AnisoFootprint fp = tfi_aniso_footprint(TFI_A, dUVdx, dUVdy, s, maxProbes, shape);
     if (fp.probes == 1)
-        return hardware ? tfi_aniso_probe_hw(tex, uv, fp.lod, s.wrap) : tfi_aniso_probe(tex, uv, fp.lod, s.wrap);
+        return hardware ? tfi_aniso_probe_hw(TFI_A, uv TFI_XA, fp.lod, s.wrap) : tfi_aniso_probe(TFI_A, uv TFI_XA, fp.lod, s.wrap);
     vec4 sum = vec4(0.0);
     float weights = 0.0;
     for (int k = 0; k < TF_ANISO_MAX_PROBES; ++k) {
@@ -151,20 +172,25 @@ vec4 tfi_aniso_filter(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler
         float t = (float(k) + 0.5) / float(fp.probes) - 0.5;
         float w = shape == TF_ANISO_FELINE ? exp(-8.0 * t * t) : 1.0;
         vec2 p = uv + t * fp.axis;
-        sum += w * (hardware ? tfi_aniso_probe_hw(tex, p, fp.lod, s.wrap) : tfi_aniso_probe(tex, p, fp.lod, s.wrap));
+        sum += w * (hardware ? tfi_aniso_probe_hw(TFI_A, p TFI_XA, fp.lod, s.wrap) : tfi_aniso_probe(TFI_A, p TFI_XA, fp.lod, s.wrap));
         weights += w;
     }
     return sum / weights;
 }
 
-vec4 tf_aniso(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
+#if TFI_MANUAL
+vec4 tf_aniso(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
 {
-    return tfi_aniso_filter(tex, uv, dUVdx, dUVdy, s, maxProbes, shape, false);
+    return tfi_aniso_filter(TFI_A, uv TFI_XA, dUVdx, dUVdy, s, maxProbes, shape, false);
 }
+#endif
 
-vec4 tf_aniso_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
+#if TFI_HW
+vec4 tf_aniso_hw(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
 {
-    return tfi_aniso_filter(tex, uv, dUVdx, dUVdy, s, maxProbes, shape, true);
+    return tfi_aniso_filter(TFI_A, uv TFI_XA, dUVdx, dUVdy, s, maxProbes, shape, true);
 }
+#endif
 
+#endif
 #endif

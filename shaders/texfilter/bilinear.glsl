@@ -3,6 +3,11 @@
 // Use:     vec4 tf_bilinear(sampler2D tex, vec2 uv, tf_Sampler s);                             // level 0 only
 //          vec4 tf_bilinear_mip(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s); // level by LOD
 //          vec4 tf_bilinear_level(sampler2D tex, vec2 uv, int level, int wrapMode); // level in [0, levels−1]
+//          Every resource kind (access.glsl, docs/API.md "Resources"): the same call with texture2D,
+//          u/isampler2D or u/itexture2D (integer texels as float), sampler2DArray or texture2DArray plus
+//          `int layer` right after uv, or a depth sampler2D/texture2D plus `tf_Compare cmp` right after uv
+//          (percentage-closer: each texel compared before it is filtered), e.g.
+//          tf_bilinear(sampler2D depth, vec2 uv, tf_Compare cmp, tf_Sampler s): bilinear PCF.
 // Math:    i0 = floor(u·w_l − ½), α = frac(u·w_l − ½), in full float (hardware samplers round α to
 //          subTexelPrecisionBits, often 8). tf_bilinear_mip reads level tf_mip_level_nearest(tf_lod(...))
 //          (mipmapMode NEAREST: visible seams where the level changes).
@@ -18,27 +23,37 @@
 #include "common.glsl"
 #include "lod.glsl"
 
-vec4 tf_bilinear_level(sampler2D tex, vec2 uv, int level, int wrapMode)
+#define TFI_FAMILY TFI_FAMILY_BILINEAR
+#include "instantiate.glsl"
+#undef TFI_FAMILY
+
+#elif defined(TFI_FAMILY)
+#if TFI_FAMILY == TFI_FAMILY_BILINEAR && TFI_CAN_FETCH // per resource kind (access.glsl)
+
+vec4 tf_bilinear_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
 {
     if (!tf_finite(uv))
         return vec4(0.0);
-    ivec2 size = tf_level_size(tex, level);
+    ivec2 size = tf_level_size(TFI_A, level);
     // uv moved by whole periods first (tf_reduce_uv): no finite uv makes the texel coordinate overflow float.
     vec2 x = clamp(tf_reduce_uv(uv, wrapMode) * vec2(size) - 0.5, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
     vec2 i0 = floor(x);
     vec2 a = x - i0;
     ivec2 xs = tfi_wrap_pair(i0.x, size.x, wrapMode), ys = tfi_wrap_pair(i0.y, size.y, wrapMode);
     TF_COUNT_FETCHES(4);
-    vec4 top = mix(texelFetch(tex, ivec2(xs.x, ys.x), level), texelFetch(tex, ivec2(xs.y, ys.x), level), a.x);
-    vec4 bottom = mix(texelFetch(tex, ivec2(xs.x, ys.y), level), texelFetch(tex, ivec2(xs.y, ys.y), level), a.x);
+    vec4 top = mix(TFI_FETCH(ivec2(xs.x, ys.x), level), TFI_FETCH(ivec2(xs.y, ys.x), level), a.x);
+    vec4 bottom = mix(TFI_FETCH(ivec2(xs.x, ys.y), level), TFI_FETCH(ivec2(xs.y, ys.y), level), a.x);
     return mix(top, bottom, a.y);
 }
 
-vec4 tf_bilinear(sampler2D tex, vec2 uv, tf_Sampler s) { return tf_bilinear_level(tex, uv, 0, s.wrap); }
+#if TFI_MANUAL
+vec4 tf_bilinear(TFI_T, vec2 uv TFI_X, tf_Sampler s) { return tf_bilinear_level(TFI_A, uv TFI_XA, 0, s.wrap); }
 
-vec4 tf_bilinear_mip(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
+vec4 tf_bilinear_mip(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
 {
-    return tf_bilinear_level(tex, uv, tf_mip_level_nearest(tf_lod(tex, dUVdx, dUVdy, s)), s.wrap);
+    return tf_bilinear_level(TFI_A, uv TFI_XA, tf_mip_level_nearest(tf_lod(TFI_A, dUVdx, dUVdy, s)), s.wrap);
 }
+#endif
 
+#endif
 #endif

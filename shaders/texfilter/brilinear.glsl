@@ -3,6 +3,11 @@
 //
 // Use:     vec4  tf_brilinear(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
 //          float tf_brilinear_weight(float f, float band); // the coarser level's weight for LOD fraction f
+//          Every resource kind (access.glsl, docs/API.md "Resources"): the same call with texture2D,
+//          u/isampler2D or u/itexture2D (integer texels as float), sampler2DArray or texture2DArray plus
+//          `int layer` right after uv, or a depth sampler2D/texture2D plus `tf_Compare cmp` right after uv
+//          (percentage-closer: each texel compared before it is filtered), e.g.
+//          tf_brilinear(usampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band).
 // Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as in lod.glsl. No defines.
 //          band B in [0, 1] (above 1: 1; NaN or below 0: 0): the width, in LOD units, of the trilinear
 //          band centred on each transition (LOD fraction f = 1/2 between levels lo = floor(λ) and lo + 1).
@@ -42,14 +47,22 @@ float tf_brilinear_weight(float f, float band)
     return clamp((f - (1.0 - b) * 0.5) / b, 0.0, 1.0);
 }
 
-vec4 tf_brilinear(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band)
+#define TFI_FAMILY TFI_FAMILY_BRILINEAR
+#include "instantiate.glsl"
+#undef TFI_FAMILY
+
+#elif defined(TFI_FAMILY)
+#if TFI_FAMILY == TFI_FAMILY_BRILINEAR && TFI_MANUAL // per resource kind (access.glsl)
+
+vec4 tf_brilinear(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band)
 {
     float f;
-    int lo = tfi_split_lod(tf_lod(tex, dUVdx, dUVdy, s), f);
+    int lo = tfi_split_lod(tf_lod(TFI_A, dUVdx, dUVdy, s), f);
     float w = tf_brilinear_weight(f, band); // 0 or 1 outside the band: one level, 4 fetches
-#define TFI_BRILINEAR_LEVEL(level) tf_bilinear_level(tex, uv, level, s.wrap)
+#define TFI_BRILINEAR_LEVEL(level) tf_bilinear_level(TFI_A, uv TFI_XA, level, s.wrap)
     return TFI_BLEND_LEVELS(TFI_BRILINEAR_LEVEL, lo, w);
 #undef TFI_BRILINEAR_LEVEL
 }
 
+#endif
 #endif

@@ -4,6 +4,14 @@
 // Use:     vec4 tf_ewa(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
 //          vec4 tf_ewa_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha,
 //                         float maxAniso); // the same weights from hardware bilinear taps on 2x2 blocks
+//          Every resource kind (access.glsl, docs/API.md "Resources"): the manual form also with texture2D,
+//          u/isampler2D, u/itexture2D, sampler2DArray / texture2DArray + `int layer` after uv, or a depth
+//          sampler2D / texture2D + `tf_Compare cmp` after uv (percentage-closer filtering over the footprint);
+//          the _hw form also with texture2D + sampler, sampler2DArray, texture2DArray + sampler (+ `int layer`),
+//          sampler2DShadow or texture2D + samplerShadow + `float dref` after uv (each tap a hardware
+//          comparison), e.g.
+//          tf_ewa(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha,
+//                 float maxAniso).
 // Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as everywhere (common.glsl, lod.glsl).
 //          alpha (2, as pbrt, is the usual choice): weight exp(-alpha r²) - exp(-alpha R²), clamped to
 //            [0, 64]; NaN or negative -> 0 (then 1 - r²/R²). Smaller alpha = a wider Gaussian = blurrier.
@@ -94,72 +102,6 @@ struct tfi_EwaShape {
     float m;      // 0 for zero or non-finite gradients: then M = I on every level
 };
 
-// Shape and (biased, clamped) LOD of a lookup.
-tfi_EwaShape tfi_ewa_shape(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float maxAniso, out float lambda)
-{
-    tfi_EwaShape shape = tfi_EwaShape(vec3(0.0), 0.0, 0.0, 0.0);
-    vec2 size0 = vec2(textureSize(tex, 0));
-    // NaN/±Inf, or a footprint entry (gradient · size) past float range: non-finite, as in every family.
-    if (!tf_finite(dUVdx * size0) || !tf_finite(dUVdy * size0)) {
-        lambda = 1e30; // the coarsest level the clamps allow
-    } else {
-        vec2 g = max(abs(dUVdx), abs(dUVdy));
-        float m = max(g.x, g.y);
-        if (!(m > 1e-30)) {
-            lambda = -1e30; // zero footprint: the finest level allowed
-        } else {
-            vec2 ax = dUVdx / m * size0, ay = dUVdy / m * size0; // columns of J/m, |entries| <= size
-            float xx = ax.x * ax.x + ay.x * ay.x, xy = ax.x * ax.y + ay.x * ay.y, yy = ax.y * ax.y + ay.y * ay.y;
-            float h = 0.5 * (xx - yy);
-            float d = sqrt(h * h + xy * xy);
-            float major2 = 0.5 * (xx + yy) + d; // >= 1: the largest |entry| of J/m is >= 1
-            float cross = ax.x * ay.y - ax.y * ay.x;
-            float minor2 = cross * cross / major2; // det / major2: no cancellation
-            float e = maxAniso >= 1.0 ? maxAniso : 1.0;
-            minor2 = max(minor2, major2 / (e * e));
-            // Clamped covariance = minor2·I + (major2 - minor2)·e1e1ᵀ, e1e1ᵀ the projector on the major axis.
-            vec3 p1 = d > 0.0 ? 0.5 * vec3(1.0 + h / d, xy / d, 1.0 - h / d) : vec3(0.5, 0.0, 0.5);
-            shape = tfi_EwaShape(vec3(minor2, 0.0, minor2) + max(major2 - minor2, 0.0) * p1, major2, minor2, m);
-            // On the LOD's level the support's major semi-axis stays inside the loop cap (see the header).
-            const float majorTexels = 0.25 * float(TF_EWA_MAX_TEXELS - 3) / sqrt(TF_EWA_SUPPORT);
-            lambda = log2(m) + max(0.5 * log2(max(minor2, 1e-30)), 0.5 * log2(major2) - log2(majorTexels)) +
-                     s.lodBias;
-        }
-    }
-    lambda = tfi_clamp_lod(lambda, s, tex);
-    return shape;
-}
-
-// The support ellipse on one level: R²·M = R²·(xx, xy, yy) in level texels², its determinant, and the
-// centre uv·size split into an integer texel index `base` and `frac` in [0, 1), so that texel offsets
-// from it are exact in float. For repeat/mirror, base is moved by a multiple of 2·size into
-// [0, 2·size): both modes repeat every 2·size texels, and the parity that anchors tf_ewa_hw's 2x2 grid
-// is kept. uv has been through tf_reduce_uv.
-void tfi_ewa_level_ellipse(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, out vec3 M,
-                          out float det, out vec2 base, out vec2 frac)
-{
-    vec2 size = vec2(tf_level_size(tex, level));
-    vec2 sc = size / vec2(textureSize(tex, 0)); // 2^-level, except along an axis already at 1 texel
-    vec3 D = vec3(sc.x * sc.x, sc.x * sc.y, sc.y * sc.y) * shape.cov;
-    float k = 0.0;
-    if (shape.m > 0.0) {
-        // Hard cap: the support's bounding box half-extents sqrt(R²·M.xx), sqrt(R²·M.yy) <= halfBox, so
-        // that a row or column holds at most K texels. Shrinking is min(), so it is continuous in the footprint.
-        const float halfBox = 0.5 * float(TF_EWA_MAX_TEXELS - 1) - 1.0 / 64.0;
-        k = min(shape.m, sqrt((halfBox * halfBox / TF_EWA_SUPPORT - 1.0) / max(D.x, D.z)));
-    }
-    float k2 = k * k;
-    M = TF_EWA_SUPPORT * (k2 * D + vec3(1.0, 0.0, 1.0));
-    // det(M_unscaled) = k⁴·det(D) + k²·trace(D) + 1, det(D) = sc.x²·sc.y²·major2·minor2: exact form, >= 1.
-    det = TF_EWA_SUPPORT * TF_EWA_SUPPORT *
-          (k2 * k2 * (sc.x * sc.x * sc.y * sc.y) * shape.major2 * shape.minor2 + k2 * (D.x + D.z) + 1.0);
-    vec2 c = clamp(uv * size, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
-    base = floor(c);
-    frac = c - base;
-    if (wrapMode != TF_WRAP_CLAMP)
-        base -= 2.0 * size * floor(base / (2.0 * size));
-}
-
 // r²/R² = xᵀ(R²M)⁻¹x for x = (dx, dy): below 1 inside the support.
 float tfi_ewa_r2(vec3 M, float det, float dx, float dy)
 {
@@ -238,15 +180,89 @@ vec4 tfi_ewa_fit(tfi_EwaMoments s)
 {
     return clamp(tfi_ewa_fit_unclamped(s), s.lo, s.hi);
 }
+#define TFI_FAMILY TFI_FAMILY_EWA
+#include "instantiate.glsl"
+#undef TFI_FAMILY
+
+#elif defined(TFI_FAMILY)
+#if TFI_FAMILY == TFI_FAMILY_EWA // per resource kind (access.glsl)
+
+#if TFI_OWNS_T
+// Shape and (biased, clamped) LOD of a lookup.
+tfi_EwaShape tfi_ewa_shape(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float maxAniso, out float lambda)
+{
+    tfi_EwaShape shape = tfi_EwaShape(vec3(0.0), 0.0, 0.0, 0.0);
+    vec2 size0 = vec2(TFI_SIZE0);
+    // NaN/±Inf, or a footprint entry (gradient · size) past float range: non-finite, as in every family.
+    if (!tf_finite(dUVdx * size0) || !tf_finite(dUVdy * size0)) {
+        lambda = 1e30; // the coarsest level the clamps allow
+    } else {
+        vec2 g = max(abs(dUVdx), abs(dUVdy));
+        float m = max(g.x, g.y);
+        if (!(m > 1e-30)) {
+            lambda = -1e30; // zero footprint: the finest level allowed
+        } else {
+            vec2 ax = dUVdx / m * size0, ay = dUVdy / m * size0; // columns of J/m, |entries| <= size
+            float xx = ax.x * ax.x + ay.x * ay.x, xy = ax.x * ax.y + ay.x * ay.y, yy = ax.y * ax.y + ay.y * ay.y;
+            float h = 0.5 * (xx - yy);
+            float d = sqrt(h * h + xy * xy);
+            float major2 = 0.5 * (xx + yy) + d; // >= 1: the largest |entry| of J/m is >= 1
+            float cross = ax.x * ay.y - ax.y * ay.x;
+            float minor2 = cross * cross / major2; // det / major2: no cancellation
+            float e = maxAniso >= 1.0 ? maxAniso : 1.0;
+            minor2 = max(minor2, major2 / (e * e));
+            // Clamped covariance = minor2·I + (major2 - minor2)·e1e1ᵀ, e1e1ᵀ the projector on the major axis.
+            vec3 p1 = d > 0.0 ? 0.5 * vec3(1.0 + h / d, xy / d, 1.0 - h / d) : vec3(0.5, 0.0, 0.5);
+            shape = tfi_EwaShape(vec3(minor2, 0.0, minor2) + max(major2 - minor2, 0.0) * p1, major2, minor2, m);
+            // On the LOD's level the support's major semi-axis stays inside the loop cap (see the header).
+            const float majorTexels = 0.25 * float(TF_EWA_MAX_TEXELS - 3) / sqrt(TF_EWA_SUPPORT);
+            lambda = log2(m) + max(0.5 * log2(max(minor2, 1e-30)), 0.5 * log2(major2) - log2(majorTexels)) +
+                     s.lodBias;
+        }
+    }
+    lambda = tfi_clamp_lod(lambda, s, TFI_A);
+    return shape;
+}
+
+// The support ellipse on one level: R²·M = R²·(xx, xy, yy) in level texels², its determinant, and the
+// centre uv·size split into an integer texel index `base` and `frac` in [0, 1), so that texel offsets
+// from it are exact in float. For repeat/mirror, base is moved by a multiple of 2·size into
+// [0, 2·size): both modes repeat every 2·size texels, and the parity that anchors tf_ewa_hw's 2x2 grid
+// is kept. uv has been through tf_reduce_uv.
+void tfi_ewa_level_ellipse(TFI_T, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, out vec3 M,
+                          out float det, out vec2 base, out vec2 frac)
+{
+    vec2 size = vec2(tf_level_size(TFI_A, level));
+    vec2 sc = size / vec2(TFI_SIZE0); // 2^-level, except along an axis already at 1 texel
+    vec3 D = vec3(sc.x * sc.x, sc.x * sc.y, sc.y * sc.y) * shape.cov;
+    float k = 0.0;
+    if (shape.m > 0.0) {
+        // Hard cap: the support's bounding box half-extents sqrt(R²·M.xx), sqrt(R²·M.yy) <= halfBox, so
+        // that a row or column holds at most K texels. Shrinking is min(), so it is continuous in the footprint.
+        const float halfBox = 0.5 * float(TF_EWA_MAX_TEXELS - 1) - 1.0 / 64.0;
+        k = min(shape.m, sqrt((halfBox * halfBox / TF_EWA_SUPPORT - 1.0) / max(D.x, D.z)));
+    }
+    float k2 = k * k;
+    M = TF_EWA_SUPPORT * (k2 * D + vec3(1.0, 0.0, 1.0));
+    // det(M_unscaled) = k⁴·det(D) + k²·trace(D) + 1, det(D) = sc.x²·sc.y²·major2·minor2: exact form, >= 1.
+    det = TF_EWA_SUPPORT * TF_EWA_SUPPORT *
+          (k2 * k2 * (sc.x * sc.x * sc.y * sc.y) * shape.major2 * shape.minor2 + k2 * (D.x + D.z) + 1.0);
+    vec2 c = clamp(uv * size, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
+    base = floor(c);
+    frac = c - base;
+    if (wrapMode != TF_WRAP_CLAMP)
+        base -= 2.0 * size * floor(base / (2.0 * size));
+}
+#endif
 
 // The filter on one level: every texel inside the support (texelFetch), fitted (tfi_ewa_fit).
-vec4 tfi_ewa_level(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, float alpha)
+vec4 tfi_ewa_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha)
 {
     vec3 M;
     float det;
     vec2 base, frac;
-    tfi_ewa_level_ellipse(tex, uv, level, wrapMode, shape, M, det, base, frac);
-    ivec2 size = tf_level_size(tex, level);
+    tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, M, det, base, frac);
+    ivec2 size = tf_level_size(TFI_A, level);
     vec2 rowSpan = tfi_ewa_rows(M, frac.y);
     int rows = int(clamp(rowSpan.y - rowSpan.x + 1.0, 0.0, float(TF_EWA_MAX_TEXELS)));
     // Moments in whitened coordinates y = R·d, RᵀR = (R²M)⁻¹ (Cholesky, R upper triangular): the support
@@ -273,7 +289,7 @@ vec4 tfi_ewa_level(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaShape
             if (r2 < 1.0) {
                 float w = tfi_ewa_weight(r2, alpha), yx = r11 * dx + cx, wx = w * yx;
                 TF_COUNT_FETCHES(1);
-                vec4 t = texelFetch(tex, ivec2(tf_wrap(base.x + i, size.x, wrapMode), ty), level);
+                vec4 t = TFI_FETCH(ivec2(tf_wrap(base.x + i, size.x, wrapMode), ty), level);
                 if (s.w + rw == 0.0) {
                     s.pivot = t; // the first texel (an earlier one of weight 0 added nothing)
                     s.lo = t;
@@ -306,14 +322,14 @@ vec4 tfi_ewa_level(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaShape
 // offset m, the second moves every tap by -m, which centres the taps' mean on uv. Exact on a linear
 // texture (a bilinear lookup reproduces it wherever it lands), the same as the fit where the weights
 // are symmetric.
-vec4 tfi_ewa_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, float alpha)
+vec4 tfi_ewa_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha)
 {
     const int maxBlocks = TF_EWA_MAX_TEXELS / 2 + 1; // K texels touch at most K/2+1 blocks
     vec3 M;
     float det;
     vec2 base, frac;
-    tfi_ewa_level_ellipse(tex, uv, level, wrapMode, shape, M, det, base, frac);
-    vec2 size = vec2(tf_level_size(tex, level));
+    tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, M, det, base, frac);
+    vec2 size = vec2(tf_level_size(TFI_A, level));
     vec2 parity = base - 2.0 * floor(0.5 * base); // blocks start at offsets o with base + o even
     vec2 rowSpan = tfi_ewa_rows(M, frac.y);
     float firstRow = 2.0 * floor(0.5 * (rowSpan.x + parity.y)) - parity.y;
@@ -354,7 +370,7 @@ vec4 tfi_ewa_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaSh
                         weights += total;
                     } else {
                         TF_COUNT_HW_LOOKUPS(1);
-                        sum += total * textureLod(tex, (base + vec2(i0, j0) + 0.5 + ab - shift) / size, float(level));
+                        sum += total * TFI_LOOKUP((base + vec2(i0, j0) + 0.5 + ab - shift) / size, float(level));
                     }
                 }
             }
@@ -367,17 +383,21 @@ vec4 tfi_ewa_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaSh
 }
 
 // One level: a 1x1 level is its texel whatever the ellipse (saves up to K² reads of it at the horizon).
-vec4 tfi_ewa_on_level(sampler2D tex, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, float alpha, bool hardware)
+vec4 tfi_ewa_on_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha, bool hardware)
 {
-    if (tf_level_size(tex, level) == ivec2(1)) {
+    if (tf_level_size(TFI_A, level) == ivec2(1)) {
+        if (TFI_CAN_FETCH == 0) { // a shadow sampler: its one texel through the sampler (exact at the centre)
+            TF_COUNT_HW_LOOKUPS(1);
+            return TFI_LOOKUP(vec2(0.5), float(level));
+        }
         TF_COUNT_FETCHES(1);
-        return texelFetch(tex, ivec2(0), level);
+        return TFI_FETCH(ivec2(0), level);
     }
-    return hardware ? tfi_ewa_level_hw(tex, uv, level, wrapMode, shape, alpha)
-                    : tfi_ewa_level(tex, uv, level, wrapMode, shape, alpha);
+    return hardware ? tfi_ewa_level_hw(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha)
+                    : tfi_ewa_level(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha);
 }
 
-vec4 tfi_ewa_impl(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso,
+vec4 tfi_ewa_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso,
                  bool hardware)
 {
     if (!tf_finite(uv))
@@ -385,22 +405,27 @@ vec4 tfi_ewa_impl(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, 
     uv = tf_reduce_uv(uv, s.wrap);
     float a = alpha >= 0.0 ? min(alpha, 64.0) : 0.0;
     float lambda;
-    tfi_EwaShape shape = tfi_ewa_shape(tex, dUVdx, dUVdy, s, maxAniso, lambda);
+    tfi_EwaShape shape = tfi_ewa_shape(TFI_A, dUVdx, dUVdy, s, maxAniso, lambda);
     float f;
     int lo = tfi_split_lod(lambda, f);
-#define TFI_EWA_LEVEL(level) tfi_ewa_on_level(tex, uv, level, s.wrap, shape, a, hardware)
+#define TFI_EWA_LEVEL(level) tfi_ewa_on_level(TFI_A, uv TFI_XA, level, s.wrap, shape, a, hardware)
     return TFI_BLEND_LEVELS(TFI_EWA_LEVEL, lo, f);
 #undef TFI_EWA_LEVEL
 }
 
-vec4 tf_ewa(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso)
+#if TFI_MANUAL
+vec4 tf_ewa(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso)
 {
-    return tfi_ewa_impl(tex, uv, dUVdx, dUVdy, s, alpha, maxAniso, false);
+    return tfi_ewa_impl(TFI_A, uv TFI_XA, dUVdx, dUVdy, s, alpha, maxAniso, false);
 }
+#endif
 
-vec4 tf_ewa_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso)
+#if TFI_HW
+vec4 tf_ewa_hw(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso)
 {
-    return tfi_ewa_impl(tex, uv, dUVdx, dUVdy, s, alpha, maxAniso, true);
+    return tfi_ewa_impl(TFI_A, uv TFI_XA, dUVdx, dUVdy, s, alpha, maxAniso, true);
 }
+#endif
 
+#endif
 #endif

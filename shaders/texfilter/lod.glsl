@@ -3,6 +3,8 @@
 // Use:     float tf_lod(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s); // biased, clamped: [0, levels−1]
 //          float tf_lod_unclamped(sampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias); // log2(ρ) + lodBias
 //          int   tf_mip_level_nearest(float lod); // mipmapMode NEAREST: ceil(lod + ½) − 1, ties to the finer
+//          tf_lod and tf_lod_unclamped take every resource kind's texture (access.glsl), without the extras
+//          (a layer or comparison does not change the LOD): tf_lod(texture2DArray tex, dUVdx, dUVdy, s).
 // Math:    ρ = max(|J e_x|, |J e_y|) with J = [dUVdx dUVdy] in level-0 texels, λ = log2(ρ) + s.lodBias,
 //          clamped to [s.lodMin, s.lodMax] (lodMin <= lodMax, as Vulkan's minLod <= maxLod) and then to
 //          [0, levels − 1], levels = textureQueryLevels(tex).
@@ -18,19 +20,6 @@
 
 #include "common.glsl"
 
-// Unclamped log2(rho) + bias; +Inf for non-finite gradients, -Inf for zero gradients.
-float tf_lod_unclamped(sampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias)
-{
-    if (!tf_finite(dUVdx) || !tf_finite(dUVdy))
-        return 1.0 / 0.0;
-    vec2 size0 = vec2(textureSize(tex, 0));
-    vec2 ax = dUVdx * size0;
-    vec2 ay = dUVdy * size0;
-    // Squared lengths, so one log2 serves both: log2(sqrt(x)) = 0.5 log2(x). Overflow gives +Inf: fine.
-    float rho2 = max(dot(ax, ax), dot(ay, ay));
-    return 0.5 * log2(rho2) + lodBias;
-}
-
 // The LOD clamps every filter that picks levels shares: λ to [s.lodMin, s.lodMax], then to the levels
 // [0, levels − 1]. SPIR-V leaves FClamp, FMin and FMax (GLSL clamp, min, max) undefined for a NaN operand, so
 // NaN is decided first, with isnan: a NaN λ counts as +∞ (blur fully, as non-finite gradients do: the
@@ -44,16 +33,6 @@ float tfi_clamp_lod_levels(float lambda, tf_Sampler s, int levels)
     if (!isnan(s.lodMax))
         lod = min(lod, s.lodMax);
     return clamp(lod, 0.0, float(max(levels, 1) - 1)); // lod is not NaN here
-}
-
-float tfi_clamp_lod(float lambda, tf_Sampler s, sampler2D tex)
-{
-    return tfi_clamp_lod_levels(lambda, s, textureQueryLevels(tex));
-}
-
-float tf_lod(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
-{
-    return tfi_clamp_lod(tf_lod_unclamped(tex, dUVdx, dUVdy, s.lodBias), s, tex);
 }
 
 // The two-level blend every filter that blends MIP levels shares (trilinear, brilinear, the aniso probes,
@@ -78,4 +57,35 @@ int tf_mip_level_nearest(float lod)
     return int(level) + (lod - level > 0.5 ? 1 : 0);
 }
 
+#define TFI_FAMILY TFI_FAMILY_LOD
+#include "instantiate.glsl"
+#undef TFI_FAMILY
+
+#elif defined(TFI_FAMILY)
+#if TFI_FAMILY == TFI_FAMILY_LOD && TFI_OWNS_T // per resource kind (access.glsl)
+
+// Unclamped log2(rho) + bias; +Inf for non-finite gradients, -Inf for zero gradients.
+float tf_lod_unclamped(TFI_T, vec2 dUVdx, vec2 dUVdy, float lodBias)
+{
+    if (!tf_finite(dUVdx) || !tf_finite(dUVdy))
+        return 1.0 / 0.0;
+    vec2 size0 = vec2(TFI_SIZE0);
+    vec2 ax = dUVdx * size0;
+    vec2 ay = dUVdy * size0;
+    // Squared lengths, so one log2 serves both: log2(sqrt(x)) = 0.5 log2(x). Overflow gives +Inf: fine.
+    float rho2 = max(dot(ax, ax), dot(ay, ay));
+    return 0.5 * log2(rho2) + lodBias;
+}
+
+float tfi_clamp_lod(float lambda, tf_Sampler s, TFI_T)
+{
+    return tfi_clamp_lod_levels(lambda, s, TFI_LEVELS);
+}
+
+float tf_lod(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
+{
+    return tfi_clamp_lod(tf_lod_unclamped(TFI_A, dUVdx, dUVdy, s.lodBias), s, TFI_A);
+}
+
+#endif
 #endif

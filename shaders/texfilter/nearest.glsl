@@ -3,6 +3,11 @@
 // Use:     vec4 tf_nearest(sampler2D tex, vec2 uv, tf_Sampler s);                             // level 0 only
 //          vec4 tf_nearest_mip(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s); // level by LOD
 //          vec4 tf_nearest_level(sampler2D tex, vec2 uv, int level, int wrapMode); // level in [0, levels−1]
+//          Every resource kind (access.glsl, docs/API.md "Resources"): the same call with texture2D,
+//          u/isampler2D or u/itexture2D (integer texels as float), sampler2DArray or texture2DArray plus
+//          `int layer` right after uv, or a depth sampler2D/texture2D plus `tf_Compare cmp` right after uv
+//          (percentage-closer: each texel compared before it is filtered), e.g.
+//          tf_nearest_mip(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s).
 // Math:    texel i = floor(u·w_l). tf_nearest_mip reads level tf_mip_level_nearest(tf_lod(...)) (lod.glsl:
 //          mipmapMode NEAREST, no blend between levels).
 // Options: s.wrap; tf_nearest_mip also s.lodBias, s.lodMin, s.lodMax as in lod.glsl. No defines.
@@ -17,21 +22,31 @@
 #include "common.glsl"
 #include "lod.glsl"
 
-vec4 tf_nearest_level(sampler2D tex, vec2 uv, int level, int wrapMode)
+#define TFI_FAMILY TFI_FAMILY_NEAREST
+#include "instantiate.glsl"
+#undef TFI_FAMILY
+
+#elif defined(TFI_FAMILY)
+#if TFI_FAMILY == TFI_FAMILY_NEAREST && TFI_CAN_FETCH // per resource kind (access.glsl)
+
+vec4 tf_nearest_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
 {
     if (!tf_finite(uv))
         return vec4(0.0);
-    ivec2 size = tf_level_size(tex, level);
+    ivec2 size = tf_level_size(TFI_A, level);
     vec2 texel = floor(tf_reduce_uv(uv, wrapMode) * vec2(size)); // whole periods first: no overflow
     TF_COUNT_FETCHES(1);
-    return texelFetch(tex, ivec2(tf_wrap(texel.x, size.x, wrapMode), tf_wrap(texel.y, size.y, wrapMode)), level);
+    return TFI_FETCH(ivec2(tf_wrap(texel.x, size.x, wrapMode), tf_wrap(texel.y, size.y, wrapMode)), level);
 }
 
-vec4 tf_nearest(sampler2D tex, vec2 uv, tf_Sampler s) { return tf_nearest_level(tex, uv, 0, s.wrap); }
+#if TFI_MANUAL
+vec4 tf_nearest(TFI_T, vec2 uv TFI_X, tf_Sampler s) { return tf_nearest_level(TFI_A, uv TFI_XA, 0, s.wrap); }
 
-vec4 tf_nearest_mip(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
+vec4 tf_nearest_mip(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
 {
-    return tf_nearest_level(tex, uv, tf_mip_level_nearest(tf_lod(tex, dUVdx, dUVdy, s)), s.wrap);
+    return tf_nearest_level(TFI_A, uv TFI_XA, tf_mip_level_nearest(tf_lod(TFI_A, dUVdx, dUVdy, s)), s.wrap);
 }
+#endif
 
+#endif
 #endif

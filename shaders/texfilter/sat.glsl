@@ -5,6 +5,9 @@
 //                      vec4 offset, vec4 scale);                             // one box
 //          vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy,
 //                               tf_Sampler s, vec4 offset, vec4 scale, int boxes); // K boxes along the major axis
+//          Also with the tables as utexture2D, usampler2DArray or utexture2DArray (the arrays with `int layer`
+//          right after uv: one table pair per layer), e.g. tf_sat(utexture2D satLow, utexture2D satHigh, vec2 uv,
+//          vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale).
 // Needs:   satLow:  usampler2D, RGBA32UI, (W+1) x (H+1): bits 0..31 of each channel's table entry;
 //          satHigh: usampler2D, R32UI, same size: bits 32..39 of R, G, B, A as bytes 0..3;
 //          offset, scale: vec4, per channel the value of quantisation level 0 and the span of levels
@@ -125,13 +128,6 @@ tfi_SatInt tfi_sat_mul(tfi_SatInt a, int k)
 // The value modulo 2^40 as a float (used only on exact, non-negative block sums).
 vec4 tfi_sat_to_float(tfi_SatInt a) { return vec4(a.hi & 0xFFu) * 4294967296.0 + vec4(a.lo); }
 
-tfi_SatInt tfi_sat_entry(usampler2D satLow, usampler2D satHigh, ivec2 t)
-{
-    TF_COUNT_FETCHES(2);
-    uint h = texelFetch(satHigh, t, 0).r;
-    return tfi_SatInt(texelFetch(satLow, t, 0), uvec4(h, h >> 8, h >> 16, h >> 24) & 0xFFu);
-}
-
 // One integer coordinate i of the extended table along an axis of n texels: E(i) = c.x·S(t.x) + c.y·S(t.y)
 // (a zero coefficient: no term). See the header for the formulas.
 struct tfi_SatTerms {
@@ -162,21 +158,6 @@ tfi_SatTerms tfi_sat_axis(int i, int n, int wrapMode)
     return e;
 }
 
-// Extended table entry at the corner (x, y): up to 4 table entries with integer coefficients.
-tfi_SatInt tfi_sat_corner(usampler2D satLow, usampler2D satHigh, tfi_SatTerms x, tfi_SatTerms y)
-{
-    tfi_SatInt sum = tfi_SatInt(uvec4(0u), uvec4(0u));
-    for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b) {
-            int k = x.c[a] * y.c[b];
-            if (k == 0)
-                continue;
-            tfi_SatInt e = tfi_sat_entry(satLow, satHigh, ivec2(x.t[a], y.t[b]));
-            sum = tfi_sat_add(sum, k == 1 ? e : tfi_sat_mul(e, k));
-        }
-    return sum;
-}
-
 // One axis of the box [x0, x1): corners (i0, i0+1, i1, i1+1) and the weights of the three intervals
 // between them (first texel, whole texels, last texel) divided by the width.
 void tfi_sat_edges(float x0, float x1, out ivec4 corners, out vec3 weights)
@@ -191,34 +172,6 @@ void tfi_sat_edges(float x0, float x1, out ivec4 corners, out vec3 weights)
         weights = vec3(f0 + 1.0 - x0, 1.0, x1 - l1) / (x1 - x0);
 }
 
-// Mean over the box [lo, hi) in texel units (corners within ±2^24), in the units of the texture.
-vec4 tfi_sat_box(usampler2D satLow, usampler2D satHigh, vec2 lo, vec2 hi, ivec2 size, int wrapMode, vec4 offset,
-                vec4 scale)
-{
-    ivec4 px, py;
-    vec3 wx, wy;
-    tfi_sat_edges(lo.x, hi.x, px, wx);
-    tfi_sat_edges(lo.y, hi.y, py, wy);
-    tfi_SatTerms tx[4];
-    for (int k = 0; k < 4; ++k)
-        tx[k] = tfi_sat_axis(px[k], size.x, wrapMode);
-    vec4 sum = vec4(0.0);
-    tfi_SatInt previous[3]; // x differences E(px[k+1], y) − E(px[k], y) of the previous corner row
-    for (int l = 0; l < 4; ++l) {
-        tfi_SatTerms ty = tfi_sat_axis(py[l], size.y, wrapMode);
-        tfi_SatInt e0 = tfi_sat_corner(satLow, satHigh, tx[0], ty);
-        for (int k = 0; k < 3; ++k) {
-            tfi_SatInt e1 = tfi_sat_corner(satLow, satHigh, tx[k + 1], ty);
-            tfi_SatInt d = tfi_sat_sub(e1, e0);
-            if (l > 0) // block [px[k], px[k+1]) x [py[l-1], py[l]): exact, then weighted in float
-                sum += (wx[k] * wy[l - 1]) * tfi_sat_to_float(tfi_sat_sub(d, previous[k]));
-            previous[k] = d;
-            e0 = e1;
-        }
-    }
-    return offset + sum * (scale / 65535.0);
-}
-
 // Moves uv by whole periods into [0, 1) (repeat) or [0, 2) (mirror): changes nothing (and is exact in
 // float), keeps coordinates small, and is idempotent. Clamp: unchanged.
 vec2 tfi_sat_period(vec2 uv, int wrapMode)
@@ -228,18 +181,6 @@ vec2 tfi_sat_period(vec2 uv, int wrapMode)
     float period = wrapMode == TF_WRAP_MIRROR ? 2.0 : 1.0;
     uv -= period * floor(uv / period);
     return mix(uv, vec2(0.0), greaterThanEqual(uv, vec2(period))); // -tiny - floor(-tiny) rounds to period
-}
-
-// Mean over the box of half-extents h (texel units) centred on uv.
-vec4 tfi_sat_centred(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 h, ivec2 size, int wrapMode, vec4 offset,
-                    vec4 scale)
-{
-    vec2 n = vec2(size);
-    h = min(h, 0.5 * n); // at most W x H texels: the bit budget
-    // Clamp: from −1 or 2 outward a box of at most the texture's size sees only edge texels.
-    uv = wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0, 2.0) : tfi_sat_period(uv, wrapMode);
-    vec2 c = uv * n;
-    return tfi_sat_box(satLow, satHigh, c - h, c + h, size, wrapMode, offset, scale);
 }
 
 // The footprint's columns J·e_x, J·e_y in level-0 texels times exp2(lodBias), components clamped to
@@ -256,27 +197,93 @@ bool tfi_sat_columns(ivec2 size, vec2 dUVdx, vec2 dUVdy, float lodBias, out vec2
     return true;
 }
 
-vec4 tf_sat(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset,
-            vec4 scale)
+#define TFI_FAMILY TFI_FAMILY_SAT
+#include "instantiate.glsl"
+#undef TFI_FAMILY
+
+#elif defined(TFI_FAMILY)
+#if TFI_FAMILY == TFI_FAMILY_SAT && TFI_SAT // per resource kind: the tables' types (access.glsl)
+
+tfi_SatInt tfi_sat_entry(TFI_SAT_T, ivec2 t TFI_SAT_X)
 {
-    ivec2 size = textureSize(satLow, 0) - 1;
-    if (!tf_finite(uv) || any(lessThan(size, ivec2(1)))) // no table bound: nothing to average
-        return vec4(0.0);
-    vec2 jx, jy;
-    if (!tfi_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
-        return tfi_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, offset, scale);
-    return tfi_sat_centred(satLow, satHigh, uv, 0.5 * (abs(jx) + abs(jy)), size, s.wrap, offset, scale);
+    TF_COUNT_FETCHES(2);
+    uint h = TFI_SAT_HIGH(t).r;
+    return tfi_SatInt(TFI_SAT_LOW(t), uvec4(h, h >> 8, h >> 16, h >> 24) & 0xFFu);
 }
 
-vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s,
-                     vec4 offset, vec4 scale, int boxes)
+// Extended table entry at the corner (x, y): up to 4 table entries with integer coefficients.
+tfi_SatInt tfi_sat_corner(TFI_SAT_T, tfi_SatTerms x, tfi_SatTerms y TFI_SAT_X)
 {
-    ivec2 size = textureSize(satLow, 0) - 1;
+    tfi_SatInt sum = tfi_SatInt(uvec4(0u), uvec4(0u));
+    for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b) {
+            int k = x.c[a] * y.c[b];
+            if (k == 0)
+                continue;
+            tfi_SatInt e = tfi_sat_entry(TFI_SAT_A, ivec2(x.t[a], y.t[b]) TFI_SAT_XA);
+            sum = tfi_sat_add(sum, k == 1 ? e : tfi_sat_mul(e, k));
+        }
+    return sum;
+}
+
+// Mean over the box [lo, hi) in texel units (corners within ±2^24), in the units of the texture.
+vec4 tfi_sat_box(TFI_SAT_T, vec2 lo, vec2 hi TFI_SAT_X, ivec2 size, int wrapMode, vec4 offset, vec4 scale)
+{
+    ivec4 px, py;
+    vec3 wx, wy;
+    tfi_sat_edges(lo.x, hi.x, px, wx);
+    tfi_sat_edges(lo.y, hi.y, py, wy);
+    tfi_SatTerms tx[4];
+    for (int k = 0; k < 4; ++k)
+        tx[k] = tfi_sat_axis(px[k], size.x, wrapMode);
+    vec4 sum = vec4(0.0);
+    tfi_SatInt previous[3]; // x differences E(px[k+1], y) − E(px[k], y) of the previous corner row
+    for (int l = 0; l < 4; ++l) {
+        tfi_SatTerms ty = tfi_sat_axis(py[l], size.y, wrapMode);
+        tfi_SatInt e0 = tfi_sat_corner(TFI_SAT_A, tx[0], ty TFI_SAT_XA);
+        for (int k = 0; k < 3; ++k) {
+            tfi_SatInt e1 = tfi_sat_corner(TFI_SAT_A, tx[k + 1], ty TFI_SAT_XA);
+            tfi_SatInt d = tfi_sat_sub(e1, e0);
+            if (l > 0) // block [px[k], px[k+1]) x [py[l-1], py[l]): exact, then weighted in float
+                sum += (wx[k] * wy[l - 1]) * tfi_sat_to_float(tfi_sat_sub(d, previous[k]));
+            previous[k] = d;
+            e0 = e1;
+        }
+    }
+    return offset + sum * (scale / 65535.0);
+}
+
+// Mean over the box of half-extents h (texel units) centred on uv.
+vec4 tfi_sat_centred(TFI_SAT_T, vec2 uv TFI_SAT_X, vec2 h, ivec2 size, int wrapMode, vec4 offset, vec4 scale)
+{
+    vec2 n = vec2(size);
+    h = min(h, 0.5 * n); // at most W x H texels: the bit budget
+    // Clamp: from −1 or 2 outward a box of at most the texture's size sees only edge texels.
+    uv = wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0, 2.0) : tfi_sat_period(uv, wrapMode);
+    vec2 c = uv * n;
+    return tfi_sat_box(TFI_SAT_A, c - h, c + h TFI_SAT_XA, size, wrapMode, offset, scale);
+}
+
+vec4 tf_sat(TFI_SAT_T, vec2 uv TFI_SAT_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale)
+{
+    ivec2 size = TFI_SAT_SIZE - 1;
     if (!tf_finite(uv) || any(lessThan(size, ivec2(1)))) // no table bound: nothing to average
         return vec4(0.0);
     vec2 jx, jy;
     if (!tfi_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
-        return tfi_sat_box(satLow, satHigh, vec2(0.0), vec2(size), size, s.wrap, offset, scale);
+        return tfi_sat_box(TFI_SAT_A, vec2(0.0), vec2(size) TFI_SAT_XA, size, s.wrap, offset, scale);
+    return tfi_sat_centred(TFI_SAT_A, uv TFI_SAT_XA, 0.5 * (abs(jx) + abs(jy)), size, s.wrap, offset, scale);
+}
+
+vec4 tf_sat_assembly(TFI_SAT_T, vec2 uv TFI_SAT_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale,
+                     int boxes)
+{
+    ivec2 size = TFI_SAT_SIZE - 1;
+    if (!tf_finite(uv) || any(lessThan(size, ivec2(1)))) // no table bound: nothing to average
+        return vec4(0.0);
+    vec2 jx, jy;
+    if (!tfi_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
+        return tfi_sat_box(TFI_SAT_A, vec2(0.0), vec2(size) TFI_SAT_XA, size, s.wrap, offset, scale);
     int k = clamp(boxes, 1, 16);
     float n = float(k);
     bool xMajor = dot(jx, jx) >= dot(jy, jy);
@@ -287,9 +294,10 @@ vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx,
     vec4 sum = vec4(0.0);
     for (int i = 0; i < k; ++i) {
         float a = (float(i) + 0.5) / n - 0.5; // slice centre along the major column, in (−½, ½)
-        sum += tfi_sat_centred(satLow, satHigh, uv + major * a / vec2(size), h, size, s.wrap, offset, scale);
+        sum += tfi_sat_centred(TFI_SAT_A, uv + major * a / vec2(size) TFI_SAT_XA, h, size, s.wrap, offset, scale);
     }
     return sum / n;
 }
 
+#endif
 #endif

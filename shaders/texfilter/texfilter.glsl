@@ -6,9 +6,16 @@
 //          Every function of the individual includes; see each file's header and docs/API.md.
 //          Any stage (fragment, compute, ray tracing; #version 450 or 460, ray tracing 460): only
 //          tf_quad_gradients_* need the fragment stage, tf_compute_quad_gradients TF_COMPUTE_QUADS.
+// Resources: every filter takes the textures a renderer binds (access.glsl; docs/API.md "Resources"):
+//          sampler2D; texture2D (+ sampler for the _hw forms); sampler2DArray, texture2DArray (+ sampler) with
+//          `int layer` right after uv; u/isampler2D, u/itexture2D (integer data filtered as float); depth
+//          maps with `tf_Compare cmp` after uv (percentage-closer filtering, compared before filtering) or, for
+//          _hw, sampler2DShadow / texture2D + samplerShadow with `float dref`; bindless arrays indexed with
+//          nonuniformEXT once TF_NONUNIFORM is defined. tf_sat's tables: usampler2D, utexture2D, and arrays.
 // Options: the individual includes', defined before this include:
-//          TF_COUNT_FETCHES(n), TF_COUNT_HW_LOOKUPS(n) (common.glsl), TF_COMPUTE_QUADS (derivatives.glsl),
-//          TF_ANISO_RATIO_SLACK (aniso.glsl), TF_EWA_MAX_TEXELS (ewa.glsl); per call: tf_Sampler.
+//          TF_COUNT_FETCHES(n), TF_COUNT_HW_LOOKUPS(n), TF_NONUNIFORM, TF_RESOURCES (common.glsl),
+//          TF_COMPUTE_QUADS (derivatives.glsl), TF_ANISO_RATIO_SLACK (aniso.glsl), TF_EWA_MAX_TEXELS (ewa.glsl);
+//          per call: tf_Sampler (and tf_Compare for depth maps).
 // Needs:   what each called filter needs: a sampler2D with a full MIP chain for every mip filter (bound
 //          with a linear sampler of the same wrap mode for the _hw forms), the SAT's two usampler2D for
 //          tf_sat / tf_sat_assembly. Nothing is declared here: no bindings, no push constants.

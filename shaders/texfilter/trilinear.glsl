@@ -1,6 +1,12 @@
 // texfilter/trilinear.glsl — manual trilinear lookups from texelFetch (Vulkan LINEAR, mipmapMode LINEAR).
 //
 // Use:     vec4 tf_trilinear(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+//          Every resource kind (access.glsl, docs/API.md "Resources"): the same call with texture2D,
+//          u/isampler2D or u/itexture2D (integer texels as float), sampler2DArray or texture2DArray plus
+//          `int layer` right after uv, or a depth sampler2D/texture2D plus `tf_Compare cmp` right after uv
+//          (percentage-closer: each texel compared before it is filtered), e.g.
+//          tf_trilinear(texture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s),
+//          tf_trilinear(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s).
 // Math:    λ = tf_lod(...) (lod.glsl); bilinear lookups on levels floor(λ) and floor(λ)+1 blended by frac(λ),
 //          in full float (hardware samplers round the blend to mipmapPrecisionBits, often 4 or 8).
 // Options: s.wrap, s.lodBias, s.lodMin, s.lodMax (common.glsl, lod.glsl). No defines.
@@ -16,13 +22,21 @@
 #include "bilinear.glsl"
 #include "lod.glsl"
 
-vec4 tf_trilinear(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
+#define TFI_FAMILY TFI_FAMILY_TRILINEAR
+#include "instantiate.glsl"
+#undef TFI_FAMILY
+
+#elif defined(TFI_FAMILY)
+#if TFI_FAMILY == TFI_FAMILY_TRILINEAR && TFI_MANUAL // per resource kind (access.glsl)
+
+vec4 tf_trilinear(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
 {
     float f;
-    int lo = tfi_split_lod(tf_lod(tex, dUVdx, dUVdy, s), f);
-#define TFI_TRILINEAR_LEVEL(level) tf_bilinear_level(tex, uv, level, s.wrap)
+    int lo = tfi_split_lod(tf_lod(TFI_A, dUVdx, dUVdy, s), f);
+#define TFI_TRILINEAR_LEVEL(level) tf_bilinear_level(TFI_A, uv TFI_XA, level, s.wrap)
     return TFI_BLEND_LEVELS(TFI_TRILINEAR_LEVEL, lo, f);
 #undef TFI_TRILINEAR_LEVEL
 }
 
+#endif
 #endif

@@ -1,0 +1,216 @@
+// texfilter/access.glsl — internal: the texture-access layer: what a "texture" is for one resource kind, and how a
+// family reads it. Internal: instantiate.glsl includes it once per kind (no include guard on purpose), and
+// every family body reads textures only through the macros below, so each family's math is written once.
+//
+// Use:     nothing to call: pick the kinds with TF_RESOURCES (common.glsl) and call the families' tf_ overloads.
+// Kinds (TFI_KIND; public parameters: the texture first, the extras right after uv / texel):
+//   1 sampler2D tex                                manual + _hw
+//   2 texture2D tex                                manual        (GL_EXT_samplerless_texture_functions)
+//   3 texture2D tex, sampler smp                   _hw only      (sampler2D(tex, smp) at the point of use)
+//   4 sampler2DArray tex           + int layer     manual + _hw
+//   5 texture2DArray tex           + int layer     manual
+//   6 texture2DArray tex, sampler smp + int layer  _hw only
+//   7 usampler2D, 8 isampler2D, 9 utexture2D, 10 itexture2D: manual; integer texels converted to float
+//   11 sampler2D tex + tf_Compare cmp, 12 texture2D tex + tf_Compare cmp: manual percentage-closer filtering,
+//      each depth texel (.r) compared with cmp before it is filtered (tfi_compare_texel)
+//   13 sampler2DShadow tex + float dref, 14 texture2D tex, samplerShadow smp + float dref: _hw only, the
+//      hardware comparison per tap
+// Macros a body may use (parameter names are fixed: tex, smp, layer, cmp, dref):
+//   TFI_T, TFI_A      the texture parameters in a declaration / a call (`sampler2D tex` / `tex`)
+//   TFI_X, TFI_XA     the extras, with their leading comma (`, int layer` / `, layer`; empty for 2D)
+//   TFI_FETCH(p, l)   texel p (ivec2, in range) of level l as vec4 (decoded, converted or compared)
+//   TFI_SIZE0         level 0's size (ivec2), TFI_LEVELS the level count
+//   TFI_LOOKUP(uv, l) a hardware lookup at explicit LOD l (vec4); kinds without a sampler: a stand-in vec4(0)
+//                     that no entry point of theirs reaches (their `hardware` flag is always false)
+//   TFI_MANUAL, TFI_HW   1 where the kind gets the manual / the _hw entry points
+//   TFI_CAN_FETCH        0 for the shadow-sampler kinds (no texelFetch on a sampler2DShadow)
+//   TFI_OWNS_T           0 where an earlier kind already defined the functions that take only TFI_T (11, 12
+//                        share sampler2D / texture2D with 1, 2: size and level queries are the same)
+//   TFI_SAT_T, TFI_SAT_A, TFI_SAT_X, TFI_SAT_XA, TFI_SAT_LOW(p), TFI_SAT_HIGH(p), TFI_SAT_SIZE: the SAT's two
+//                        unsigned tables (kinds 1, 2, 4, 5 only; TFI_SAT 1 there)
+// Every texture and sampled-image operand is wrapped in TF_NONUNIFORM(...) (bindless: common.glsl).
+// Cost:    none by itself. Example: see common.glsl.
+
+#if !defined(TFI_KIND) || !defined(TF_RESOURCES)
+#error "texfilter/access.glsl is internal: include a family (e.g. texfilter/trilinear.glsl)"
+#endif
+
+#undef TFI_T
+#undef TFI_A
+#undef TFI_X
+#undef TFI_XA
+#undef TFI_FETCH
+#undef TFI_SIZE0
+#undef TFI_LEVELS
+#undef TFI_LOOKUP
+#undef TFI_MANUAL
+#undef TFI_HW
+#undef TFI_CAN_FETCH
+#undef TFI_OWNS_T
+#undef TFI_SAT
+#undef TFI_SAT_T
+#undef TFI_SAT_A
+#undef TFI_SAT_X
+#undef TFI_SAT_XA
+#undef TFI_SAT_LOW
+#undef TFI_SAT_HIGH
+#undef TFI_SAT_SIZE
+
+// Defaults: a 2D kind without extras, manual entry points, texelFetch, its own texture type.
+#define TFI_A tex
+#define TFI_X
+#define TFI_XA
+#define TFI_SIZE0 textureSize(TF_NONUNIFORM(tex), 0).xy
+#define TFI_LEVELS textureQueryLevels(TF_NONUNIFORM(tex))
+#define TFI_FETCH(p, l) texelFetch(TF_NONUNIFORM(tex), p, l)
+#define TFI_LOOKUP(uv, l) vec4(0.0)
+#define TFI_MANUAL 1
+#define TFI_HW 0
+#define TFI_CAN_FETCH 1
+#define TFI_OWNS_T 1
+#define TFI_SAT 0
+
+// The array kinds' layer, clamped as Vulkan clamps a sampled array layer (to [0, layers − 1]): texelFetch
+// of a layer outside the image is undefined.
+#define TFI_ARRAY_FETCH(p, l) \
+    texelFetch(TF_NONUNIFORM(tex), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(tex), 0).z - 1)), l)
+
+#if TFI_KIND == 1
+#define TFI_T sampler2D tex
+#undef TFI_LOOKUP
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), uv, l)
+#undef TFI_HW
+#define TFI_HW 1
+#elif TFI_KIND == 2
+#define TFI_T texture2D tex
+#elif TFI_KIND == 3
+#define TFI_T texture2D tex, sampler smp
+#undef TFI_A
+#define TFI_A tex, smp
+#undef TFI_LOOKUP
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(sampler2D(tex, smp)), uv, l)
+#undef TFI_MANUAL
+#define TFI_MANUAL 0
+#undef TFI_HW
+#define TFI_HW 1
+#elif TFI_KIND == 4
+#define TFI_T sampler2DArray tex
+#undef TFI_X
+#define TFI_X , int layer
+#undef TFI_XA
+#define TFI_XA , layer
+#undef TFI_FETCH
+#define TFI_FETCH(p, l) TFI_ARRAY_FETCH(p, l)
+#undef TFI_LOOKUP
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), vec3(uv, float(layer)), l)
+#undef TFI_HW
+#define TFI_HW 1
+#elif TFI_KIND == 5
+#define TFI_T texture2DArray tex
+#undef TFI_X
+#define TFI_X , int layer
+#undef TFI_XA
+#define TFI_XA , layer
+#undef TFI_FETCH
+#define TFI_FETCH(p, l) TFI_ARRAY_FETCH(p, l)
+#elif TFI_KIND == 6
+#define TFI_T texture2DArray tex, sampler smp
+#undef TFI_A
+#define TFI_A tex, smp
+#undef TFI_X
+#define TFI_X , int layer
+#undef TFI_XA
+#define TFI_XA , layer
+#undef TFI_FETCH
+#define TFI_FETCH(p, l) TFI_ARRAY_FETCH(p, l)
+#undef TFI_LOOKUP
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(sampler2DArray(tex, smp)), vec3(uv, float(layer)), l)
+#undef TFI_MANUAL
+#define TFI_MANUAL 0
+#undef TFI_HW
+#define TFI_HW 1
+#elif TFI_KIND >= 7 && TFI_KIND <= 10
+#if TFI_KIND == 7
+#define TFI_T usampler2D tex
+#elif TFI_KIND == 8
+#define TFI_T isampler2D tex
+#elif TFI_KIND == 9
+#define TFI_T utexture2D tex
+#else
+#define TFI_T itexture2D tex
+#endif
+#undef TFI_FETCH
+#define TFI_FETCH(p, l) vec4(texelFetch(TF_NONUNIFORM(tex), p, l))
+#elif TFI_KIND == 11 || TFI_KIND == 12
+#if TFI_KIND == 11
+#define TFI_T sampler2D tex
+#undef TFI_OWNS_T
+#define TFI_OWNS_T ((TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) == 0)
+#else
+#define TFI_T texture2D tex
+#undef TFI_OWNS_T
+#define TFI_OWNS_T ((TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) == 0)
+#endif
+#undef TFI_X
+#define TFI_X , tf_Compare cmp
+#undef TFI_XA
+#define TFI_XA , cmp
+#undef TFI_FETCH
+#define TFI_FETCH(p, l) vec4(tfi_compare_texel(cmp, texelFetch(TF_NONUNIFORM(tex), p, l).r))
+#elif TFI_KIND == 13 || TFI_KIND == 14
+#if TFI_KIND == 13
+#define TFI_T sampler2DShadow tex
+#undef TFI_LOOKUP
+#define TFI_LOOKUP(uv, l) vec4(textureLod(TF_NONUNIFORM(tex), vec3(uv, dref), l))
+#else
+#define TFI_T texture2D tex, samplerShadow smp
+#undef TFI_A
+#define TFI_A tex, smp
+#undef TFI_LOOKUP
+#define TFI_LOOKUP(uv, l) vec4(textureLod(TF_NONUNIFORM(sampler2DShadow(tex, smp)), vec3(uv, dref), l))
+#endif
+#undef TFI_X
+#define TFI_X , float dref
+#undef TFI_XA
+#define TFI_XA , dref
+#undef TFI_FETCH
+#define TFI_FETCH(p, l) vec4(0.0)
+#undef TFI_CAN_FETCH
+#define TFI_CAN_FETCH 0
+#undef TFI_MANUAL
+#define TFI_MANUAL 0
+#undef TFI_HW
+#define TFI_HW 1
+#else
+#error "texfilter/access.glsl: unknown TFI_KIND"
+#endif
+
+// The SAT's tables: unsigned integer images read with texelFetch only (kinds 1, 2, 4, 5).
+#if TFI_KIND == 1 || TFI_KIND == 2 || TFI_KIND == 4 || TFI_KIND == 5
+#undef TFI_SAT
+#define TFI_SAT 1
+#if TFI_KIND == 1
+#define TFI_SAT_T usampler2D satLow, usampler2D satHigh
+#elif TFI_KIND == 2
+#define TFI_SAT_T utexture2D satLow, utexture2D satHigh
+#elif TFI_KIND == 4
+#define TFI_SAT_T usampler2DArray satLow, usampler2DArray satHigh
+#else
+#define TFI_SAT_T utexture2DArray satLow, utexture2DArray satHigh
+#endif
+#define TFI_SAT_A satLow, satHigh
+#define TFI_SAT_SIZE textureSize(TF_NONUNIFORM(satLow), 0).xy
+#if TFI_KIND == 1 || TFI_KIND == 2
+#define TFI_SAT_X
+#define TFI_SAT_XA
+#define TFI_SAT_LOW(p) texelFetch(TF_NONUNIFORM(satLow), p, 0)
+#define TFI_SAT_HIGH(p) texelFetch(TF_NONUNIFORM(satHigh), p, 0)
+#else
+#define TFI_SAT_X , int layer
+#define TFI_SAT_XA , layer
+#define TFI_SAT_LOW(p) \
+    texelFetch(TF_NONUNIFORM(satLow), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(satLow), 0).z - 1)), 0)
+#define TFI_SAT_HIGH(p) \
+    texelFetch(TF_NONUNIFORM(satHigh), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(satHigh), 0).z - 1)), 0)
+#endif
+#endif
