@@ -4,6 +4,7 @@
 #include "reference/resources.h"
 #include "texture/error.h"
 #include "vulkan/cleanup.h"
+#include "vulkan/harness_variant.h"
 #include "vulkan/sample_resource.h"
 
 namespace tf {
@@ -40,7 +41,9 @@ ResourceOptions resource_options_from(const Args& args)
         if (args.has(flag) && r.resource != Resource::shadow)
             throw Error(std::string(flag) + " is for --resource shadow, not " + kind);
     if (layered) {
-        r.layers = args.get_int("--layers", 4, 1, kMaxLayers);
+        // bindless: the harness's array has a fixed size (checked with a message in check_resource_options)
+        r.layers = args.get_int("--layers", r.resource == Resource::bindless ? bindless_texture_count : 4, 1,
+                                kMaxLayers);
         // Arrays clamp any layer (as the hardware does: checked against the reference); a bindless index
         // past the array is undefined behaviour in the shader, so it must be in range.
         r.layer = r.resource == Resource::bindless ? args.get_int("--layer", 0, 0, r.layers - 1)
@@ -59,13 +62,13 @@ std::vector<glm::dvec4> sample_resource(GpuSession* gpu, const MipChain& chain, 
 {
     check_resource_options(options, resource);
     if (gpu)
-        check_resource_device(gpu->context, resource); // before any upload
+        check_resource_device(gpu->context, options, resource); // before any upload
     const std::vector<MipChain> chains = make_resource_chains(chain, resource);
     if (!gpu)
         return reference_sample_resource(chains, lookups, options, resource);
     std::vector<glm::vec4> results;
     {
-        GpuResources images = upload_resources(gpu->context, chains, resource.resource);
+        GpuResources images = upload_resources(gpu->context, chains, resource.resource, needs_sat(options.filter));
         Cleanup cleanup;
         cleanup.add([&] { destroy_resources(gpu->context, images); });
         results = gpu_sample_resource(gpu->context, images, lookups, options, resource, stats);

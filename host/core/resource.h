@@ -8,15 +8,6 @@
 #include <cstddef>
 #include <string>
 
-#ifndef HARNESS_RESOURCE_COMBINED // PROVISIONAL until the coordinator's config.h lands (api.md's ids)
-#define HARNESS_RESOURCE_COMBINED 0
-#define HARNESS_RESOURCE_SEPARATE 1
-#define HARNESS_RESOURCE_ARRAY 2
-#define HARNESS_RESOURCE_SEPARATE_ARRAY 3
-#define HARNESS_RESOURCE_BINDLESS 4
-#define HARNESS_RESOURCE_SHADOW 7
-#endif
-
 namespace tf {
 
 enum class Resource {

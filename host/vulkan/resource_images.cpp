@@ -106,9 +106,22 @@ void upload_layers(const VulkanContext& context, const GpuImage& g, const std::v
     });
 }
 
+// A one-layer 2D_ARRAY view of a one-level 2D colour image (Vulkan allows it for any 2D image).
+VkImageView array_view(const VulkanContext& context, VkImage image, VkFormat format)
+{
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = image;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    view.format = format;
+    view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkImageView out = VK_NULL_HANDLE;
+    TF_VK(vkCreateImageView(context.device, &view, nullptr, &out));
+    return out;
+}
+
 } // namespace
 
-void check_shadow_format(const VulkanContext& context)
+void check_shadow_format(const VulkanContext& context, bool linear)
 {
     VkFormatProperties3 features3{VK_STRUCTURE_TYPE_FORMAT_PROPERTIES_3};
     VkFormatProperties2 properties{VK_STRUCTURE_TYPE_FORMAT_PROPERTIES_2};
@@ -123,14 +136,18 @@ void check_shadow_format(const VulkanContext& context)
     };
     std::string missing;
     for (const auto& [bit, name] : needed)
-        if (!(have & bit))
+        if (!(have & bit) && (linear || bit != VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_FILTER_LINEAR_BIT))
             missing += (missing.empty() ? "" : ", ") + std::string(name);
     if (!missing.empty())
         throw Error("--resource shadow: " + context.info.name + " lacks " + missing +
-                    " for VK_FORMAT_D32_SFLOAT (optimal tiling), which the shadow kind samples");
+                    " for VK_FORMAT_D32_SFLOAT (optimal tiling), which the shadow kind samples" +
+                    (linear ? " with the hardware's linear comparison lookups (hw-bilinear, hw-trilinear, --taps "
+                              "hardware; the manual filters need no linear filtering)"
+                            : ""));
 }
 
-GpuResources upload_resources(const VulkanContext& context, const std::vector<MipChain>& chains, Resource resource)
+GpuResources upload_resources(const VulkanContext& context, const std::vector<MipChain>& chains, Resource resource,
+                              bool with_sat)
 {
     if (chains.empty())
         throw Error("upload_resources: no texture");
@@ -139,8 +156,6 @@ GpuResources upload_resources(const VulkanContext& context, const std::vector<Mi
         if (c.levels.size() != chains[0].levels.size() || c.levels.at(0).width != level0.width ||
             c.levels.at(0).height != level0.height)
             throw Error("upload_resources: the layers differ in size");
-    if (resource == Resource::shadow)
-        check_shadow_format(context);
     GpuResources r;
     r.resource = resource;
     r.width = level0.width;
@@ -149,9 +164,11 @@ GpuResources upload_resources(const VulkanContext& context, const std::vector<Mi
     r.layers = int(chains.size());
     Cleanup on_failure;
     on_failure.add([&] { destroy_resources(context, r); });
-    r.base = upload_texture(context, chains[0], false);
+    r.base = upload_texture(context, chains[0], with_sat);
     const uint32_t w = uint32_t(r.width), h = uint32_t(r.height), levels = uint32_t(r.levels);
     if (resource == Resource::array || resource == Resource::separate_array) {
+        r.sat_low_array = array_view(context, r.base.sat_low.image, VK_FORMAT_R32G32B32A32_UINT);
+        r.sat_high_array = array_view(context, r.base.sat_high.image, VK_FORMAT_R32_UINT);
         r.layered = create_layered_image(context, VK_FORMAT_R32G32B32A32_SFLOAT, w, h, levels, uint32_t(r.layers),
                                          VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_VIEW_TYPE_2D_ARRAY);
         upload_layers(context, r.layered, chains, VK_IMAGE_ASPECT_COLOR_BIT, false);
@@ -169,6 +186,9 @@ GpuResources upload_resources(const VulkanContext& context, const std::vector<Mi
 
 void destroy_resources(const VulkanContext& context, GpuResources& resources)
 {
+    for (VkImageView view : {resources.sat_low_array, resources.sat_high_array})
+        if (view)
+            vkDestroyImageView(context.device, view, nullptr);
     destroy_texture(context, resources.base);
     destroy_image(context, resources.layered);
     for (GpuTexture& t : resources.textures)

@@ -19,17 +19,23 @@ struct GpuResources {
     GpuImage layered;                   // array kinds: chains[k] in layer k, view VK_IMAGE_VIEW_TYPE_2D_ARRAY
     std::vector<GpuTexture> textures;   // bindless: chains[1..] (chains[0] is base)
     GpuImage depth;                     // shadow: chains[0].r as D32_SFLOAT
+    VkImageView sat_low_array = VK_NULL_HANDLE, sat_high_array = VK_NULL_HANDLE; // array kinds: base's
+                                        // summed-area table images as one-layer arrays (what they declare)
     int width = 0, height = 0, levels = 0, layers = 1;
 };
 
 // chains: core/resource_textures.h's make_resource_chains for `resource` (one size for all). Throws
 // tf::Error when the device cannot sample what the kind needs (a depth format with comparison and
 // linear filtering, say), naming the device and what is missing.
-GpuResources upload_resources(const VulkanContext& context, const std::vector<MipChain>& chains, Resource resource);
+// with_sat: base gets its summed-area table (the sat filters, on the kinds that run them).
+GpuResources upload_resources(const VulkanContext& context, const std::vector<MipChain>& chains, Resource resource,
+                              bool with_sat);
 void destroy_resources(const VulkanContext& context, GpuResources& resources);
 
-// The depth format the shadow kind uploads, and its check (also for an early refusal).
+// The depth format the shadow kind uploads, and its check (also for an early refusal): sampled, with
+// depth comparison, and (linear: for the hardware's bilinear/trilinear comparison lookups) linear filtering,
+// which Vulkan does not require of depth formats (lavapipe 22.3 lacks it).
 constexpr VkFormat shadow_depth_format = VK_FORMAT_D32_SFLOAT;
-void check_shadow_format(const VulkanContext& context);
+void check_shadow_format(const VulkanContext& context, bool linear);
 
 } // namespace tf

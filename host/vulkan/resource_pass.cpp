@@ -2,11 +2,8 @@
 
 #include "harness/config.h"
 #include "texture/error.h"
+#include "vulkan/sample_resource.h"
 #include "vulkan/samplers.h"
-
-#ifndef HARNESS_BINDING_SAMPLER // PROVISIONAL until the coordinator's config.h lands
-#define HARNESS_BINDING_SAMPLER 6
-#endif
 
 namespace tf {
 
@@ -21,6 +18,12 @@ Pass create_resource_pass(const VulkanContext& context, const GpuResources& reso
     if (resource.resource == Resource::shadow) {
         info.compareEnable = VK_TRUE;
         info.compareOp = VkCompareOp(resource.compare);
+        // The manual filters only texelFetch the depth image; a nearest sampler keeps them free of the
+        // linear-filter feature depth formats need not have.
+        if (!uses_hardware_lookups(options)) {
+            info.magFilter = info.minFilter = VK_FILTER_NEAREST;
+            info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+        }
     }
     VkSampler sampler = VK_NULL_HANDLE;
     TF_VK(vkCreateSampler(device, &info, nullptr, &sampler));
@@ -47,9 +50,18 @@ Pass create_resource_pass(const VulkanContext& context, const GpuResources& reso
         throw Error("--resource " + to_string(resource.resource) + ": the shader binds " +
                     std::to_string(variant.texture_count) + " textures, the resource holds " +
                     std::to_string(textures.size()));
+    // The summed-area table as the kind declares it (filter_select.glsl): usampler2D, utexture2D for the
+    // separate kinds, arrays of one layer (views of the same images) for the array kinds.
+    VkDescriptorImageInfo low = base.infos[1], high = base.infos[2];
+    if (resources.sat_low_array) {
+        low.imageView = resources.sat_low_array;
+        high.imageView = resources.sat_high_array;
+    }
+    if (variant.table_type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE)
+        low.sampler = high.sampler = VK_NULL_HANDLE;
     std::vector<PassImages> images = {{HARNESS_BINDING_TEXTURE, variant.texture_type, textures},
-                                      {HARNESS_BINDING_SAT_LOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {base.infos[1]}},
-                                      {HARNESS_BINDING_SAT_HIGH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {base.infos[2]}}};
+                                      {HARNESS_BINDING_SAT_LOW, variant.table_type, {low}},
+                                      {HARNESS_BINDING_SAT_HIGH, variant.table_type, {high}}};
     if (variant.separate_sampler)
         images.push_back({HARNESS_BINDING_SAMPLER, VK_DESCRIPTOR_TYPE_SAMPLER, {{sampler, VK_NULL_HANDLE, read}}});
     return create_pass_with_images(context, images, stages, stages, buffers, cleanup);
