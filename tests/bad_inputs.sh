@@ -286,6 +286,43 @@ bad_lookups() {
         "${SAMPLE[@]}" --lookups good.csv -o /nonexistent/dir/out.csv
 }
 
+# sample --resource and its flags: bad names list the valid ones, flags the kind does not take are named.
+sample_resources() {
+    local s=("${SAMPLE[@]}" --lookups good.csv)
+    expect_success "sample: --resource array --layers 3 --layer 2 (reference)" ok_array.csv -- \
+        "${s[@]}" --resource array --layers 3 --layer 2 -o ok_array.csv
+    expect_success "sample: --resource shadow --compare greater --dref 0.25 (reference)" ok_shadow.csv -- \
+        "${s[@]}" --resource shadow --compare greater --dref 0.25 -o ok_shadow.csv
+    expect_error "sample: --resource bogus" "unknown resource 'bogus' (expected one of: combined, separate" out.csv -- \
+        "${s[@]}" --resource bogus -o out.csv
+    expect_error "sample: --layers with combined" "--layers is for --resource array, separate-array or bindless" \
+        out.csv -- "${s[@]}" --layers 4 -o out.csv
+    expect_error "sample: --layer with shadow" "--layer is for --resource array" out.csv -- \
+        "${s[@]}" --resource shadow --layer 1 -o out.csv
+    expect_error "sample: --layers 0" "bad value for --layers: '0'" out.csv -- \
+        "${s[@]}" --resource array --layers 0 -o out.csv
+    expect_error "sample: --layers 65" "bad value for --layers: '65'" out.csv -- \
+        "${s[@]}" --resource separate-array --layers 65 -o out.csv
+    expect_error "sample: bindless --layer past the textures" "bad value for --layer: '4'" out.csv -- \
+        "${s[@]}" --resource bindless --layers 4 --layer 4 -o out.csv
+    expect_error "sample: --layer 1.5" "bad value for --layer: '1.5'" out.csv -- \
+        "${s[@]}" --resource array --layer 1.5 -o out.csv
+    expect_error "sample: --compare with array" "--compare is for --resource shadow, not --resource array" out.csv -- \
+        "${s[@]}" --resource array --compare less -o out.csv
+    expect_error "sample: --dref with separate" "--dref is for --resource shadow" out.csv -- \
+        "${s[@]}" --resource separate --dref 0.5 -o out.csv
+    expect_error "sample: --compare bogus" "unknown compare op 'bogus' (expected one of: never, less" out.csv -- \
+        "${s[@]}" --resource shadow --compare bogus -o out.csv
+    expect_error "sample: --dref nan" "bad value for --dref: 'nan'" out.csv -- \
+        "${s[@]}" --resource shadow --dref nan -o out.csv
+    expect_error "sample: sat on an array" "--resource array cannot run --filter sat" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter sat --backend reference --lookups good.csv \
+        --resource array -o out.csv
+    expect_error "sample: hw-aniso on shadow" "--resource shadow cannot run --filter hw-aniso" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter hw-aniso --backend reference --lookups good.csv \
+        --resource shadow -o out.csv
+}
+
 diff_contract() {
     local render=("$TEXFILTER" render --scene zoom --filter nearest --backend reference)
     "${render[@]}" --texture checker --size 16x16 -o a16.png >/dev/null
@@ -666,7 +703,7 @@ bad_formats() {
 
 
 # The groups, in order; ctest runs each as its own entry (bad_inputs.GROUP), listed by --list.
-CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups diff_contract ground_truth_and_bench_errors
+CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_resources diff_contract ground_truth_and_bench_errors
     golden_errors vulkan_errors golden_output_directory outputs_and_inputs unwritable_outputs
     signals_remove_temporaries truncated_images memory_budgets lookups_and_texels reproducible_outputs
     bad_formats)

@@ -1,5 +1,6 @@
 #include "flags/cli_common.h"
 #include "cli/commands.h"
+#include "cli/sample_resource.h"
 #include "vulkan/backend.h"
 #include "vulkan/texture_format_support.h"
 #include "io/lookups_csv.h"
@@ -43,11 +44,12 @@ int run_sample(const std::vector<std::string>& argv)
                                          {"-o", "OUT.csv", "r,g,b,a in linear light, one row per lookup"},
                                          {"--stats", "", "vulkan: add columns fetches,hw_lookups (counted in the "
                                                          "shader) and print their mean, min and max"}},
+                                        resource_flags(),
                                         device_flags()});
     Args args = parse_args("sample", argv, specs, 0);
     if (args.has("--help")) {
         std::fputs(format_help("texfilter sample --texture T|PATH --filter F --lookups IN.csv "
-                               "[--backend vulkan|reference] [--stats] -o OUT.csv",
+                               "[--resource K] [--backend vulkan|reference] [--stats] -o OUT.csv",
                                specs)
                        .c_str(),
                    stdout);
@@ -57,6 +59,7 @@ int run_sample(const std::vector<std::string>& argv)
     if (options.filter == Filter::ground_truth)
         throw Error("bad value for --filter: ground-truth integrates over a scene's pixels, not around a lookup "
                     "(use render)");
+    const ResourceOptions resource = resource_options_from(args);
     Backend backend = backend_from(args);
     TextureSource source = texture_source_from(args);
     check_format_filter(source.format, options); // integer data and hardware filtering, before any work
@@ -73,7 +76,11 @@ int run_sample(const std::vector<std::string>& argv)
 
     std::vector<glm::dvec4> colors;
     std::vector<LookupStats> stats;
-    if (!gpu) {
+    if (resource.resource != Resource::combined) {
+        colors = sample_resource(gpu, chain, lookups, options, resource, &stats);
+        if (gpu)
+            gpu->finish();
+    } else if (!gpu) {
         colors = reference_sample_all(chain, lookups, options);
     } else {
         std::vector<glm::vec4> results = with_texture(gpu->context, chain, needs_sat(options.filter), source.format, [&](auto& t) {

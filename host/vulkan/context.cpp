@@ -40,9 +40,17 @@ VulkanContext create_context(const ContextOptions& options)
     queue.pQueuePriorities = &priority;
     VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     features13.dynamicRendering = VK_TRUE;
+    // Descriptor indexing where offered (a bindless array indexed non-uniformly: sample --resource bindless).
+    VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    features12.shaderSampledImageArrayNonUniformIndexing =
+        context.info.sampled_image_array_non_uniform_indexing ? VK_TRUE : VK_FALSE;
+    features12.runtimeDescriptorArray = context.info.runtime_descriptor_array ? VK_TRUE : VK_FALSE;
+    features13.pNext = &features12;
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &features13;
     features.features.samplerAnisotropy = context.info.sampler_anisotropy ? VK_TRUE : VK_FALSE;
+    features.features.shaderSampledImageArrayDynamicIndexing =
+        context.info.sampled_image_array_dynamic_indexing ? VK_TRUE : VK_FALSE;
     const char* swapchain_extension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.pNext = &features;

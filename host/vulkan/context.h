@@ -27,6 +27,10 @@ struct DeviceInfo {
     bool quad_ops_fragment = false;
     bool quad_ops_compute = false;
     bool sampler_anisotropy = false; // feature
+    // Vulkan 1.2 descriptor indexing (enabled when offered; `sample --resource bindless` needs the first)
+    bool sampled_image_array_non_uniform_indexing = false;
+    bool runtime_descriptor_array = false;
+    bool sampled_image_array_dynamic_indexing = false; // Vulkan 1.0 feature, enabled when offered
     float timestamp_period_ns = 0;     // nanoseconds a timestamp tick
     uint32_t timestamp_valid_bits = 0; // of the queue texfilter uses; 0: no timestamps (no bench timings)
     uint64_t max_memory_allocation_size = 0; // VkPhysicalDeviceMaintenance3Properties: the largest one allocation

@@ -82,6 +82,11 @@ std::vector<DeviceInfo> list_devices(VkInstance instance)
         vkGetPhysicalDeviceProperties2(physicals[i], &properties);
         VkPhysicalDeviceFeatures features{};
         vkGetPhysicalDeviceFeatures(physicals[i], &features);
+        VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+        VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        features2.pNext = &features12;
+        if (properties.properties.apiVersion >= VK_API_VERSION_1_2)
+            vkGetPhysicalDeviceFeatures2(physicals[i], &features2);
         const VkPhysicalDeviceLimits& limits = properties.properties.limits;
 
         DeviceInfo d;
@@ -103,6 +108,9 @@ std::vector<DeviceInfo> list_devices(VkInstance instance)
         d.quad_ops_fragment = quad && (subgroup.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT);
         d.quad_ops_compute = quad && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
         d.sampler_anisotropy = features.samplerAnisotropy == VK_TRUE;
+        d.sampled_image_array_non_uniform_indexing = features12.shaderSampledImageArrayNonUniformIndexing == VK_TRUE;
+        d.runtime_descriptor_array = features12.runtimeDescriptorArray == VK_TRUE;
+        d.sampled_image_array_dynamic_indexing = features.shaderSampledImageArrayDynamicIndexing == VK_TRUE;
         d.timestamp_period_ns = limits.timestampPeriod;
         d.max_memory_allocation_size = maintenance3.maxMemoryAllocationSize;
         VkPhysicalDeviceMemoryProperties memory{};

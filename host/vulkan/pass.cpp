@@ -79,14 +79,25 @@ Pass create_pass(const VulkanContext& context, const GpuTexture& texture, const 
                  VkShaderStageFlags stages, VkShaderStageFlags push_stages, const std::vector<PassBuffer>& buffers,
                  Cleanup& cleanup)
 {
+    const PassSamplers samplers = create_pass_samplers(context, texture, options, cleanup);
+    const uint32_t texture_bindings[3] = {HARNESS_BINDING_TEXTURE, HARNESS_BINDING_SAT_LOW, HARNESS_BINDING_SAT_HIGH};
+    std::vector<PassImages> images;
+    for (int i = 0; i < 3; ++i)
+        images.push_back({texture_bindings[i], VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {samplers.infos[i]}});
+    Pass pass = create_pass_with_images(context, images, stages, push_stages, buffers, cleanup);
+    pass.samplers = samplers;
+    return pass;
+}
+
+Pass create_pass_with_images(const VulkanContext& context, const std::vector<PassImages>& images,
+                             VkShaderStageFlags stages, VkShaderStageFlags push_stages,
+                             const std::vector<PassBuffer>& buffers, Cleanup& cleanup)
+{
     Pass pass;
     pass.push_stages = push_stages;
-    pass.samplers = create_pass_samplers(context, texture, options, cleanup);
-
-    const uint32_t texture_bindings[3] = {HARNESS_BINDING_TEXTURE, HARNESS_BINDING_SAT_LOW, HARNESS_BINDING_SAT_HIGH};
     std::vector<VkDescriptorSetLayoutBinding> bindings;
-    for (uint32_t binding : texture_bindings)
-        bindings.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr});
+    for (const PassImages& i : images)
+        bindings.push_back({i.binding, i.type, uint32_t(i.infos.size()), stages, nullptr});
     for (const PassBuffer& b : buffers)
         bindings.push_back({b.binding, b.type, 1, stages, nullptr});
     pass.set_layout = create_set_layout(context, bindings, cleanup);
@@ -97,9 +108,10 @@ Pass create_pass(const VulkanContext& context, const GpuTexture& texture, const 
     for (const PassBuffer& b : buffers)
         buffer_infos.push_back({b.buffer, 0, b.range});
     std::vector<VkWriteDescriptorSet> writes;
-    for (int i = 0; i < 3; ++i) {
-        writes.push_back(write_descriptor(pass.set, texture_bindings[i], VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER));
-        writes.back().pImageInfo = &pass.samplers.infos[i];
+    for (const PassImages& i : images) {
+        writes.push_back(write_descriptor(pass.set, i.binding, i.type));
+        writes.back().descriptorCount = uint32_t(i.infos.size());
+        writes.back().pImageInfo = i.infos.data();
     }
     for (size_t i = 0; i < buffers.size(); ++i) {
         writes.push_back(write_descriptor(pass.set, buffers[i].binding, buffers[i].type));

@@ -19,6 +19,13 @@ struct PassBuffer {
     VkDeviceSize range = VK_WHOLE_SIZE;
 };
 
+// The image descriptors at one binding (one, or an array of them: bindless).
+struct PassImages {
+    uint32_t binding;
+    VkDescriptorType type; // combined image sampler, sampled image or sampler
+    std::vector<VkDescriptorImageInfo> infos;
+};
+
 struct Pass {
     PassSamplers samplers;
     VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
@@ -32,6 +39,11 @@ struct Pass {
 Pass create_pass(const VulkanContext& context, const GpuTexture& texture, const SamplerOptions& options,
                  VkShaderStageFlags stages, VkShaderStageFlags push_stages, const std::vector<PassBuffer>& buffers,
                  Cleanup& cleanup);
+
+// The same with the pass's images given (resource_pass.h's kinds); pass.samplers stays empty.
+Pass create_pass_with_images(const VulkanContext& context, const std::vector<PassImages>& images,
+                             VkShaderStageFlags stages, VkShaderStageFlags push_stages,
+                             const std::vector<PassBuffer>& buffers, Cleanup& cleanup);
 
 // Binds `pipeline` (made with pass.pipeline_layout), the pass's descriptor set and `push`.
 void bind_pass(VkCommandBuffer command_buffer, VkPipelineBindPoint bind_point, VkPipeline pipeline, const Pass& pass,

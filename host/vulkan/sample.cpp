@@ -1,6 +1,7 @@
 // `sample`: point lookups through the compute harness (sample.comp.glsl), one invocation or one subgroup
 // a lookup, colours and per-lookup stats read back.
 #include "vulkan/backend.h"
+#include "vulkan/sample_pass.h"
 #include "harness/config.h"
 #include "texture/error.h"
 #include "vulkan/harness_shaders.h"
@@ -11,12 +12,28 @@
 #include <cstdint>
 #include <cstring>
 
-
 namespace tf {
 
 std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture& texture,
                                   const std::vector<Lookup>& lookups, const SamplerOptions& options,
                                   std::vector<LookupStats>* stats)
+{
+    return run_sample_pass(
+        context, lookups, options, stats, harness_shader(HarnessShader::sample_comp, texture.format),
+        [&](const std::vector<PassBuffer>& buffers, Cleanup& cleanup) {
+            return create_pass(context, texture, options, VK_SHADER_STAGE_COMPUTE_BIT, VK_SHADER_STAGE_COMPUTE_BIT,
+                               buffers, cleanup);
+        },
+        [&](PushConstants& push) {
+            std::copy(&texture.sat_offset.x, &texture.sat_offset.x + 4, push.sat_offset);
+            std::copy(&texture.sat_scale.x, &texture.sat_scale.x + 4, push.sat_scale);
+        });
+}
+
+std::vector<glm::vec4> run_sample_pass(const VulkanContext& context, const std::vector<Lookup>& lookups,
+                                       const SamplerOptions& options, std::vector<LookupStats>* stats,
+                                       ShaderCode code, const MakeSamplePass& make_pass,
+                                       const std::function<void(PushConstants&)>& adjust_push)
 {
     if (lookups.empty()) { // as the reference backend: no lookups, no results (and no zero-sized buffers)
         if (stats)
@@ -52,15 +69,13 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
         in[i] = {float(l.u), float(l.v), float(l.dudx), float(l.dvdx), float(l.dudy), float(l.dvdy)};
     }
 
-    const Pass pass = create_pass(context, texture, options, VK_SHADER_STAGE_COMPUTE_BIT, VK_SHADER_STAGE_COMPUTE_BIT,
-                                  {{HARNESS_BINDING_LOOKUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, input.buffer},
-                                   {HARNESS_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, output.buffer},
-                                   {HARNESS_BINDING_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counts.buffer}},
-                                  cleanup);
-    const VkPipeline pipeline = create_compute_pipeline(context, harness_shader(HarnessShader::sample_comp, texture.format),
-                                                        pass.pipeline_layout, options.filter, cleanup);
-    const PushConstants push =
-        make_push_constants(options, count, texture.sat_offset, texture.sat_scale, HARNESS_GRADIENTS_FINE);
+    const Pass pass = make_pass({{HARNESS_BINDING_LOOKUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, input.buffer},
+                                 {HARNESS_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, output.buffer},
+                                 {HARNESS_BINDING_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counts.buffer}},
+                                cleanup);
+    const VkPipeline pipeline = create_compute_pipeline(context, code, pass.pipeline_layout, options.filter, cleanup);
+    PushConstants push = make_push_constants(options, count, glm::vec4(0.0f), glm::vec4(0.0f), HARNESS_GRADIENTS_FINE);
+    adjust_push(push);
     submit_and_wait(context, [&](VkCommandBuffer cb) {
         bind_pass(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline, pass, push);
         vkCmdDispatch(cb, groups_x, uint32_t(groups_y), 1);

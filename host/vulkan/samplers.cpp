@@ -4,7 +4,7 @@
 
 namespace tf {
 
-VkSampler create_sampler(const VulkanContext& context, const SamplerOptions& options, int levels)
+VkSamplerCreateInfo sampler_create_info(const VulkanContext& context, const SamplerOptions& options, int levels)
 {
     VkSamplerAddressMode address = options.wrap == Wrap::clamp    ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE
                                    : options.wrap == Wrap::mirror ? VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT
@@ -33,6 +33,12 @@ VkSampler create_sampler(const VulkanContext& context, const SamplerOptions& opt
         info.maxAnisotropy = std::min(float(options.aniso), context.info.max_sampler_anisotropy);
     }
     info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+    return info;
+}
+
+VkSampler create_sampler(const VulkanContext& context, const SamplerOptions& options, int levels)
+{
+    const VkSamplerCreateInfo info = sampler_create_info(context, options, levels);
     VkSampler sampler = VK_NULL_HANDLE;
     TF_VK(vkCreateSampler(context.device, &info, nullptr, &sampler));
     return sampler;

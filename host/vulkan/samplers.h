@@ -10,6 +10,8 @@ namespace tf {
 // (maxLod 0), hw-trilinear all levels, hw-aniso adds maxAnisotropy. Manual filters (texelFetch ignores
 // the sampler) get plain trilinear with the wrap mode, which their hardware taps use.
 VkSampler create_sampler(const VulkanContext& context, const SamplerOptions& options, int levels);
+// What create_sampler creates, for a caller that adds to it (the shadow kind's depth comparison).
+VkSamplerCreateInfo sampler_create_info(const VulkanContext& context, const SamplerOptions& options, int levels);
 
 // The three images every harness shader samples (the MIP chain and the two SAT words), each with its
 // sampler, as the descriptor image infos for HARNESS_BINDING_TEXTURE, _SAT_LOW and _SAT_HIGH.

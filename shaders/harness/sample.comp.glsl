@@ -45,6 +45,7 @@ void main()
         i = (group * HARNESS_SAMPLE_LOCAL_SIZE) / gl_SubgroupSize + gl_SubgroupID;
     if (i >= pc.count) // a subgroup's lanes leave together in quads mode
         return;
+    harnessLookupIndex = i; // bindless: lookup i reads u_textures[(pc.layer + i) % HARNESS_BINDLESS_COUNT]
     uint b = uint(HARNESS_LOOKUP_FLOATS) * i;
     vec2 uv = vec2(lookups[b], lookups[b + 1u]);
     vec2 dUVdx = vec2(lookups[b + 2u], lookups[b + 3u]);

@@ -1,0 +1,79 @@
+#include "cli/sample_resource.h"
+
+#include "core/resource_textures.h"
+#include "reference/resources.h"
+#include "texture/error.h"
+#include "vulkan/cleanup.h"
+#include "vulkan/harness_variant.h"
+#include "vulkan/sample_resource.h"
+
+namespace tf {
+
+namespace {
+
+constexpr int kMaxLayers = 64; // distinct layer content (core/resource_textures.cpp) and a small upload
+
+} // namespace
+
+std::vector<FlagSpec> resource_flags()
+{
+    return {{"--resource", "K",
+             "combined (default), separate (texture2D + sampler), array, separate-array, bindless (sampler2D[] "
+             "indexed non-uniformly), shadow (a depth image: PCF)"},
+            {"--layers", "N", "array kinds, bindless: layers / textures, 1..64, each distinct (default 4)"},
+            {"--layer", "L", "array kinds: the layer read (clamped to 0..N-1 as Vulkan does); bindless: the first "
+                             "index, 0..N-1 (lookup i reads (L + i) % N) (default 0)"},
+            {"--compare", "OP", "shadow: never, less, equal, less-or-equal (default), greater, not-equal, "
+                                "greater-or-equal, always; a texel passes when dref OP depth"},
+            {"--dref", "D", "shadow: the reference depth (default 0.5; not clamped)"}};
+}
+
+ResourceOptions resource_options_from(const Args& args)
+{
+    ResourceOptions r;
+    r.resource = parse_flag(args, "--resource", "combined", parse_resource);
+    const std::string kind = "--resource " + to_string(r.resource);
+    const bool layered = is_layered(r.resource);
+    for (const char* flag : {"--layers", "--layer"})
+        if (args.has(flag) && !layered)
+            throw Error(std::string(flag) + " is for --resource array, separate-array or bindless, not " + kind);
+    for (const char* flag : {"--compare", "--dref"})
+        if (args.has(flag) && r.resource != Resource::shadow)
+            throw Error(std::string(flag) + " is for --resource shadow, not " + kind);
+    if (layered) {
+        // bindless: the harness's array has a fixed size (checked with a message in check_resource_options)
+        r.layers = args.get_int("--layers", r.resource == Resource::bindless ? bindless_texture_count : 4, 1,
+                                kMaxLayers);
+        // Arrays clamp any layer (as the hardware does: checked against the reference); a bindless index
+        // past the array is undefined behaviour in the shader, so it must be in range.
+        r.layer = r.resource == Resource::bindless ? args.get_int("--layer", 0, 0, r.layers - 1)
+                                                   : args.get_int("--layer", 0, -1000000, 1000000);
+    }
+    if (r.resource == Resource::shadow) {
+        r.compare = parse_flag(args, "--compare", "less-or-equal", parse_compare_op);
+        r.dref = float(args.get_double("--dref", 0.5, -1e30, 1e30));
+    }
+    return r;
+}
+
+std::vector<glm::dvec4> sample_resource(GpuSession* gpu, const MipChain& chain, const std::vector<Lookup>& lookups,
+                                        const SamplerOptions& options, const ResourceOptions& resource,
+                                        std::vector<LookupStats>* stats)
+{
+    check_resource_options(options, resource);
+    if (gpu)
+        check_resource_device(gpu->context, options, resource); // before any upload
+    const std::vector<MipChain> chains = make_resource_chains(chain, resource);
+    if (!gpu)
+        return reference_sample_resource(chains, lookups, options, resource);
+    std::vector<glm::vec4> results;
+    {
+        GpuResources images = upload_resources(gpu->context, chains, resource.resource, needs_sat(options.filter));
+        Cleanup cleanup;
+        cleanup.add([&] { destroy_resources(gpu->context, images); });
+        results = gpu_sample_resource(gpu->context, images, lookups, options, resource, stats);
+    }
+    return {results.begin(), results.end()};
+}
+
+} // namespace tf

@@ -1,0 +1,32 @@
+#include "vulkan/harness_variant.h"
+
+#include "harness/config.h"
+#include "vulkan/harness_spirv.h"
+
+#include "sample_comp.h"
+
+namespace tf {
+
+namespace {
+
+ShaderCode code(SpirvWords w) { return {w.words, w.bytes}; }
+
+} // namespace
+
+HarnessVariant harness_variant(Resource resource, uint32_t textures)
+{
+    const VkDescriptorType combined = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    // {SPIR-V, texture descriptors, how many, the SAT tables' descriptors, a separate sampler, non-uniform}
+    switch (resource) {
+    case Resource::combined: return {{sample_comp, sizeof(sample_comp)}, combined, 1, combined};
+    case Resource::separate: return {code(sample_spirv_separate()), sampled, 1, sampled, true};
+    case Resource::array: return {code(sample_spirv_array()), combined, 1, combined};
+    case Resource::separate_array: return {code(sample_spirv_separate_array()), sampled, 1, sampled, true};
+    case Resource::bindless: return {code(sample_spirv_bindless()), combined, textures, combined, false, true};
+    case Resource::shadow: return {code(sample_spirv_shadow()), sampled, 1, combined, true};
+    }
+    return {{sample_comp, sizeof(sample_comp)}, combined, 1, combined};
+}
+
+} // namespace tf

@@ -1,0 +1,26 @@
+#pragma once
+// `sample --resource`: point lookups through the harness variant of a resource kind (harness_variant.h)
+// on the images of resource_images.h, with the layer, the bindless index and the depth comparison passed
+// as push constants. Results and stats as gpu_sample's (backend.h).
+#include "core/lookup.h"
+#include "core/lookup_stats.h"
+#include "core/resource.h"
+#include "vulkan/resource_images.h"
+#include <glm/vec4.hpp>
+#include <vector>
+
+namespace tf {
+
+// Throws tf::Error for what the kind cannot do (a summed-area table on anything but combined; bindless on
+// a device without non-uniform indexing of sampled-image arrays), naming the flag and the reason.
+void check_resource_options(const SamplerOptions& options, const ResourceOptions& resource);
+void check_resource_device(const VulkanContext& context, const SamplerOptions& options,
+                           const ResourceOptions& resource);
+// Whether the filter makes hardware (sampler) lookups: hw-* modes, or --taps hardware for aniso and ewa.
+bool uses_hardware_lookups(const SamplerOptions& options);
+
+std::vector<glm::vec4> gpu_sample_resource(const VulkanContext& context, const GpuResources& resources,
+                                           const std::vector<Lookup>& lookups, const SamplerOptions& options,
+                                           const ResourceOptions& resource, std::vector<LookupStats>* stats = nullptr);
+
+} // namespace tf

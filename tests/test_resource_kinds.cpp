@@ -1,0 +1,415 @@
+// Every resource kind through `texfilter sample --resource` (array, separate-array, separate, bindless,
+// shadow) on the GPU against the CPU reference (host/reference/resources.h: the lookup's layer or bindless
+// texture chosen as the harness does; PCF compares the depth texels BEFORE filtering), and percentage-closer
+// filtering by hand (bilinear, trilinear on the shadow resource) against the hardware comparison sampler
+// (hw-bilinear, hw-trilinear through sampler2DShadow) on the same lookups.
+//
+// Bounds, per lookup:
+// - manual forms (texelFetch): float rounding. The shader works in float on float input: a result is a
+//   normalised sum of n taps (n = the lookup's fetches + hardware lookups, from --stats) of values in
+//   [0, 1], each adding one ulp, plus 16 ulp for the LOD, blend and normalisation (2n + 16 ulp; EWA's
+//   weights add 2.5 (3 + 6 alpha R^2) ulp, as tests/test_ewa.cpp derives). Where the result jumps under a
+//   tiny change of the footprint (a level edge, an aniso probe count, a texel at the EWA support's edge:
+//   float lambda or ratio on the other side), the reference's own spread under the footprint scaled by
+//   1 ± 1e-5 (both columns, and each column alone: lambda and the axis ratio move by ~1.4e-5, far more than
+//   float's 1e-7) is allowed on top. aniso and ewa also place their taps in float (probe k at
+//   uv + t_k axis; EWA's texel offsets from uv): 2 roundings of ulp(max(|u|, |v|) + 1) in uv, times the
+//   level-0 side in texels, move a bilinear tap by that much, i.e. its value by that times
+//   (across + down) <= 2 adjacent: 4 2^-24 (max(|u|, |v|) + 1) size adjacent.
+// - hardware taps (--taps hardware): the sampler's rounding on top: bilinear weights to
+//   subTexelPrecisionBits (a step 2^-s in each of alpha and beta: 2^-s (across + down) <= 2 2^-s adjacent,
+//   plus one more step as tests/test_hw_vs_manual.cpp allows: 3 2^-s adjacent), a tap's float texel
+//   position (2 2^-14 adjacent, as test_ewa), and for aniso's trilinear probes at an explicit LOD the level
+//   blend quantised to mipmapPrecisionBits (2^-m times the largest difference between two levels' values,
+//   <= 1 for [0, 1] data). adjacent = the largest difference of neighbouring texels on any level.
+// Each layered check also asserts that it can fail: on most lookups the right texture's result is further
+// from the one a wrong layer / index would give than the bound (distinct layer content).
+#include "core/procedural.h"
+#include "core/resource.h"
+#include "core/resource_textures.h"
+#include "reference/reference.h"
+#include "reference/render.h"
+#include "reference/resources.h"
+#include "support.h"
+#include "vulkan/resource_images.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+using namespace tf;
+using tf::test::max_channel_diff;
+
+namespace {
+
+constexpr int kSize = 64;                // texture side: small, so every run is cheap
+constexpr double kUlp = 1.0 / 16777216.0; // 2^-24
+constexpr double kSupport = 2.0;         // TF_EWA_SUPPORT (R^2)
+
+std::string g_texfilter;
+std::filesystem::path g_work;
+
+// 256 lookups: footprints from 1/4 texel to 64 texels of the 64^2 texture, up to 4:1, uv in [-1, 2].
+const std::vector<Lookup>& lookups()
+{
+    static const std::vector<Lookup> all = test::as_float(test::random_footprint_lookups(
+        256, 1313, {.octave_min = -2.0, .octave_max = 6.0, .max_stretch = 2.0, .texture_size = double(kSize)}));
+    return all;
+}
+
+const std::string& lookups_path()
+{
+    static const std::string path = [] {
+        g_texfilter = test::texfilter_path();
+        g_work = test::make_work_dir("resources");
+        const std::string p = (g_work / "lookups.csv").string();
+        test::write_lookups_csv(p, lookups());
+        return p;
+    }();
+    return path;
+}
+
+// What the test device offers for the kinds lavapipe 22.3 lacks: non-uniform indexing of sampled-image
+// arrays (bindless), linear filtering of D32_SFLOAT (the hardware's bilinear/trilinear comparison). A
+// case that needs one prints SKIP where it is missing (and runs on a device that has it).
+bool has_bindless() { return test::test_device_info().sampled_image_array_non_uniform_indexing; }
+bool has_linear_depth()
+{
+    static const bool linear = [] {
+        VulkanContext context = create_context(test::test_context_options());
+        bool ok = true;
+        try {
+            check_shadow_format(context, true);
+        } catch (const Error&) {
+            ok = false;
+        }
+        destroy_context(context);
+        return ok;
+    }();
+    return linear;
+}
+bool skip(bool missing, const std::string& what)
+{
+    if (missing)
+        std::printf("SKIP: %s lacks %s\n", test::test_device_info().name.c_str(), what.c_str());
+    return missing;
+}
+
+double sub_texel_step() { return std::ldexp(1.0, -int(test::test_device_info().sub_texel_precision_bits)); }
+double mipmap_step() { return std::ldexp(1.0, -int(test::test_device_info().mipmap_precision_bits)); }
+
+struct Case {
+    std::string texture = "noise";
+    std::string flags;            // the filter's flags
+    SamplerOptions options;       // the same, for the reference
+    ResourceOptions resource;
+};
+
+std::string resource_flags(const ResourceOptions& r)
+{
+    std::string f = " --resource " + to_string(r.resource);
+    if (is_layered(r.resource))
+        f += " --layers " + std::to_string(r.layers) + " --layer " + std::to_string(r.layer);
+    if (r.resource == Resource::shadow)
+        f += " --compare " + to_string(r.compare) + " --dref " + test::show(double(r.dref));
+    return f;
+}
+
+test::SampleResult gpu_run(const Case& c)
+{
+    const std::string path = lookups_path();
+    return test::run_sample(g_texfilter, g_work,
+                            "--texture " + c.texture + " --texture-size " + std::to_string(kSize) + " --wrap " +
+                                to_string(c.options.wrap) + " " + c.flags + resource_flags(c.resource),
+                            path, true);
+}
+
+std::vector<MipChain> chains_of(const Case& c) { return make_resource_chains(make_procedural(c.texture, kSize), c.resource); }
+
+std::vector<Lookup> scaled(std::vector<Lookup> ls, double x, double y)
+{
+    for (Lookup& l : ls) {
+        l.dudx *= x, l.dvdx *= x;
+        l.dudy *= y, l.dvdy *= y;
+    }
+    return ls;
+}
+
+// Largest neighbouring-texel difference on any level of any chain (wrapped).
+double adjacent_difference(const std::vector<MipChain>& chains, Wrap wrap)
+{
+    double d = 0;
+    for (const MipChain& chain : chains)
+        for (const Image& img : chain.levels)
+            for (int y = 0; y < img.height; ++y)
+                for (int x = 0; x < img.width; ++x) {
+                    const glm::dvec4 t(img.at(x, y));
+                    d = std::max({d, max_channel_diff(t, glm::dvec4(img.at(wrap_texel(x + 1, img.width, wrap), y))),
+                                  max_channel_diff(t, glm::dvec4(img.at(x, wrap_texel(y + 1, img.height, wrap))))});
+                }
+    return d;
+}
+
+struct Outcome {
+    std::vector<glm::dvec4> reference;
+    std::vector<double> bound;
+};
+
+// The reference for c's lookups and the bound of each (see the top).
+Outcome reference_and_bounds(const Case& c, const std::vector<MipChain>& chains, const test::SampleResult& gpu)
+{
+    const std::vector<Lookup>& ls = lookups();
+    Outcome o;
+    o.reference = reference_sample_resource(chains, ls, c.options, c.resource);
+    std::vector<double> spread(ls.size(), 0.0);
+    for (auto [x, y] : {std::pair{1 + 1e-5, 1 + 1e-5}, {1 - 1e-5, 1 - 1e-5}, {1 + 1e-5, 1.0}, {1 - 1e-5, 1.0},
+                        {1.0, 1 + 1e-5}, {1.0, 1 - 1e-5}}) {
+        const auto moved = reference_sample_resource(chains, scaled(ls, x, y), c.options, c.resource);
+        for (size_t i = 0; i < ls.size(); ++i)
+            spread[i] = std::max(spread[i], max_channel_diff(moved[i], o.reference[i]));
+    }
+    const bool ewa = c.options.filter == Filter::ewa, hardware_taps = c.options.taps == Taps::hardware;
+    const double weights = ewa ? 2.5 * (3 + 6 * double(c.options.alpha) * kSupport) : 0.0;
+    double sampler = 0;
+    if (hardware_taps && (ewa || c.options.filter == Filter::aniso)) {
+        sampler = (3 * sub_texel_step() + 2 * std::exp2(-14)) * adjacent_difference(chains, c.options.wrap);
+        if (!ewa)
+            sampler += mipmap_step(); // the probes' level blend; values in [0, 1]
+    }
+    const bool float_taps = ewa || c.options.filter == Filter::aniso;
+    const double adjacent = float_taps ? adjacent_difference(chains, c.options.wrap) : 0.0;
+    for (size_t i = 0; i < ls.size(); ++i) {
+        const double n = gpu.stats[i].texel_fetches + gpu.stats[i].hardware_lookups;
+        const double position =
+            float_taps ? 4 * kUlp * (std::max(std::abs(ls[i].u), std::abs(ls[i].v)) + 1) * kSize * adjacent : 0.0;
+        o.bound.push_back(spread[i] + (16 + 2 * n + weights) * kUlp + position + sampler);
+    }
+    return o;
+}
+
+// GPU vs reference within the bound on every lookup; `wrong` (when given): what a wrong layer / index / an
+// unfiltered comparison would give, which must be further than the bound on at least `min_caught` of them.
+void check_case(const Case& c, const std::vector<std::vector<glm::dvec4>>& wrongs = {}, double min_caught = 0.9)
+{
+    const test::SampleResult gpu = gpu_run(c);
+    const std::vector<MipChain> chains = chains_of(c);
+    const Outcome o = reference_and_bounds(c, chains, gpu);
+    const std::string name = c.flags + resource_flags(c.resource);
+    CHECK(gpu.colors.size() == lookups().size(), name);
+    if (gpu.colors.size() != lookups().size())
+        return;
+    test::limit_failure_lines(8);
+    double worst = 0;
+    for (size_t i = 0; i < gpu.colors.size(); ++i) {
+        const double error = max_channel_diff(gpu.colors[i], o.reference[i]);
+        worst = std::max(worst, error / o.bound[i]);
+        CHECK(error <= o.bound[i], name + ": lookup " + std::to_string(i) + " GPU " + test::show(gpu.colors[i]) +
+                                       " reference " + test::show(o.reference[i]) + " bound " + test::show(o.bound[i]));
+    }
+    std::printf("%-90s worst error/bound %.3f\n", name.c_str(), worst);
+    for (const auto& wrong : wrongs) {
+        size_t caught = 0;
+        for (size_t i = 0; i < wrong.size(); ++i)
+            caught += max_channel_diff(wrong[i], o.reference[i]) > 2 * o.bound[i];
+        const double fraction = double(caught) / double(wrong.size());
+        std::printf("%-90s a wrong texture is caught on %.0f %% of the lookups\n", "", 100 * fraction);
+        CHECK(fraction >= min_caught, name + ": a wrong texture differs from the right one beyond the bound on " +
+                                          test::show(fraction) + " of the lookups");
+    }
+}
+
+SamplerOptions filter_options(Filter filter, Taps taps = Taps::manual, Wrap wrap = Wrap::repeat)
+{
+    SamplerOptions o;
+    o.filter = filter;
+    o.taps = taps;
+    o.wrap = wrap;
+    return o;
+}
+
+std::string filter_flags(const SamplerOptions& o)
+{
+    std::string f = "--filter " + to_string(o.filter);
+    if (o.filter == Filter::aniso || o.filter == Filter::ewa)
+        f += " --taps " + to_string(o.taps);
+    return f;
+}
+
+Case make_case(Resource resource, Filter filter, Taps taps = Taps::manual, int layers = 4, int layer = 2,
+               Wrap wrap = Wrap::repeat)
+{
+    Case c;
+    c.options = filter_options(filter, taps, wrap);
+    c.flags = filter_flags(c.options);
+    c.resource.resource = resource;
+    c.resource.layers = layers;
+    c.resource.layer = layer;
+    return c;
+}
+
+// The reference as if every lookup read texture `index` of the case's chains.
+std::vector<glm::dvec4> reference_on(const Case& c, int index)
+{
+    ResourceOptions one = c.resource;
+    one.resource = Resource::array; // every lookup on one clamped layer
+    one.layer = index;
+    return reference_sample_resource(chains_of(c), lookups(), c.options, one);
+}
+
+// An array case: checked against the reference, and a wrong layer (layer 0, the texture itself, and the
+// neighbour) must be caught.
+void check_array(Resource resource, Filter filter, Taps taps, int layer, Wrap wrap = Wrap::repeat)
+{
+    const Case c = make_case(resource, filter, taps, 4, layer, wrap);
+    const int read = std::clamp(layer, 0, 3);
+    check_case(c, {reference_on(c, read == 0 ? 1 : 0), reference_on(c, read == 3 ? 2 : read + 1)});
+}
+
+// The bindless case: lookup i reads (first + i) % count. A shader that read `first` for every lookup (the
+// index made uniform) or texture 0 gets caught on the lookups where those differ (3 in 4 of them).
+void check_bindless(Filter filter, Taps taps)
+{
+    if (skip(!has_bindless(), "shaderSampledImageArrayNonUniformIndexing (bindless)"))
+        return;
+    const Case c = make_case(Resource::bindless, filter, taps, 4, 1);
+    check_case(c, {reference_on(c, 1), reference_on(c, 0)}, 0.65);
+}
+
+// The depth chain filtered without any comparison (the depth itself, in .r).
+std::vector<glm::dvec4> reference_sample_all_depth(const MipChain& depth, const Case& c)
+{
+    return reference_sample_all(depth, lookups(), c.options);
+}
+
+// A shadow case: against the PCF reference; comparing the filtered depth instead (compare AFTER
+// filtering: a 0/1 answer) must be caught where the lookup sees an edge (not for the nearest families,
+// where one texel is read and the two orders agree).
+void check_shadow(Filter filter, Taps taps, CompareOp op = CompareOp::less_or_equal, float dref = 0.5f)
+{
+    if (taps == Taps::hardware && skip(!has_linear_depth(), "linear filtering of VK_FORMAT_D32_SFLOAT"))
+        return;
+    Case c = make_case(Resource::shadow, filter, taps);
+    c.resource.compare = op;
+    c.resource.dref = dref;
+    const std::vector<MipChain> depth = chains_of(c);
+    const std::vector<glm::dvec4> filtered = reference_sample_all_depth(depth[0], c);
+    std::vector<glm::dvec4> after(filtered.size());
+    for (size_t i = 0; i < filtered.size(); ++i)
+        after[i] = glm::dvec4(compare_depth(op, double(dref), filtered[i].r));
+    const bool one_texel = filter == Filter::nearest || filter == Filter::nearest_mip;
+    check_case(c, one_texel ? std::vector<std::vector<glm::dvec4>>{} : std::vector<std::vector<glm::dvec4>>{after}, 0.3);
+}
+
+// PCF by hand vs the hardware comparison sampler, the same lookups on the shadow resource.
+//
+// The bound. A hardware comparison lookup compares each texel it reads with dref first (Vulkan, "Depth
+// Compare Operation": t = 1 when dref OP D, else 0; exact here: D32 float texels against a float dref,
+// the same comparison the shader makes) and then filters the 0/1 values t. Bilinear on one level is
+// f(a, b) = (1-a)(1-b) t00 + a(1-b) t10 + (1-a) b t01 + a b t11 with the fractions a, b of the texel
+// coordinate; the sampler keeps subTexelPrecisionBits s of them (Vulkan, "(u,v,w,a) to (i,j,k,l,n)
+// Transformation"), so a', b' are within one step 2^-s of a, b (truncation's worst case). f is linear in
+// each fraction with slope df/da = (1-b)(t10 - t00) + b(t11 - t01), a convex combination of the two rows'
+// differences, so |df/da| <= across = max(|t10 - t00|, |t11 - t01|) (0 or 1: these are 0/1 terms), and
+// likewise |df/db| <= down; hence |f(a', b') - f(a, b)| <= 2^-s (across + down) <= 2 2^-s. Plus float
+// rounding of the weights and the sum (2e-6). A quantised fraction that crosses a texel edge (a' = 1 on
+// texel i0 is a = 0 on i0 + 1) gives the same f: bilinear is continuous there.
+// Trilinear: the hardware's lambda is within 2 2^-m of the exact one (mipmapPrecisionBits m: the LOD's
+// accuracy and the blend fraction's quantisation, one step each, as tests/test_hw_vs_manual.cpp allows);
+// trilinear of the 0/1 chain is piecewise linear in lambda, so the manual result may differ by its spread
+// over [lambda - e, lambda + e] (the ends and whole levels between), plus the bilinear bound above on
+// every level in that range.
+double pcf_bilinear_bound(const Image& level, double u, double v, Wrap wrap)
+{
+    double across = 0, down = 0;
+    test::texel_contrast(level, u, v, wrap, across, down);
+    return sub_texel_step() * (across + down) + 2e-6;
+}
+
+void check_pcf_hardware(Filter hw, Filter manual)
+{
+    if (hw != Filter::hw_nearest && skip(!has_linear_depth(), "linear filtering of VK_FORMAT_D32_SFLOAT"))
+        return;
+    const Case m = make_case(Resource::shadow, manual, Taps::manual), h = make_case(Resource::shadow, hw, Taps::manual);
+    const test::SampleResult by_hand = gpu_run(m), hardware = gpu_run(h);
+    const std::vector<Lookup>& ls = lookups();
+    CHECK(by_hand.colors.size() == ls.size() && hardware.colors.size() == ls.size(), "row counts");
+    if (by_hand.colors.size() != ls.size() || hardware.colors.size() != ls.size())
+        return;
+    const MipChain lit = compare_chain(chains_of(m)[0], m.resource.compare, double(m.resource.dref));
+    const int top = int(lit.levels.size()) - 1;
+    const double e = 2 * mipmap_step();
+    test::limit_failure_lines(8);
+    double worst = 0;
+    int partial = 0;
+    for (size_t i = 0; i < ls.size(); ++i) {
+        const Lookup& l = ls[i];
+        double bound = 0;
+        if (manual == Filter::nearest) {
+            // The same texel but where the texel coordinate lies within one sub-texel step of an edge
+            // (the hardware's rounded coordinate may pick the neighbour): such lookups are skipped.
+            const double fx = l.u * kSize, fy = l.v * kSize;
+            if (std::min(std::abs(fx - std::round(fx)), std::abs(fy - std::round(fy))) <= sub_texel_step())
+                continue;
+            bound = 2e-6;
+        } else if (manual == Filter::bilinear) {
+            bound = pcf_bilinear_bound(lit.levels[0], l.u, l.v, m.options.wrap);
+        } else {
+            const double lambda = std::clamp(reference_lod(lit, l, m.options), 0.0, double(top));
+            const glm::dvec4 centre = reference_trilinear_at(lit, lambda, l.u, l.v, m.options.wrap);
+            std::vector<double> probes = {lambda - e, lambda + e};
+            for (int k = int(std::ceil(lambda - e)); k <= int(std::floor(lambda + e)); ++k)
+                probes.push_back(k);
+            double spread = 0, weights = 0;
+            for (double d : probes)
+                spread = std::max(spread, max_channel_diff(reference_trilinear_at(lit, d, l.u, l.v, m.options.wrap), centre));
+            for (int level = std::max(0, int(lambda - e)); level <= std::min(top, int(lambda + e) + 1); ++level)
+                weights = std::max(weights, pcf_bilinear_bound(lit.levels[size_t(level)], l.u, l.v, m.options.wrap));
+            bound = spread + weights;
+        }
+        const double error = max_channel_diff(by_hand.colors[i], hardware.colors[i]);
+        worst = std::max(worst, error / bound);
+        // nearest: one texel, 0 or 1; the others: a fraction (an edge inside the footprint)
+        partial += manual == Filter::nearest ? by_hand.colors[i].r > 0.5 : by_hand.colors[i].r > 0.01 && by_hand.colors[i].r < 0.99;
+        CHECK(error <= bound, to_string(manual) + " vs " + to_string(hw) + ": lookup " + std::to_string(i) + " manual " +
+                                  test::show(by_hand.colors[i]) + " hardware " + test::show(hardware.colors[i]) +
+                                  " bound " + test::show(bound));
+    }
+    std::printf("PCF %s vs %s: worst error/bound %.3f, %d of %zu lookups partly lit\n", to_string(manual).c_str(),
+                to_string(hw).c_str(), worst, partial, ls.size());
+    // The lookups must see shadow edges (nearest: lit and unlit texels), or the comparison says little.
+    CHECK(partial >= int(ls.size()) / 5 && (manual != Filter::nearest || partial <= int(ls.size()) * 4 / 5),
+          std::to_string(partial) + " lookups partly lit (nearest: lit)");
+}
+
+} // namespace
+
+TEST_SUITE_BEGIN("gpu");
+TEST_CASE("array-trilinear") { check_array(Resource::array, Filter::trilinear, Taps::manual, 2); }
+TEST_CASE("array-ewa") { check_array(Resource::array, Filter::ewa, Taps::manual, 1, Wrap::clamp); }
+TEST_CASE("array-aniso-hardware-taps") { check_array(Resource::array, Filter::aniso, Taps::hardware, 3); }
+TEST_CASE("array-layer-clamped") { check_array(Resource::array, Filter::bilinear, Taps::manual, 9); }
+TEST_CASE("separate-array-trilinear") { check_array(Resource::separate_array, Filter::trilinear, Taps::manual, 1); }
+TEST_CASE("separate-array-ewa-hardware-taps") { check_array(Resource::separate_array, Filter::ewa, Taps::hardware, 2); }
+TEST_CASE("separate-trilinear") { check_case(make_case(Resource::separate, Filter::trilinear)); }
+TEST_CASE("separate-aniso-hardware-taps") { check_case(make_case(Resource::separate, Filter::aniso, Taps::hardware)); }
+TEST_CASE("separate-ewa-hardware-taps") { check_case(make_case(Resource::separate, Filter::ewa, Taps::hardware)); }
+TEST_CASE("bindless-trilinear") { check_bindless(Filter::trilinear, Taps::manual); }
+TEST_CASE("bindless-aniso-hardware-taps") { check_bindless(Filter::aniso, Taps::hardware); }
+TEST_CASE("shadow-nearest") { check_shadow(Filter::nearest, Taps::manual); }
+TEST_CASE("shadow-bilinear") { check_shadow(Filter::bilinear, Taps::manual); }
+TEST_CASE("shadow-nearest-mip") { check_shadow(Filter::nearest_mip, Taps::manual, CompareOp::greater); }
+TEST_CASE("shadow-bilinear-mip") { check_shadow(Filter::bilinear_mip, Taps::manual); }
+TEST_CASE("shadow-trilinear") { check_shadow(Filter::trilinear, Taps::manual, CompareOp::greater_or_equal, 0.45f); }
+TEST_CASE("shadow-brilinear") { check_shadow(Filter::brilinear, Taps::manual); }
+TEST_CASE("shadow-aniso") { check_shadow(Filter::aniso, Taps::manual, CompareOp::less); }
+TEST_CASE("shadow-aniso-hardware-taps") { check_shadow(Filter::aniso, Taps::hardware); }
+TEST_CASE("shadow-ewa") { check_shadow(Filter::ewa, Taps::manual); }
+TEST_CASE("shadow-ewa-hardware-taps") { check_shadow(Filter::ewa, Taps::hardware, CompareOp::greater, 0.55f); }
+TEST_CASE("pcf-nearest-vs-hw-nearest") { check_pcf_hardware(Filter::hw_nearest, Filter::nearest); }
+TEST_CASE("pcf-bilinear-vs-hw-bilinear") { check_pcf_hardware(Filter::hw_bilinear, Filter::bilinear); }
+TEST_CASE("pcf-trilinear-vs-hw-trilinear") { check_pcf_hardware(Filter::hw_trilinear, Filter::trilinear); }
+TEST_SUITE_END();
