@@ -315,6 +315,8 @@ sample_resources() {
         "${s[@]}" --resource shadow --compare bogus -o out.csv
     expect_error "sample: --dref nan" "bad value for --dref: 'nan'" out.csv -- \
         "${s[@]}" --resource shadow --dref nan -o out.csv
+    expect_error "sample: --format with a resource kind" "--format r16ui is for --resource combined" out.csv -- \
+        "${s[@]}" --resource separate --format r16ui -o out.csv
     expect_error "sample: sat on an array" "--resource array cannot run --filter sat" out.csv -- \
         "$TEXFILTER" sample --texture checker --filter sat --backend reference --lookups good.csv \
         --resource array -o out.csv

@@ -63,6 +63,11 @@ int run_sample(const std::vector<std::string>& argv)
     Backend backend = backend_from(args);
     TextureSource source = texture_source_from(args);
     check_format_filter(source.format, options); // integer data and hardware filtering, before any work
+    // The other resource kinds upload their images as RGBA32F (layers, bindless elements) or D32_SFLOAT
+    // (shadow): a rounded format would reach the shader through the wrong descriptor type.
+    if (resource.resource != Resource::combined && source.format != TextureFormat::rgba32f)
+        throw Error("--format " + to_string(source.format) + " is for --resource combined; --resource " +
+                    to_string(resource.resource) + " uploads RGBA32F (shadow: D32_SFLOAT)");
     std::string out = checked_output_path(args.require("-o"), {".csv"}, {args.require("--lookups"), source.name_or_path});
     bool with_stats = args.has("--stats");
     if (with_stats && backend != Backend::vulkan)
