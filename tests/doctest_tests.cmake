@@ -3,7 +3,8 @@
 # NAMED_CHECKS (every case made of named checks, tests/support.h) each check NAME.CHECK, labelled with the
 # LABELS given here plus the words of the case's TEST_SUITE. The cases are listed when the executable
 # is built (its --list-test-cases, tests/list_doctest_cases.cmake), so a new case needs no re-configure.
-# Every test runs with the validation layers on (TEXFILTER_VALIDATE=1): any message fails it.
+# Every test runs with the validation layers on (TEXFILTER_VALIDATE=1): any message fails it. A case that
+# prints "SKIP: <device> lacks <feature>" (and returns) is reported as skipped, not passed.
 function(tf_add_doctest name)
   cmake_parse_arguments(arg "NAMED_CHECKS" "" "LABELS" ${ARGN})
   set(target test_${name})

@@ -54,7 +54,7 @@ foreach(line IN LISTS lines)
     list(APPEND names "${test}")
     string(APPEND script "add_test([==[${test}]==] [==[${EXECUTABLE}]==] [==[--test-case=${case}]==] ${subcase})\n"
            "set_tests_properties([==[${test}]==] PROPERTIES ENVIRONMENT [==[${ENVIRONMENT}]==]"
-           " LABELS [==[${labels}]==])\n")
+           " LABELS [==[${labels}]==] SKIP_REGULAR_EXPRESSION [==[SKIP: .* lacks ]==])\n")
   endforeach()
 endforeach()
 if(names STREQUAL "")

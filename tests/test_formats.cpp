@@ -14,6 +14,7 @@
 #include "support.h"
 #include "texture/error.h"
 #include "texture/image.h"
+#include <glm/gtc/packing.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -39,12 +40,8 @@ uint32_t packed_code(float value, TextureFormat format) // the first channel's s
     return code;
 }
 
-float half_from_bits(uint16_t bits)
-{
-    _Float16 h;
-    std::memcpy(&h, &bits, 2);
-    return float(h);
-}
+// GLM's decode as the independent oracle (its encode rounds ties away from zero, so only the decode).
+float half_from_bits(uint16_t bits) { return glm::unpackHalf1x16(bits); }
 
 } // namespace
 
@@ -116,6 +113,15 @@ TEST_CASE("half-round-to-nearest-even")
     CHECK(quantise_texel(glm::vec4(tiny / 2), TextureFormat::r16f).r == 0.0f);        // tie: to even (zero)
     CHECK(quantise_texel(glm::vec4(tiny * 0.75f), TextureFormat::r16f).r == tiny);     // kept, not flushed
     CHECK(quantise_texel(glm::vec4(1e6f), TextureFormat::r16f).r == INFINITY);
+    // Bits known from IEEE 754 itself, not from the code under test: the largest half, the rounding to Inf
+    // at the midpoint 65520, a negative power of two, 1/3 (0x3555: 0.333251953125), the smallest normal.
+    CHECK(packed_code(65504.0f, TextureFormat::r16f) == 0x7bffu);
+    CHECK(packed_code(65519.0f, TextureFormat::r16f) == 0x7bffu);
+    CHECK(packed_code(65520.0f, TextureFormat::r16f) == 0x7c00u);
+    CHECK(packed_code(-2.0f, TextureFormat::r16f) == 0xc000u);
+    CHECK(packed_code(1.0f / 3.0f, TextureFormat::r16f) == 0x3555u);
+    CHECK(packed_code(std::ldexp(1.0f, -14), TextureFormat::r16f) == 0x0400u);
+    CHECK(half_from_bits(0x3555u) == 0.333251953125f);
 }
 
 // uint data: a texel value v in [0, 1] is the code round(v * scale), clamped; read as float(code).

@@ -41,19 +41,39 @@ uint8_t srgb8_code(float v)
     return std::isnan(c) ? 0 : uint8_t(std::lrint(linear_to_srgb(c) * 255.0));
 }
 
+// IEEE binary16, round to nearest, ties to even, from the bits (no _Float16: clang 14 has none on x86-64,
+// and GLM's packHalf rounds ties away from zero and flushes tiny values). Inf and NaN stay Inf and (quiet) NaN.
 uint16_t half_bits(float v)
 {
-    const _Float16 h = static_cast<_Float16>(v); // IEEE binary16, round to nearest even
-    uint16_t bits;
-    std::memcpy(&bits, &h, sizeof bits);
-    return bits;
+    uint32_t x;
+    std::memcpy(&x, &v, sizeof x);
+    const uint16_t sign = uint16_t((x >> 16) & 0x8000u);
+    const uint32_t a = x & 0x7fffffffu;
+    if (a >= 0x7f800000u) // Inf, NaN
+        return uint16_t(sign | 0x7c00u | (a > 0x7f800000u ? 0x200u : 0u));
+    if (a >= 0x477ff000u) // 65520 and up: past the midpoint of 65504 and 2^16, rounds to Inf
+        return uint16_t(sign | 0x7c00u);
+    if (a < 0x38800000u) { // below 2^-14: a subnormal half, round(|v|·2^24) (exact scaling, RNE by default)
+        float magnitude;
+        std::memcpy(&magnitude, &a, sizeof magnitude);
+        return uint16_t(sign | uint16_t(std::nearbyint(magnitude * 16777216.0f))); // 1024 is 2^-14: right
+    }
+    uint32_t h = ((((a >> 23) - 127u + 15u) << 10) | ((a & 0x7fffffu) >> 13)); // exponent, 10 mantissa bits
+    const uint32_t rest = a & 0x1fffu;                                           // the 13 bits dropped
+    if (rest > 0x1000u || (rest == 0x1000u && (h & 1u)))
+        ++h; // a carry into the exponent is right (1.111..1 rounds up to the next power of two)
+    return uint16_t(sign | h);
 }
 
 float half_value(uint16_t bits)
 {
-    _Float16 h;
-    std::memcpy(&h, &bits, sizeof h);
-    return static_cast<float>(h);
+    const int exponent = (bits >> 10) & 0x1f, mantissa = bits & 0x3ff;
+    const float sign = (bits & 0x8000u) ? -1.0f : 1.0f;
+    if (exponent == 31)
+        return mantissa ? std::numeric_limits<float>::quiet_NaN() : sign * std::numeric_limits<float>::infinity();
+    if (exponent == 0)
+        return sign * std::ldexp(float(mantissa), -24);
+    return sign * std::ldexp(float(mantissa | 0x400), exponent - 25);
 }
 
 template <typename Code>

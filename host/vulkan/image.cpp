@@ -6,7 +6,8 @@
 namespace tf {
 
 GpuImage create_image(const VulkanContext& context, VkFormat format, uint32_t width, uint32_t height,
-                      uint32_t levels, VkImageUsageFlags usage, VkImageAspectFlags aspect)
+                      uint32_t levels, VkImageUsageFlags usage, VkImageAspectFlags aspect, uint32_t layers,
+                      VkImageViewType view_type)
 {
     VkDevice device = context.device;
     GpuImage g;
@@ -17,7 +18,7 @@ GpuImage create_image(const VulkanContext& context, VkFormat format, uint32_t wi
     info.format = format;
     info.extent = {width, height, 1};
     info.mipLevels = levels;
-    info.arrayLayers = 1;
+    info.arrayLayers = layers;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
@@ -31,15 +32,15 @@ GpuImage create_image(const VulkanContext& context, VkFormat format, uint32_t wi
     allocate.memoryTypeIndex = find_memory_type(context, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     if (vkAllocateMemory(device, &allocate, nullptr, &g.memory) != VK_SUCCESS)
         throw Error("out of device memory for a " + std::to_string(width) + "x" + std::to_string(height) +
-                    " image on " + context.info.name);
+                    (layers > 1 ? "x" + std::to_string(layers) : std::string()) + " image on " + context.info.name);
     TF_VK(vkBindImageMemory(device, g.image, g.memory, 0));
     g.memory_type = allocate.memoryTypeIndex;
     g.memory_size = allocate.allocationSize;
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view.image = g.image;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.viewType = view_type;
     view.format = format;
-    view.subresourceRange = {aspect, 0, levels, 0, 1};
+    view.subresourceRange = {aspect, 0, levels, 0, layers};
     TF_VK(vkCreateImageView(device, &view, nullptr, &g.view));
     on_failure.dismiss();
     return g;

@@ -13,10 +13,12 @@ struct GpuImage {
     VkDeviceSize memory_size = 0; // its allocation's size
 };
 
-// A 2D image of `levels` levels in device-local memory, in UNDEFINED layout, with a view of every level.
+// A 2D image of `levels` levels and `layers` layers in device-local memory, in UNDEFINED layout, with a view
+// of every level and layer (VK_IMAGE_VIEW_TYPE_2D, or 2D_ARRAY for a texture array).
 // Throws a tf::Error naming the size and the device when there is no memory for it.
 GpuImage create_image(const VulkanContext& context, VkFormat format, uint32_t width, uint32_t height,
-                      uint32_t levels, VkImageUsageFlags usage, VkImageAspectFlags aspect);
+                      uint32_t levels, VkImageUsageFlags usage, VkImageAspectFlags aspect, uint32_t layers = 1,
+                      VkImageViewType view_type = VK_IMAGE_VIEW_TYPE_2D);
 void destroy_image(const VulkanContext& context, GpuImage& image); // also a half-made or empty one
 
 } // namespace tf

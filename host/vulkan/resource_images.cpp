@@ -1,70 +1,15 @@
 #include "vulkan/resource_images.h"
 
 #include "texture/error.h"
+#include "vulkan/barriers.h"
 #include "vulkan/cleanup.h"
+#include "vulkan/image.h"
 #include "vulkan/resources.h"
 #include <cstring>
 
 namespace tf {
 
 namespace {
-
-// A device-local image of `layers` layers and `levels` levels, UNDEFINED, with one view of all of them.
-GpuImage create_layered_image(const VulkanContext& context, VkFormat format, uint32_t width, uint32_t height,
-                              uint32_t levels, uint32_t layers, VkImageAspectFlags aspect, VkImageViewType view_type)
-{
-    VkDevice device = context.device;
-    GpuImage g;
-    Cleanup on_failure;
-    on_failure.add([&] { destroy_image(context, g); });
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = format;
-    info.extent = {width, height, 1};
-    info.mipLevels = levels;
-    info.arrayLayers = layers;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    TF_VK(vkCreateImage(device, &info, nullptr, &g.image));
-    VkMemoryRequirements requirements{};
-    vkGetImageMemoryRequirements(device, g.image, &requirements);
-    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    allocate.allocationSize = requirements.size;
-    allocate.memoryTypeIndex =
-        find_memory_type(context, requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    if (vkAllocateMemory(device, &allocate, nullptr, &g.memory) != VK_SUCCESS)
-        throw Error("out of device memory for a " + std::to_string(width) + "x" + std::to_string(height) + "x" +
-                    std::to_string(layers) + " image on " + context.info.name);
-    TF_VK(vkBindImageMemory(device, g.image, g.memory, 0));
-    g.memory_type = allocate.memoryTypeIndex;
-    g.memory_size = allocate.allocationSize;
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = g.image;
-    view.viewType = view_type;
-    view.format = format;
-    view.subresourceRange = {aspect, 0, levels, 0, layers};
-    TF_VK(vkCreateImageView(device, &view, nullptr, &g.view));
-    on_failure.dismiss();
-    return g;
-}
-
-void layout_barrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
-                    VkImageLayout to, VkAccessFlags src_access, VkAccessFlags dst_access, VkPipelineStageFlags src,
-                    VkPipelineStageFlags dst)
-{
-    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    barrier.srcAccessMask = src_access;
-    barrier.dstAccessMask = dst_access;
-    barrier.oldLayout = from;
-    barrier.newLayout = to;
-    barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image;
-    barrier.subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};
-    vkCmdPipelineBarrier(cb, src, dst, 0, 0, nullptr, 0, nullptr, 1, &barrier);
-}
 
 // Every level of every chain into layer k of `g` (texel_bytes a texel: RGBA32F, or D32 from .r), one
 // level at a time through one staging buffer of level 0's size; the image ends SHADER_READ_ONLY.
@@ -77,8 +22,10 @@ void upload_layers(const VulkanContext& context, const GpuImage& g, const std::v
     Cleanup cleanup;
     cleanup.add([&] { destroy_buffer(context, staging); });
     submit_and_wait(context, [&](VkCommandBuffer cb) {
-        layout_barrier(cb, g.image, aspect, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                       VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        image_barrier(cb, g.image, VK_REMAINING_MIP_LEVELS, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, aspect,
+                      VK_REMAINING_ARRAY_LAYERS);
     });
     for (size_t layer = 0; layer < chains.size(); ++layer)
         for (size_t l = 0; l < chains[layer].levels.size(); ++l) {
@@ -99,10 +46,11 @@ void upload_layers(const VulkanContext& context, const GpuImage& g, const std::v
             });
         }
     submit_and_wait(context, [&](VkCommandBuffer cb) {
-        layout_barrier(cb, g.image, aspect, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                       VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+        image_barrier(cb, g.image, VK_REMAINING_MIP_LEVELS, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, aspect,
+                      VK_REMAINING_ARRAY_LAYERS);
     });
 }
 
@@ -166,18 +114,18 @@ GpuResources upload_resources(const VulkanContext& context, const std::vector<Mi
     on_failure.add([&] { destroy_resources(context, r); });
     r.base = upload_texture(context, chains[0], with_sat);
     const uint32_t w = uint32_t(r.width), h = uint32_t(r.height), levels = uint32_t(r.levels);
+    const VkImageUsageFlags layer_usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (resource == Resource::array || resource == Resource::separate_array) {
         r.sat_low_array = array_view(context, r.base.sat_low.image, VK_FORMAT_R32G32B32A32_UINT);
         r.sat_high_array = array_view(context, r.base.sat_high.image, VK_FORMAT_R32_UINT);
-        r.layered = create_layered_image(context, VK_FORMAT_R32G32B32A32_SFLOAT, w, h, levels, uint32_t(r.layers),
-                                         VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_VIEW_TYPE_2D_ARRAY);
+        r.layered = create_image(context, VK_FORMAT_R32G32B32A32_SFLOAT, w, h, levels, layer_usage,
+                                 VK_IMAGE_ASPECT_COLOR_BIT, uint32_t(r.layers), VK_IMAGE_VIEW_TYPE_2D_ARRAY);
         upload_layers(context, r.layered, chains, VK_IMAGE_ASPECT_COLOR_BIT, false);
     } else if (resource == Resource::bindless) {
         for (size_t k = 1; k < chains.size(); ++k)
             r.textures.push_back(upload_texture(context, chains[k], false));
     } else if (resource == Resource::shadow) {
-        r.depth = create_layered_image(context, shadow_depth_format, w, h, levels, 1, VK_IMAGE_ASPECT_DEPTH_BIT,
-                                       VK_IMAGE_VIEW_TYPE_2D);
+        r.depth = create_image(context, shadow_depth_format, w, h, levels, layer_usage, VK_IMAGE_ASPECT_DEPTH_BIT);
         upload_layers(context, r.depth, chains, VK_IMAGE_ASPECT_DEPTH_BIT, true);
     }
     on_failure.dismiss();

@@ -56,139 +56,113 @@
 #undef TFI_SAT_HIGH
 #undef TFI_SAT_SIZE
 
-// Defaults: a 2D kind without extras, manual entry points, texelFetch, its own texture type.
-#define TFI_A tex
-#define TFI_X
-#define TFI_XA
-#define TFI_SIZE0 textureSize(TF_NONUNIFORM(tex), 0).xy
-#define TFI_LEVELS textureQueryLevels(TF_NONUNIFORM(tex))
-#define TFI_FETCH(p, l) texelFetch(TF_NONUNIFORM(tex), p, l)
-#define TFI_LOOKUP(uv, l) vec4(0.0)
-#define TFI_MANUAL 1
-#define TFI_HW 0
-#define TFI_CAN_FETCH 1
-#define TFI_OWNS_T 1
-#define TFI_SAT 0
+#if TFI_KIND < 1 || TFI_KIND > 14
+#error "texfilter/access.glsl: unknown TFI_KIND"
+#endif
 
-// The array kinds' layer, clamped as Vulkan clamps a sampled array layer (to [0, layers − 1]): texelFetch
-// of a layer outside the image is undefined.
-#define TFI_ARRAY_FETCH(p, l) \
-    texelFetch(TF_NONUNIFORM(tex), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(tex), 0).z - 1)), l)
-
-#if TFI_KIND == 1
+// The texture parameters, and the kinds with a sampler beside the texture.
+#if TFI_KIND == 1 || TFI_KIND == 11
 #define TFI_T sampler2D tex
-#undef TFI_LOOKUP
-#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), uv, l)
-#undef TFI_HW
-#define TFI_HW 1
-#elif TFI_KIND == 2
+#elif TFI_KIND == 2 || TFI_KIND == 12
 #define TFI_T texture2D tex
 #elif TFI_KIND == 3
 #define TFI_T texture2D tex, sampler smp
-#undef TFI_A
-#define TFI_A tex, smp
-#undef TFI_LOOKUP
-#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(sampler2D(tex, smp)), uv, l)
-#undef TFI_MANUAL
-#define TFI_MANUAL 0
-#undef TFI_HW
-#define TFI_HW 1
 #elif TFI_KIND == 4
 #define TFI_T sampler2DArray tex
-#undef TFI_X
-#define TFI_X , int layer
-#undef TFI_XA
-#define TFI_XA , layer
-#undef TFI_FETCH
-#define TFI_FETCH(p, l) TFI_ARRAY_FETCH(p, l)
-#undef TFI_LOOKUP
-#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), vec3(uv, float(layer)), l)
-#undef TFI_HW
-#define TFI_HW 1
 #elif TFI_KIND == 5
 #define TFI_T texture2DArray tex
-#undef TFI_X
-#define TFI_X , int layer
-#undef TFI_XA
-#define TFI_XA , layer
-#undef TFI_FETCH
-#define TFI_FETCH(p, l) TFI_ARRAY_FETCH(p, l)
 #elif TFI_KIND == 6
 #define TFI_T texture2DArray tex, sampler smp
-#undef TFI_A
-#define TFI_A tex, smp
-#undef TFI_X
-#define TFI_X , int layer
-#undef TFI_XA
-#define TFI_XA , layer
-#undef TFI_FETCH
-#define TFI_FETCH(p, l) TFI_ARRAY_FETCH(p, l)
-#undef TFI_LOOKUP
-#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(sampler2DArray(tex, smp)), vec3(uv, float(layer)), l)
-#undef TFI_MANUAL
-#define TFI_MANUAL 0
-#undef TFI_HW
-#define TFI_HW 1
-#elif TFI_KIND >= 7 && TFI_KIND <= 10
-#if TFI_KIND == 7
+#elif TFI_KIND == 7
 #define TFI_T usampler2D tex
 #elif TFI_KIND == 8
 #define TFI_T isampler2D tex
 #elif TFI_KIND == 9
 #define TFI_T utexture2D tex
-#else
+#elif TFI_KIND == 10
 #define TFI_T itexture2D tex
-#endif
-#undef TFI_FETCH
-#define TFI_FETCH(p, l) vec4(texelFetch(TF_NONUNIFORM(tex), p, l))
-#elif TFI_KIND == 11 || TFI_KIND == 12
-#if TFI_KIND == 11
-#define TFI_T sampler2D tex
-#undef TFI_OWNS_T
-#define TFI_OWNS_T ((TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) == 0)
-#else
-#define TFI_T texture2D tex
-#undef TFI_OWNS_T
-#define TFI_OWNS_T ((TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) == 0)
-#endif
-#undef TFI_X
-#define TFI_X , tf_Compare cmp
-#undef TFI_XA
-#define TFI_XA , cmp
-#undef TFI_FETCH
-#define TFI_FETCH(p, l) vec4(tfi_compare_texel(cmp, texelFetch(TF_NONUNIFORM(tex), p, l).r))
-#elif TFI_KIND == 13 || TFI_KIND == 14
-#if TFI_KIND == 13
+#elif TFI_KIND == 13
 #define TFI_T sampler2DShadow tex
-#undef TFI_LOOKUP
-#define TFI_LOOKUP(uv, l) vec4(textureLod(TF_NONUNIFORM(tex), vec3(uv, dref), l))
 #else
 #define TFI_T texture2D tex, samplerShadow smp
-#undef TFI_A
-#define TFI_A tex, smp
-#undef TFI_LOOKUP
-#define TFI_LOOKUP(uv, l) vec4(textureLod(TF_NONUNIFORM(sampler2DShadow(tex, smp)), vec3(uv, dref), l))
 #endif
-#undef TFI_X
-#define TFI_X , float dref
-#undef TFI_XA
-#define TFI_XA , dref
-#undef TFI_FETCH
-#define TFI_FETCH(p, l) vec4(0.0)
-#undef TFI_CAN_FETCH
-#define TFI_CAN_FETCH 0
-#undef TFI_MANUAL
-#define TFI_MANUAL 0
-#undef TFI_HW
-#define TFI_HW 1
+#if TFI_KIND == 3 || TFI_KIND == 6 || TFI_KIND == 14
+#define TFI_A tex, smp
 #else
-#error "texfilter/access.glsl: unknown TFI_KIND"
+#define TFI_A tex
+#endif
+
+// The extras after uv: a layer (arrays), a comparison (manual shadow) or a reference depth (hardware shadow).
+#if TFI_KIND >= 4 && TFI_KIND <= 6
+#define TFI_X , int layer
+#define TFI_XA , layer
+#elif TFI_KIND == 11 || TFI_KIND == 12
+#define TFI_X , tf_Compare cmp
+#define TFI_XA , cmp
+#elif TFI_KIND >= 13
+#define TFI_X , float dref
+#define TFI_XA , dref
+#else
+#define TFI_X
+#define TFI_XA
+#endif
+
+#define TFI_SIZE0 textureSize(TF_NONUNIFORM(tex), 0).xy
+#define TFI_LEVELS textureQueryLevels(TF_NONUNIFORM(tex))
+
+// A texel. Arrays clamp the layer as Vulkan clamps a sampled array layer (to [0, layers − 1]): texelFetch
+// of a layer outside the image is undefined. No texelFetch on a shadow sampler (13, 14): a stand-in that no
+// entry point of theirs reaches.
+#if TFI_KIND >= 4 && TFI_KIND <= 6
+#define TFI_FETCH(p, l) \
+    texelFetch(TF_NONUNIFORM(tex), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(tex), 0).z - 1)), l)
+#elif TFI_KIND >= 7 && TFI_KIND <= 10
+#define TFI_FETCH(p, l) vec4(texelFetch(TF_NONUNIFORM(tex), p, l))
+#elif TFI_KIND == 11 || TFI_KIND == 12
+#define TFI_FETCH(p, l) vec4(tfi_compare_texel(cmp, texelFetch(TF_NONUNIFORM(tex), p, l).r))
+#elif TFI_KIND >= 13
+#define TFI_FETCH(p, l) vec4(0.0)
+#else
+#define TFI_FETCH(p, l) texelFetch(TF_NONUNIFORM(tex), p, l)
+#endif
+#define TFI_CAN_FETCH (TFI_KIND < 13)
+
+// A hardware lookup at an explicit LOD (the _hw forms); kinds without a sampler: a stand-in vec4(0) that no
+// entry point of theirs reaches (their `hardware` flag is always false).
+#if TFI_KIND == 1
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), uv, l)
+#elif TFI_KIND == 3
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(sampler2D(tex, smp)), uv, l)
+#elif TFI_KIND == 4
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), vec3(uv, float(layer)), l)
+#elif TFI_KIND == 6
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(sampler2DArray(tex, smp)), vec3(uv, float(layer)), l)
+#elif TFI_KIND == 13
+#define TFI_LOOKUP(uv, l) vec4(textureLod(TF_NONUNIFORM(tex), vec3(uv, dref), l))
+#elif TFI_KIND == 14
+#define TFI_LOOKUP(uv, l) vec4(textureLod(TF_NONUNIFORM(sampler2DShadow(tex, smp)), vec3(uv, dref), l))
+#else
+#define TFI_LOOKUP(uv, l) vec4(0.0)
+#endif
+
+// Which entry points a kind gets: the manual forms where texelFetch reads the texture alone, the _hw forms
+// where a sampler comes with it.
+#define TFI_MANUAL (TFI_KIND != 3 && TFI_KIND != 6 && TFI_KIND < 13)
+#define TFI_HW (TFI_KIND == 1 || TFI_KIND == 3 || TFI_KIND == 4 || TFI_KIND == 6 || TFI_KIND >= 13)
+
+// 11 and 12 share sampler2D / texture2D with 1 and 2: the functions that take only the texture (size and
+// level queries) are defined once, by whichever of them is instantiated.
+#if TFI_KIND == 11
+#define TFI_OWNS_T ((TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) == 0)
+#elif TFI_KIND == 12
+#define TFI_OWNS_T ((TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) == 0)
+#else
+#define TFI_OWNS_T 1
 #endif
 
 // The SAT's tables: unsigned integer images read with texelFetch only (kinds 1, 2, 4, 5).
-#if TFI_KIND == 1 || TFI_KIND == 2 || TFI_KIND == 4 || TFI_KIND == 5
-#undef TFI_SAT
-#define TFI_SAT 1
+#define TFI_SAT (TFI_KIND == 1 || TFI_KIND == 2 || TFI_KIND == 4 || TFI_KIND == 5)
+#if TFI_SAT
 #if TFI_KIND == 1
 #define TFI_SAT_T usampler2D satLow, usampler2D satHigh
 #elif TFI_KIND == 2

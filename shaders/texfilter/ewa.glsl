@@ -386,7 +386,7 @@ vec4 tfi_ewa_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShap
 vec4 tfi_ewa_on_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha, bool hardware)
 {
     if (tf_level_size(TFI_A, level) == ivec2(1)) {
-        if (TFI_CAN_FETCH == 0) { // a shadow sampler: its one texel through the sampler (exact at the centre)
+        if (!TFI_CAN_FETCH) { // a shadow sampler: its one texel through the sampler (exact at the centre)
             TF_COUNT_HW_LOOKUPS(1);
             return TFI_LOOKUP(vec2(0.5), float(level));
         }
