@@ -62,6 +62,8 @@ int run_render(const std::vector<std::string>& argv)
     if (!image_io_available() && !is_pfm_path(out))
         throw Error(out + ": image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON; "
                           ".pfm output is built in)");
+    if (!is_pfm_path(out))
+        load_image_io(); // a missing image I/O module fails here, before the render
     CommandDevice device = open_command_device(backend, args);
     const bool sat = needs_sat(options.filter);
     const bool streamed = device.gpu && streams_level0(source) && !sat; // no MipChain on the host
