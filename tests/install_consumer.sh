@@ -28,6 +28,27 @@ diff <( (cd "$root/shaders/texfilter" && find . -name '*.glsl'; echo ./host.h) |
     <(cd "$prefix/include/texfilter" && find . -type f | sort)
 "$prefix/bin/texfilter" --help >/dev/null
 
+# Image files from the prefix: bin/texfilter dlopens PREFIX/lib/texfilter/texfilter_oiio.so on the first image
+# (host/io/oiio_loader.h). Without it, a .png output is refused before any work, naming the module's path;
+# a .pfm output and flag errors never needed it.
+if "$prefix/bin/texfilter" info 2>/dev/null | grep -q '^image I/O: OpenImageIO'; then
+    module=$(realpath "$prefix")/lib/texfilter/texfilter_oiio.so
+    [[ -s $module ]] || { echo "install_consumer: lib/texfilter/texfilter_oiio.so was not installed" >&2; exit 1; }
+    render=("$prefix/bin/texfilter" render --scene plane --backend reference --size 32x32 --texture checker --filter trilinear)
+    "${render[@]}" -o "$work/installed.png" >/dev/null
+    "$prefix/bin/texfilter" diff "$work/installed.png" "$work/installed.png" >/dev/null
+    mv "$module" "$module.away"
+    status=0
+    "${render[@]}" -o "$work/no_module.png" >/dev/null 2>"$work/no_module.txt" || status=$?
+    if [[ $status -ne 2 || -e $work/no_module.png ]] || ! grep -qF "$module" "$work/no_module.txt"; then
+        echo "install_consumer: without the image I/O module, render -o .png gave exit $status (want 2, no output," \
+             "a message naming $module): $(cat "$work/no_module.txt")" >&2
+        exit 1
+    fi
+    "${render[@]}" -o "$work/no_module.pfm" >/dev/null
+    mv "$module.away" "$module"
+fi
+
 # The package's version check: this minor version is found, another is refused.
 mkdir -p "$work/versions"
 cat >"$work/versions/CMakeLists.txt" <<'CMAKE'

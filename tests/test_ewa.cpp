@@ -667,8 +667,9 @@ void check_non_finite() {
 // ---------------------------------------------------------------- degenerate input, every family
 
 // docs/API.md's degenerate-input table (issue 10 item 6), end to end through `texfilter sample` on both
-// backends, for every family: a 512² checker (so that u = 3e38 overflows the texel coordinate u·512 in
-// float), wraps repeat and clamp. Per family and wrap, every result must be finite, the GPU within the
+// backends, for every family: a 64² checker (the smallest power of two where every huge u below, 1e37 up,
+// overflows the texel coordinate u·size in float: 1e37·64 > 3.4e38; 512² gave the same rows at 8x the cost
+// a launch), wraps repeat and clamp. Per family and wrap, every result must be finite, the GPU within the
 // family's tolerance of the reference, and each row equal to what the table says:
 // - gradients 1e-30 give what zero gradients give (the finest level);
 // - gradients 1e30, 1e100, 1e154, 1e300, ±Inf, NaN give the coarsest level: for every mip family and
@@ -681,7 +682,7 @@ void check_non_finite() {
 // the sampler's weight rounding 3·2^-bits (contrast 1, as test_hw_vs_manual); sat its 16-bit
 // quantisation 0.5/65535.
 void check_degenerate_all_families(int bits) {
-    const int size = 512;
+    const int size = 64;
     const MipChain chain = make_procedural("checker", size);
     const glm::dvec4 mean(chain.levels.back().at(0, 0));
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = INFINITY, t = 1.0 / size;
@@ -691,6 +692,10 @@ void check_degenerate_all_families(int bits) {
     const size_t first_uv = lookups.size();
     const std::vector<double> huge = {1e37, 1e38, 3e38, -3e38}, gone = {1e100, inf, -inf, nan};
     for (double u : huge) lookups.push_back({u, 0.6, t, 0, 0, t});
+    bool all_overflow = true; // the premise above: u·size is past float range for each huge u
+    for (double u : huge) all_overflow = all_overflow && std::isinf(float(u) * float(size));
+    CHECK_TRUE("degenerate input: every huge u overflows u·" + std::to_string(size) + " in float", all_overflow,
+               all_overflow ? "yes" : "no");
     const size_t first_gone = lookups.size();
     for (double u : gone) lookups.push_back({u, 0.6, t, 0, 0, t});
     for (double u : gone) lookups.push_back({0.3, u, t, 0, 0, t}); // v too
@@ -720,7 +725,8 @@ void check_degenerate_all_families(int bits) {
     };
     for (const std::string wrap : {"repeat", "clamp"})
         for (const Family& f : families) {
-            const std::string args = "--texture checker --texture-size 512 --wrap " + wrap + " " + f.flags;
+            const std::string args =
+                "--texture checker --texture-size " + std::to_string(size) + " --wrap " + wrap + " " + f.flags;
             test::SampleResult gpu_run, ref_run;
             const bool ok = run_cli(args, in, false, gpu_run) && run_cli(args + " --backend reference", in, false, ref_run);
             const std::string what = "degenerate input (" + f.flags.substr(9) + ", " + wrap + ")";

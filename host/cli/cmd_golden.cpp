@@ -146,6 +146,7 @@ int run_golden(const std::vector<std::string>& argv)
     }
     if (!image_io_available())
         throw Error("golden needs image I/O, which was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON)");
+    load_image_io(); // a missing image I/O module fails here, before any render
     if (args.has("--update")) {
         check_writable_directory(run.golden_dir, "golden --update");
         update_goldens(run);

@@ -64,6 +64,8 @@ int run_render(const std::vector<std::string>& argv)
     if (!image_io_available() && !is_pfm_path(out))
         throw Error(out + ": image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON; "
                           ".pfm output is built in)");
+    if (!is_pfm_path(out))
+        load_image_io(); // a missing image I/O module fails here, before the render
     CommandDevice device = open_command_device(backend, args);
     if (device.gpu)
         check_format_support(device.gpu->context, source.format, options);

@@ -1,368 +1,89 @@
-// Image files through OpenImageIO. OIIO stays inside this file so that the rest of the project
-// (and a lean build with image_io_stub.cpp instead) never sees its headers.
+// Image files through the image I/O module (io/oiio_abi.h): OpenImageIO is loaded on the first file read or
+// written (oiio_loader.h), so this file, and the rest of the project, never sees its headers.
 #include "io/image_io.h"
-#include "io/pfm.h"
+#include "io/oiio_loader.h"
 #include "io/output_path.h"
+#include "io/pfm.h"
 
 #include "texture/error.h"
 
-#include <OpenImageIO/imageio.h>
-
-#include <algorithm>
 #include <cctype>
-#include <cmath>
-#include <cstdint>
 #include <filesystem>
 #include <functional>
-#include <memory>
+#include <new>
 #include <string>
 #include <system_error>
-#include <vector>
-
-#include <cstdio>
-#include <unistd.h>
 
 namespace tf {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string lower(std::string s) {
-    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
+static_assert(int(ColorSpace::automatic) == TF_OIIO_AUTOMATIC && int(ColorSpace::srgb) == TF_OIIO_SRGB &&
+              int(ColorSpace::linear) == TF_OIIO_LINEAR);
+static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
 
-// OIIO keeps errors in a queue per object (and one global queue); leaving them there makes it
-// complain at exit, so every failure path drains the relevant queue into our message.
-std::string oiio_message(std::string text) {
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-    // One message, one line: OIIO joins several library errors with newlines.
-    for (size_t at; (at = text.find('\n')) != std::string::npos;) text.replace(at, 1, "; ");
-    return text.empty() ? std::string("unknown OpenImageIO error") : text;
-}
+// One call into the module: its error message, and where decoded texels go.
+struct Call {
+    std::string message;        // the module's (or the destination's) tf::Error text
+    std::function<glm::vec4*(int width, int height)> destination; // throws tf::Error to refuse
+    tf_oiio_call c{this, &Call::fail, &Call::texels};
 
-void check_readable_file(const std::string& path) {
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (ec || !fs::exists(status)) throw Error(path + ": no such file");
-    if (fs::is_directory(status)) throw Error(path + ": is a directory, not an image file");
-    const auto size = fs::file_size(path, ec);
-    if (ec) throw Error(path + ": cannot read (" + ec.message() + ")");
-    if (size == 0) throw Error(path + ": file is empty");
-}
+    Call() = default;
+    Call(const Call&) = delete; // c points at this object
+    Call& operator=(const Call&) = delete;
 
-bool names_linear(const std::string& color_space) {
-    const std::string cs = lower(color_space);
-    return cs == "linear" || cs == "scene_linear" || cs == "acescg" || cs.rfind("lin_", 0) == 0;
-}
+    static void fail(void* self, const char* message) { static_cast<Call*>(self)->message = message; }
 
-// The automatic rule of image_io.h: 8-bit is sRGB unless it says linear; 16-bit only where the
-// format is conventionally sRGB (PNG, JPEG) or the file names a non-linear space; float/half and
-// everything else is linear.
-bool stored_as_srgb(const OIIO::ImageSpec& spec, const std::string& format_name) {
-    const std::string cs = spec.get_string_attribute("oiio:ColorSpace");
-    if (names_linear(cs)) return false;
-    if (spec.format.basetype == OIIO::TypeDesc::UINT8) return true;
-    if (spec.format.basetype == OIIO::TypeDesc::UINT16)
-        return format_name == "png" || format_name == "jpeg" || !cs.empty();
-    return false;
-}
-
-// libpng's default error handler (which OIIO 2.4 keeps) prints "libpng error: ..." to stderr before OIIO
-// reports the same failure. While a decoder runs, file descriptor 2 points at an unnamed temporary file;
-// what landed there is handed back, so a failure gives one message and a success can pass warnings on.
-class StderrCapture {
-public:
-    StderrCapture()
-    {
-        std::fflush(stderr);
-        capture_ = std::tmpfile();
-        saved_ = capture_ ? dup(2) : -1;
-        if (saved_ >= 0 && dup2(fileno(capture_), 2) < 0) {
-            close(saved_);
-            saved_ = -1;
-        }
-    }
-    StderrCapture(const StderrCapture&) = delete;
-    StderrCapture& operator=(const StderrCapture&) = delete;
-    ~StderrCapture() { finish(); }
-
-    // Restores stderr and returns what was written meanwhile (at most a few KB are kept).
-    std::string finish()
-    {
-        std::string text;
-        if (saved_ >= 0) {
-            std::fflush(stderr);
-            dup2(saved_, 2);
-            close(saved_);
-            saved_ = -1;
-            std::rewind(capture_);
-            char buffer[4096];
-            const size_t n = std::fread(buffer, 1, sizeof buffer, capture_);
-            text.assign(buffer, n);
-        }
-        if (capture_) {
-            std::fclose(capture_);
-            capture_ = nullptr;
-        }
-        return text;
-    }
-
-private:
-    std::FILE* capture_ = nullptr;
-    int saved_ = -1;
-};
-
-// What the file holds, from its header: the decode rules of image_io.h apply to it.
-struct PixelFormat {
-    int width = 0, height = 0, channels = 0;  // channels: 1..4 as read
-    bool srgb = false;                        // what the automatic rule says about this file
-    int integer_levels = 0;                   // 255 / 65535 for UINT8 / UINT16, else 0
-};
-
-// Where decoded rows go: given the size, the caller's width x height linear RGBA texels.
-using RgbaDestination = std::function<glm::vec4*(int width, int height)>;
-
-// The first line of a library message, cut to a readable length.
-std::string first_line(const std::string& text) {
-    std::string line = text.substr(0, text.find('\n'));
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
-    return line.size() > 200 ? line.substr(0, 200) + "..." : line;
-}
-
-// Deflate expands at most 1032:1 (258-byte matches coded in 2 bits), so a PNG's filtered rows,
-// height x (1 + width x bytes per pixel), can never exceed 1032 times the file's size. The rows are
-// counted at the smallest depth PNG has, 1 bit a pixel (1-bit grey or palette; OIIO reports those
-// expanded), so no real file is refused. Returns what is wrong, or nothing.
-std::string impossible_png_claim(const std::string& path, const OIIO::ImageSpec& spec) {
-    std::error_code ec;
-    const double file_bytes = double(fs::file_size(path, ec));
-    const double row_bytes = 1.0 + std::ceil(double(spec.width) / 8.0);
-    if (ec || double(spec.height) * row_bytes <= 1032.0 * file_bytes) return {};
-    return "the header claims " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-           " pixels, more than a " + std::to_string(uint64_t(file_bytes)) +
-           "-byte PNG can hold (deflate expands at most 1032:1): truncated or corrupt";
-}
-
-// Opens the file and checks what its header claims; the caller reads pixels from the returned input.
-std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, int max_dimension, StderrCapture& capture) {
-    check_readable_file(path);
-
-    // Keep PNG alpha unassociated (as stored): otherwise OIIO premultiplies on read, in the
-    // encoded space, and RGB under partial alpha would no longer round-trip.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(path, &config);
-    if (!in) {
-        const std::string message = oiio_message(OIIO::geterror());
-        capture.finish();
-        throw Error(path + ": cannot open as an image: " + message);
-    }
-    const OIIO::ImageSpec& spec = in->spec();
-    auto fail = [&](const std::string& what) {
-        in->geterror();  // drain
-        in->close();
-        in->geterror();
-        capture.finish();
-        throw Error(path + ": " + what);
-    };
-    if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1)
-        fail("unsupported image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-             (spec.depth > 1 ? "x" + std::to_string(spec.depth) : std::string()));
-    if (spec.width > max_dimension || spec.height > max_dimension)
-        fail(std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-             " exceeds the maximum texture size " + std::to_string(max_dimension));
-    if (spec.nchannels <= 0) fail("image has no channels");
-    if (std::string(in->format_name()) == "png")
-        if (const std::string wrong = impossible_png_claim(path, spec); !wrong.empty()) fail(wrong);
-    return in;
-}
-
-// Lookup table from stored integer code to linear value, so a large 8/16-bit texture costs no
-// pow() per texel.
-std::vector<float> srgb_decode_table(int levels) {
-    std::vector<float> table(size_t(levels) + 1);
-    for (int i = 0; i <= levels; ++i) table[size_t(i)] = float(srgb_to_linear(double(i) / levels));
-    return table;
-}
-
-// Rows of OIIO's float values (channels a pixel) to linear RGBA: decoded from sRGB where asked, grey
-// replicated to RGB, a missing alpha 1, alpha as stored.
-class RgbaConverter {
-public:
-    RgbaConverter(const PixelFormat& format, bool decode_srgb) : format_(format), decode_(decode_srgb)
-    {
-        if (decode_ && format.integer_levels > 0) table_ = srgb_decode_table(format.integer_levels);
-        uint8_t codes[256];
-        for (int c = 0; c < 256; ++c) codes[c] = uint8_t(c);
-        OIIO::convert_pixel_values(OIIO::TypeDesc::UINT8, codes, OIIO::TypeDesc::FLOAT, alpha8_, 256);
-        for (int c = 0; c < 256; ++c) colour8_[c] = decode(alpha8_[c]);
-    }
-
-    // 8-bit files are read as bytes and take each channel's value from a table of the 256 codes, holding
-    // exactly what the float path gives (OIIO's own conversion, then the decode): same values, no per-value
-    // rounding or pow.
-    void convert(const uint8_t* codes, size_t pixels, glm::vec4* out) const
-    {
-        convert_with(codes, pixels, out, [&](uint8_t code) { return colour8_[code]; },
-                     [&](uint8_t code) { return alpha8_[code]; });
-    }
-
-    void convert(const float* values, size_t pixels, glm::vec4* out) const
-    {
-        convert_with(values, pixels, out, [&](float v) { return decode(v); }, [](float v) { return v; });
-    }
-
-private:
-    template <typename T, typename Colour, typename Alpha>
-    void convert_with(const T* values, size_t pixels, glm::vec4* out, Colour colour, Alpha alpha) const
-    {
-        const size_t n = size_t(format_.channels);
-        for (size_t i = 0; i < pixels; ++i) {
-            const T* p = values + i * n;
-            switch (n) {
-            case 1: {
-                const float g = colour(p[0]);
-                out[i] = glm::vec4(g, g, g, 1.0f);
-                break;
-            }
-            case 2: {  // grey + alpha
-                const float g = colour(p[0]);
-                out[i] = glm::vec4(g, g, g, alpha(p[1]));
-                break;
-            }
-            case 3: out[i] = glm::vec4(colour(p[0]), colour(p[1]), colour(p[2]), 1.0f); break;
-            default: out[i] = glm::vec4(colour(p[0]), colour(p[1]), colour(p[2]), alpha(p[3])); break;  // alpha as stored
-            }
-        }
-    }
-
-    float decode(float v) const
-    {
-        if (!decode_) return v;
-        if (!table_.empty()) {
-            const long code = std::lround(std::clamp(v, 0.0f, 1.0f) * float(format_.integer_levels));
-            return table_[size_t(code)];
-        }
-        return float(srgb_to_linear(double(v)));
-    }
-
-    PixelFormat format_;
-    bool decode_;
-    std::vector<float> table_;
-    float colour8_[256], alpha8_[256]; // 8-bit code -> colour value (decoded when asked), alpha value
-};
-
-// Opens, validates and decodes the first subimage into destination(width, height), a band of rows at a time
-// (a few MB of float values), so no whole-image float copy is ever held. Files with more than four channels
-// (EXR with extra layers, say) contribute their first four: OIIO orders R, G, B, A first. raw: no colour
-// decode at all (read_image_raw); else `space` decides as image_io.h says.
-void read_rgba(const std::string& path, int max_dimension, bool raw, ColorSpace space,
-               const RgbaDestination& destination) {
-    StderrCapture capture;
-    auto in = open_checked(path, max_dimension, capture);
-    const OIIO::ImageSpec spec = in->spec();
-    const std::string format_name = in->format_name();
-    auto fail = [&](const std::string& what) {
-        in->geterror();  // drain
-        in->close();
-        in->geterror();
-        capture.finish();  // libpng's own line said the same as OIIO's message
-        throw Error(path + ": " + what);
-    };
-
-    PixelFormat format;
-    format.width = spec.width;
-    format.height = spec.height;
-    format.channels = std::min(spec.nchannels, 4);
-    format.srgb = stored_as_srgb(spec, format_name);
-    if (spec.format.basetype == OIIO::TypeDesc::UINT8) format.integer_levels = 255;
-    if (spec.format.basetype == OIIO::TypeDesc::UINT16) format.integer_levels = 65535;
-    const bool decode = !raw && (space == ColorSpace::srgb || (space == ColorSpace::automatic && format.srgb));
-    const RgbaConverter converter(format, decode);
-
-    glm::vec4* texels = nullptr;
-    const size_t row_values = size_t(format.width) * size_t(format.channels);
-    const int band_rows = int(std::clamp<size_t>((size_t(1) << 20) / row_values, 1, size_t(format.height)));
-    const bool bytes = format.integer_levels == 255;
-    std::vector<float> band;
-    std::vector<uint8_t> byte_band;
-    try {
-        texels = destination(format.width, format.height);
-        if (bytes)
-            byte_band.resize(size_t(band_rows) * row_values);
-        else
-            band.resize(size_t(band_rows) * row_values);
-    } catch (const std::bad_alloc&) {
-        fail("out of memory for " + std::to_string(format.width) + "x" + std::to_string(format.height) + " pixels");
-    }
-
-    for (int y0 = 0; y0 < format.height; y0 += band_rows) {
-        const int y1 = std::min(format.height, y0 + band_rows);
-        bool ok = false;
-        std::string oiio_error;
+    // No exception may cross into the module: a refusal or an allocation failure is kept here, null returned.
+    static float* texels(void* self, int width, int height) {
+        Call& call = *static_cast<Call*>(self);
         try {
-            ok = bytes ? in->read_scanlines(0, 0, y0, y1, 0, 0, format.channels, OIIO::TypeDesc::UINT8, byte_band.data())
-                       : in->read_scanlines(0, 0, y0, y1, 0, 0, format.channels, OIIO::TypeDesc::FLOAT, band.data());
+            return reinterpret_cast<float*>(call.destination(width, height));
+        } catch (const std::bad_alloc&) {
+            call.message = "out of memory for " + std::to_string(width) + "x" + std::to_string(height) + " pixels";
         } catch (const std::exception& e) {
-            // Some format plugins report corrupt data by throwing; the contract is a tf::Error.
-            oiio_error = e.what();
+            call.message = e.what();
         }
-        if (!ok) {
-            if (oiio_error.empty()) oiio_error = in->geterror();
-            fail("cannot read pixels (corrupt or truncated file?): " + oiio_message(oiio_error));
-        }
-        // OIIO 2.4 returns success for a JPEG cut short ("Premature end of JPEG file") or a TIFF strip that
-        // ends early, with the missing pixels zero, and only leaves the decoder's complaint in the error
-        // queue: any message there means pixels were not read.
-        if (const std::string pending = in->geterror(); !pending.empty())
-            fail("incomplete pixel data (truncated or corrupt file): " + first_line(pending));
-        const size_t pixels = size_t(y1 - y0) * size_t(format.width);
-        glm::vec4* out = texels + size_t(y0) * size_t(format.width);
-        bytes ? converter.convert(byte_band.data(), pixels, out) : converter.convert(band.data(), pixels, out);
+        return nullptr;
     }
-    if (!in->close()) fail("cannot read: " + oiio_message(in->geterror()));
-    // A successful read can still have warnings of the library's own (libpng: "iCCP: known incorrect sRGB
-    // profile"): pass them on, named, one line each.
-    const std::string printed = capture.finish();
-    for (size_t start = 0; start < printed.size();) {
-        const size_t end = std::min(printed.find('\n', start), printed.size());
-        if (end > start) std::fprintf(stderr, "texfilter: %s: warning: %s\n", path.c_str(),
-                                      printed.substr(start, std::min<size_t>(end - start, 200)).c_str());
-        start = end + 1;
+
+    void check(int ok) const {
+        if (!ok) throw Error(message.empty() ? std::string("image I/O module failed without a message") : message);
     }
-}
+};
 
 // read_rgba into a new Image.
 Image read_rgba_image(const std::string& path, int max_dimension, bool raw, ColorSpace space) {
+    const tf_oiio_api& api = image_io_module();
     Image image;
-    read_rgba(path, max_dimension, raw, space, [&](int width, int height) {
+    Call call;
+    call.destination = [&](int width, int height) {
         image = make_image(width, height);
         return image.texels.data();
-    });
+    };
+    call.check(api.read_rgba(path.c_str(), max_dimension, raw, int(space), &call.c));
     return image;
 }
 
-std::string extension_of(const std::string& path) { return lower(fs::path(path).extension().string()); }
-
-uint8_t encode_png_channel(float linear, bool is_alpha) {
-    double v = std::isnan(linear) ? 0.0 : std::clamp(double(linear), 0.0, 1.0);
-    if (!is_alpha) v = linear_to_srgb(v);
-    return uint8_t(std::lround(v * 255.0));
+std::string lower_extension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
 }
 
 } // namespace
 
 bool image_io_available() { return true; }
 
+void load_image_io() { image_io_module(); }
+
 ImageHeader read_image_header(const std::string& path, int max_dimension) {
-    StderrCapture capture;
-    auto in = open_checked(path, max_dimension, capture);
-    ImageHeader header{in->spec().width, in->spec().height, std::min(in->spec().nchannels, 4)};
-    in->close();
-    in->geterror();
-    capture.finish();
-    return header;
+    const tf_oiio_api& api = image_io_module();
+    Call call;
+    tf_oiio_header header{};
+    call.check(api.read_header(path.c_str(), max_dimension, &header, &call.c));
+    return {header.width, header.height, header.channels};
 }
 
 Image read_image(const std::string& path, ColorSpace space, int max_dimension) {
@@ -371,12 +92,15 @@ Image read_image(const std::string& path, ColorSpace space, int max_dimension) {
 
 void read_image_into(const std::string& path, ColorSpace space, int max_dimension, int width, int height,
                      glm::vec4* texels) {
-    read_rgba(path, max_dimension, false, space, [&](int w, int h) {
+    const tf_oiio_api& api = image_io_module();
+    Call call;
+    call.destination = [&](int w, int h) {
         if (w != width || h != height) // the file changed since its header was read
             throw Error(path + ": now " + std::to_string(w) + "x" + std::to_string(h) + ", was " +
                         std::to_string(width) + "x" + std::to_string(height) + " when its header was read");
         return texels;
-    });
+    };
+    call.check(api.read_rgba(path.c_str(), max_dimension, 0, int(space), &call.c));
 }
 
 Image read_image_raw(const std::string& path) {
@@ -385,7 +109,7 @@ Image read_image_raw(const std::string& path) {
 
 void write_image(const std::string& path, const Image& image) {
     if (is_pfm_path(path)) return write_pfm(path, image); // built in: no OpenImageIO needed
-    const std::string ext = extension_of(path);
+    const std::string ext = lower_extension(path);
     const bool png = ext == ".png";
     if (!png && ext != ".exr")
         throw Error(path + ": unsupported output format '" + ext + "' (use .png, .exr or .pfm)");
@@ -393,61 +117,19 @@ void write_image(const std::string& path, const Image& image) {
         image.texels.size() != size_t(image.width) * size_t(image.height))
         throw Error(path + ": cannot write an empty or inconsistent " + std::to_string(image.width) + "x" +
                     std::to_string(image.height) + " image");
-
-    // Created by format name, because the temporary file's extension is not .png/.exr.
-    auto out = OIIO::ImageOutput::create(png ? "png" : "openexr");
-    if (!out) throw Error(path + ": cannot create a writer: " + oiio_message(OIIO::geterror()));
-
-    OIIO::ImageSpec spec(image.width, image.height, 4, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::HALF);
-    spec.channelnames = {"R", "G", "B", "A"};
-    spec.alpha_channel = 3;
-    std::vector<uint8_t> bytes;
-    const void* data = image.texels.data();
-    OIIO::TypeDesc data_type = OIIO::TypeDesc::FLOAT;
-    if (png) {
-        spec.attribute("oiio:ColorSpace", "sRGB");
-        spec.attribute("oiio:UnassociatedAlpha", 1);  // our alpha is straight; don't let OIIO divide
-        bytes.resize(image.texels.size() * 4);
-        for (size_t i = 0; i < image.texels.size(); ++i)
-            for (int c = 0; c < 4; ++c) bytes[i * 4 + size_t(c)] = encode_png_channel(image.texels[i][c], c == 3);
-        data = bytes.data();
-        data_type = OIIO::TypeDesc::UINT8;
-    } else {
-        spec.attribute("oiio:ColorSpace", "Linear");
-        spec.attribute("compression", "zip");
-        spec.attribute("DateTime", "");  // an empty value keeps OIIO from stamping the time: same image, same bytes
-    }
+    const tf_oiio_api& api = image_io_module();
 
     const std::string temp = temporary_path_for(path);
-    auto give_up = [&](const std::string& what) {
-        if (out) {
-            out->geterror();
-            out.reset();  // closes a half-written file before it is removed
-        }
-        std::error_code ec;
-        fs::remove(temp, ec);
-        throw Error(path + ": " + what);
-    };
-
-    bool ok = false;
-    std::string oiio_error;
-    try {
-        ok = out->open(temp, spec);
-        if (ok) ok = out->write_image(data_type, data);
-        if (ok) ok = out->close();
-    } catch (const std::exception& e) {
-        oiio_error = e.what();
-        ok = false;
-    }
-    if (!ok) {
-        if (oiio_error.empty()) oiio_error = out->geterror();
-        give_up("cannot write: " + oiio_message(oiio_error));
-    }
-    out.reset();
-
+    Call call;
+    call.check(api.write_rgba(path.c_str(), temp.c_str(), png, image.width, image.height,
+                              reinterpret_cast<const float*>(image.texels.data()), &call.c)); // removed temp on failure
     std::error_code ec;
     fs::rename(temp, path, ec);
-    if (ec) give_up("cannot move the finished file into place: " + ec.message());
+    if (ec) {
+        const std::string why = ec.message();
+        fs::remove(temp, ec);
+        throw Error(path + ": cannot move the finished file into place: " + why);
+    }
 }
 
 } // namespace tf

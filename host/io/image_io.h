@@ -1,12 +1,18 @@
 #pragma once
-// Image files through OpenImageIO (or a stub in builds with TEXFILTER_IMAGE_IO=OFF).
+// Image files through OpenImageIO (or a stub in builds with TEXFILTER_IMAGE_IO=OFF). OIIO lives in the image
+// I/O module texfilter_oiio.so, loaded on the first call that reads or writes an image file (io/oiio_loader.h):
+// a process that touches none never pays its third of a second of dynamic loading.
 #include "texture/image.h"
 #include <string>
 
 namespace tf {
 
-// Whether this build can read and write image files at all.
+// Whether this build can read and write image files at all (nothing is loaded to say so).
 bool image_io_available();
+
+// Loads the image I/O module now: a command that will write an image calls it before any work, so that a
+// missing or unloadable module (tf::Error naming its path and dlerror()) fails fast. Reads load it anyway.
+void load_image_io();
 
 enum class ColorSpace { automatic, srgb, linear };
 

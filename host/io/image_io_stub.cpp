@@ -16,6 +16,10 @@ namespace {
 
 bool image_io_available() { return false; }
 
+void load_image_io() {
+    throw Error("image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON)");
+}
+
 Image read_image(const std::string& path, ColorSpace, int) { left_out(path); }
 void read_image_into(const std::string& path, ColorSpace, int, int, int, glm::vec4*) { left_out(path); }
 

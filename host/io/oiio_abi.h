@@ -1,0 +1,63 @@
+#pragma once
+// The C table between the io layer (image_io.cpp) and the image I/O module texfilter_oiio.so
+// (oiio_module.cpp), which alone links OpenImageIO. OIIO and the ~260 libraries it pulls in cost a
+// third of a second of dynamic loading per process start, so the module is dlopen'ed on the first image
+// file read or written (oiio_loader.h), and a command that touches none never pays for it.
+//
+// Only C types cross: ints, floats, C strings, function pointers, a void* context. Nothing is thrown
+// across: every entry returns 1 on success, or 0 after handing the whole tf::Error text (path included)
+// to call->fail. Texels are linear RGBA, four floats each (glm::vec4's layout), rows top to bottom.
+//
+// Use (image_io.cpp): tf_oiio_call call{&state, fail, destination};
+//                     if (!api.read_rgba(path, max_side, 0, TF_OIIO_AUTOMATIC, &call)) throw Error(state.message);
+// Cost: nothing per call beyond OIIO's own work; the module is loaded once per process.
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+// Bumped whenever the table or a call's meaning changes: the loader refuses any other.
+#define TF_OIIO_ABI_VERSION 1
+// The one symbol the module exports: tf_oiio_api_v1() returns its table.
+#define TF_OIIO_ENTRY "tf_oiio_api_v1"
+
+// image_io.h's ColorSpace, as passed to read_rgba.
+enum { TF_OIIO_AUTOMATIC = 0, TF_OIIO_SRGB = 1, TF_OIIO_LINEAR = 2 };
+
+struct tf_oiio_header {
+    int width, height, channels; // channels: 1..4 (a file's first four)
+};
+
+// What the host hands each call.
+struct tf_oiio_call {
+    void* context;
+    // The call failed: message is the tf::Error's whole text. Called at most once per call.
+    void (*fail)(void* context, const char* message);
+    // read_rgba only: where the width x height texels go (4 floats each), asked for once the header is
+    // checked; null gives up (the host keeps its own reason: the module then reports nothing).
+    float* (*destination)(void* context, int width, int height);
+};
+
+struct tf_oiio_api {
+    uint32_t abi_version; // TF_OIIO_ABI_VERSION
+    // image_io.h's read_image_header.
+    int (*read_header)(const char* path, int max_dimension, struct tf_oiio_header* header,
+                       const struct tf_oiio_call* call);
+    // read_image/read_image_into/read_image_raw: raw != 0 decodes nothing (read_image_raw), else
+    // space (TF_OIIO_*) decides as image_io.h says.
+    int (*read_rgba)(const char* path, int max_dimension, int raw, int space, const struct tf_oiio_call* call);
+    // write_image's .png (png != 0: 8-bit sRGB) or .exr (half linear) into temporary_path, which is removed
+    // again on failure; messages name path. The caller renames it into place.
+    int (*write_rgba)(const char* path, const char* temporary_path, int png, int width, int height,
+                      const float* rgba, const struct tf_oiio_call* call);
+};
+
+typedef const struct tf_oiio_api* (*tf_oiio_entry)(void);
+// The entry itself: dlsym'ed by name (oiio_loader.cpp); the fuzz build, which links the module's code in,
+// calls it directly (fuzz/oiio_linked.cpp).
+const struct tf_oiio_api* tf_oiio_api_v1(void);
+
+#ifdef __cplusplus
+}
+#endif
