@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# One golden case's verdict from the golden.* fixture's run (tests/golden_run.sh): passes when the case's
+# line says PASS. A failed case left its actual, golden and diff images and report.html in OUT_DIR/run/.
+#
+# usage: golden_case.sh OUT_DIR NAME
+set -uo pipefail
+if [[ $# -ne 2 ]]; then
+    echo "usage: $0 OUT_DIR NAME" >&2
+    exit 2
+fi
+# Field by field, not a regex: case names hold '+' (bias+1).
+line=$(awk -v name="$2" '$1 == name && ($2 == "PASS" || $2 == "FAIL")' "$1/verdicts.txt" 2>/dev/null)
+if [[ -z $line ]]; then
+    echo "golden.$2: no verdict in $1/verdicts.txt (the fixture golden_run did not render it)" >&2
+    exit 1
+fi
+echo "$line"
+[[ $(awk '{print $2}' <<<"$line") == PASS ]] || { echo "golden.$2 failed: see $1/run/report.html" >&2; exit 1; }
