@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -20,6 +21,15 @@ uint64_t quantise(float value, double offset, double scale) {
     if (!(scale > 0)) return 0;
     const double level = std::round((double(value) - offset) / scale * double(sat_quantisation_levels));
     return uint64_t(std::clamp(level, 0.0, double(sat_quantisation_levels)));
+}
+
+// The span rounded up to float: the smallest float at or above d, so that no finite texel lands above 65535.
+float span_at_or_above(double d)
+{
+    float f = float(d);
+    if (double(f) < d)
+        f = std::nextafter(f, INFINITY);
+    return f;
 }
 
 const char* channel_name(int c) { return c == 0 ? "R" : c == 1 ? "G" : c == 2 ? "B" : "A"; }
@@ -71,13 +81,8 @@ SatTable build_sat(const Image& level0) {
         hi = glm::max(hi, texel);
     }
     glm::vec4 span;
-    for (int c = 0; c < 4; ++c) {
-        const double d = double(hi[c]) - double(lo[c]);
-        float f = float(d);
-        if (double(f) < d)
-            f = std::nextafter(f, INFINITY);
-        span[c] = f;
-    }
+    for (int c = 0; c < 4; ++c)
+        span[c] = span_at_or_above(double(hi[c]) - double(lo[c]));
 
     SatTable t;
     t.width = w;
@@ -108,6 +113,45 @@ SatTable build_sat(const Image& level0) {
         }
     }
     return t;
+}
+
+std::array<uint32_t, sat_range_words> sat_range_initial()
+{
+    return {0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, 0u, 0u, 0u, 0u, 0xFFFFFFFFu};
+}
+
+namespace {
+
+float unkey(uint32_t key)
+{
+    const uint32_t bits = (key & 0x80000000u) ? key & 0x7FFFFFFFu : ~key;
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+}
+
+} // namespace
+
+void sat_range_offset_scale(const std::array<uint32_t, sat_range_words>& words, int width,
+                            const std::string& texture_name, glm::vec4& offset, glm::vec4& scale)
+{
+    const std::string what = texture_name.empty() ? "summed-area table" : "texture " + texture_name;
+    if (words[8] != 0xFFFFFFFFu) {
+        const uint32_t index = words[8] >> 4, kind = (words[8] >> 2) & 3u, c = words[8] & 3u;
+        const int w = std::max(1, width);
+        throw Error(what + ": texel (" + std::to_string(index % uint32_t(w)) + ", " + std::to_string(index / uint32_t(w)) +
+                    ") is " + (kind == 1 ? "NaN" : kind == 2 ? "+Inf" : "-Inf") +
+                    ": sat needs finite texels (channel " + channel_name(int(c)) + ")");
+    }
+    for (int c = 0; c < 4; ++c) {
+        const float lo = unkey(words[size_t(c)]), hi = unkey(words[size_t(4 + c)]);
+        const double d = double(hi) - double(lo);
+        if (d > double(std::numeric_limits<float>::max()))
+            throw Error(what + ": channel " + channel_name(c) + " spans " + std::to_string(lo) + " .. " +
+                        std::to_string(hi) + ", more than a float holds: sat quantises each channel over its range");
+        offset[c] = lo;
+        scale[c] = span_at_or_above(d);
+    }
 }
 
 std::array<uint64_t, 4> sat_box_sum(const SatTable& table, int x0, int y0, int x1, int y1) {

@@ -8,6 +8,7 @@
 #include "vulkan/context.h"
 #include "vulkan/upload.h"
 #include <glm/vec4.hpp>
+#include <functional>
 #include <vector>
 
 namespace tf {
@@ -19,7 +20,8 @@ Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const 
 
 std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture& texture,
                                   const std::vector<Lookup>& lookups, const SamplerOptions& options,
-                                  std::vector<LookupStats>* stats = nullptr);
+                                  std::vector<LookupStats>* stats = nullptr,
+                                  const std::function<void(VkCommandBuffer)>& prelude = {}); // recorded first, same submission
 
 
 } // namespace tf

@@ -49,6 +49,7 @@ VulkanContext create_context(const ContextOptions& options)
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &features13;
     features.features.samplerAnisotropy = context.info.sampler_anisotropy ? VK_TRUE : VK_FALSE;
+    features.features.shaderFloat64 = context.info.shader_float64 ? VK_TRUE : VK_FALSE;
     features.features.shaderSampledImageArrayDynamicIndexing =
         context.info.sampled_image_array_dynamic_indexing ? VK_TRUE : VK_FALSE;
     const char* swapchain_extension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;

@@ -4,6 +4,7 @@
 #include "vulkan/cleanup.h"
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 namespace tf {
@@ -61,6 +62,10 @@ VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger,
                                  VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     messenger_info.pfnUserCallback = on_validation_message;
 
+    const VkValidationFeatureEnableEXT sync_enable = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+    VkValidationFeaturesEXT sync_features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+    sync_features.enabledValidationFeatureCount = 1;
+    sync_features.pEnabledValidationFeatures = &sync_enable;
     std::vector<const char*> names;
     for (const std::string& e : extensions)
         names.push_back(e.c_str());
@@ -71,6 +76,12 @@ VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger,
         info.ppEnabledLayerNames = &validation_layer;
         names.push_back(debug_extension);
         info.pNext = &messenger_info; // also catches messages from instance creation itself
+        // TEXFILTER_SYNC_VALIDATION=1 adds synchronisation validation (hazards between commands): the
+        // GPU-build tests set it; it is slower, so the rest of the suite runs without.
+        if (const char* sync = std::getenv("TEXFILTER_SYNC_VALIDATION"); sync && std::strcmp(sync, "1") == 0) {
+            sync_features.pNext = info.pNext;
+            info.pNext = &sync_features;
+        }
     }
     info.enabledExtensionCount = uint32_t(names.size());
     info.ppEnabledExtensionNames = names.data();

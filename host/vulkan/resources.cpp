@@ -15,7 +15,10 @@ uint32_t find_memory_type(const VulkanContext& context, uint32_t type_bits, VkMe
     throw Error("the Vulkan device has no memory type with the needed properties");
 }
 
-Buffer create_host_buffer(const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage)
+namespace {
+
+Buffer create_buffer(const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
+                     VkMemoryPropertyFlags properties)
 {
     Buffer b;
     Cleanup on_failure;
@@ -30,15 +33,26 @@ Buffer create_host_buffer(const VulkanContext& context, VkDeviceSize size, VkBuf
     vkGetBufferMemoryRequirements(context.device, b.buffer, &requirements);
     VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     allocate.allocationSize = requirements.size;
-    allocate.memoryTypeIndex = find_memory_type(context, requirements.memoryTypeBits,
-                                                VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                                    VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    allocate.memoryTypeIndex = find_memory_type(context, requirements.memoryTypeBits, properties);
     if (vkAllocateMemory(context.device, &allocate, nullptr, &b.memory) != VK_SUCCESS)
         throw Error("out of memory for a " + std::to_string(size) + "-byte buffer on " + context.info.name);
     TF_VK(vkBindBufferMemory(context.device, b.buffer, b.memory, 0));
-    TF_VK(vkMapMemory(context.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
+    if (properties & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
+        TF_VK(vkMapMemory(context.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
     on_failure.dismiss();
     return b;
+}
+
+} // namespace
+
+Buffer create_host_buffer(const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage)
+{
+    return create_buffer(context, size, usage, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+}
+
+Buffer create_device_buffer(const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage)
+{
+    return create_buffer(context, size, usage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
 }
 
 void destroy_buffer(const VulkanContext& context, Buffer& buffer)

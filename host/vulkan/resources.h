@@ -15,6 +15,8 @@ struct Buffer {
 
 // Throws a tf::Error naming the size and the device when there is no memory for it.
 Buffer create_host_buffer(const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage);
+// The same in device-local memory, not mapped (mapped stays null).
+Buffer create_device_buffer(const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage);
 void destroy_buffer(const VulkanContext& context, Buffer& buffer); // also a half-made or empty one
 
 uint32_t find_memory_type(const VulkanContext& context, uint32_t type_bits, VkMemoryPropertyFlags properties);

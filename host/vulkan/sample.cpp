@@ -16,7 +16,8 @@ namespace tf {
 
 std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture& texture,
                                   const std::vector<Lookup>& lookups, const SamplerOptions& options,
-                                  std::vector<LookupStats>* stats)
+                                  std::vector<LookupStats>* stats,
+                                  const std::function<void(VkCommandBuffer)>& prelude)
 {
     return run_sample_pass(
         context, lookups, options, stats, harness_shader(HarnessShader::sample_comp, texture.format),
@@ -27,13 +28,15 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
         [&](PushConstants& push) {
             std::copy(&texture.sat_offset.x, &texture.sat_offset.x + 4, push.sat_offset);
             std::copy(&texture.sat_scale.x, &texture.sat_scale.x + 4, push.sat_scale);
-        });
+        },
+        prelude);
 }
 
 std::vector<glm::vec4> run_sample_pass(const VulkanContext& context, const std::vector<Lookup>& lookups,
                                        const SamplerOptions& options, std::vector<LookupStats>* stats,
                                        ShaderCode code, const MakeSamplePass& make_pass,
-                                       const std::function<void(PushConstants&)>& adjust_push)
+                                       const std::function<void(PushConstants&)>& adjust_push,
+                                       const std::function<void(VkCommandBuffer)>& prelude)
 {
     if (lookups.empty()) { // as the reference backend: no lookups, no results (and no zero-sized buffers)
         if (stats)
@@ -77,6 +80,8 @@ std::vector<glm::vec4> run_sample_pass(const VulkanContext& context, const std::
     PushConstants push = make_push_constants(options, count, glm::vec4(0.0f), glm::vec4(0.0f), HARNESS_GRADIENTS_FINE);
     adjust_push(push);
     submit_and_wait(context, [&](VkCommandBuffer cb) {
+        if (prelude)
+            prelude(cb);
         bind_pass(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline, pass, push);
         vkCmdDispatch(cb, groups_x, uint32_t(groups_y), 1);
         record_host_read(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);

@@ -106,6 +106,8 @@ void upload_sat(const VulkanContext& context, const Image* level0, GpuTexture& t
 
 } // namespace
 
+void upload_empty_sat(const VulkanContext& context, GpuTexture& texture) { upload_sat(context, nullptr, texture); }
+
 bool needs_sat(Filter filter) { return filter == Filter::sat || filter == Filter::sat_assembly; }
 
 GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format)
@@ -144,6 +146,14 @@ GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, b
     }
     on_failure.dismiss();
     return t;
+}
+
+GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format,
+                          TextureBuild build)
+{
+    if (build == TextureBuild::gpu)
+        return upload_gpu_built_texture(context, chain.levels.at(0), with_sat, format);
+    return upload_texture(context, chain, with_sat, format);
 }
 
 GpuTexture upload_streamed_texture(const VulkanContext& context, int width, int height,

@@ -139,4 +139,17 @@
 
 #define HARNESS_SPEC_FILTER 0 // specialization constant id of the filter (HARNESS_FILTER_*)
 
+// GPU builds (build_mip.comp.glsl, build_sat.comp.glsl): their own descriptor sets and push constants.
+#define HARNESS_MIP_MAX_LEVELS 15  // 16384 a side: 1 + log2(16384) levels, one storage view each
+#define HARNESS_BUILD_BINDING_LEVELS 0  // build_mip: image2D[HARNESS_MIP_MAX_LEVELS] rgba32f, coherent
+#define HARNESS_BUILD_BINDING_COUNTER 1 // build_mip: buffer { uint }, the tail's group counter
+#define HARNESS_BUILD_BINDING_LEVEL0 0  // build_sat: image2D rgba32f, level 0 (readonly)
+#define HARNESS_BUILD_BINDING_SAT_LOW 1 // build_sat: uimage2D rgba32ui
+#define HARNESS_BUILD_BINDING_SAT_HIGH 2 // build_sat: uimage2D r32ui
+#define HARNESS_BUILD_BINDING_RANGE 3   // build_sat: buffer { uint words[9] }
+#define HARNESS_BUILD_PUSH_SIZE 32      // ivec2 size0, int sourceLevel (build_mip) or pass (build_sat), int levels, int tail
+#define HARNESS_SAT_PASS_RANGE 0
+#define HARNESS_SAT_PASS_ROWS 1
+#define HARNESS_SAT_PASS_COLUMNS 2
+
 #endif

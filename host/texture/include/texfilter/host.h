@@ -91,6 +91,25 @@ Image downsample(const Image& source);
 // Throws tf::Error for an empty image or one whose texels do not match its size.
 MipChain build_mip_chain(Image level0);
 
+// ---- GPU builds (shaders/texfilter/build_mip.glsl, build_sat.glsl) ----------------------------------------------
+
+// One dispatch of build_mip.glsl: levels source_level + 1 .. source_level + levels from source_level, in
+// groups_x x groups_y groups (32 x 32 texels of the first of them each); with `tail`, the group that
+// finishes last builds every level after those too. Push these fields to tf_build_mip_pass.
+struct MipBuildPass {
+    int source_level = 0;
+    int levels = 0;     // 1..6
+    bool tail = false;
+    int groups_x = 0, groups_y = 0;
+};
+// The largest level (in texels) the tail's one group builds alone: TF_MIP_TAIL_TEXELS's default.
+constexpr int mip_build_tail_texels = 16384;
+// The fewest passes the rule allows: a pass continues below its first level while the level it halves is
+// even (or 1 texel) on both axes, up to 6 levels (a 32-texel tile halved to 1), and takes the tail once its
+// last level has at most tail_texels texels. A 2^k x 2^k texture up to 8192 is one pass; each odd level
+// ends a pass. Empty for a 1x1 texture; throws tf::Error for a side below 1.
+std::vector<MipBuildPass> plan_mip_build(int width, int height, int tail_texels = mip_build_tail_texels);
+
 // ---- Summed-area tables (tf_sat, tf_sat_assembly) -----------------------------------------------------------
 
 // Input quantisation, per channel c, over the texture's own range: offset_c = the smallest texel value,
@@ -124,6 +143,16 @@ void check_sat_texels(const Image& level0, const std::string& texture_name = "")
 // The table of level 0 (the full-resolution texture, linear values; build it after any sRGB decode).
 // Throws tf::Error for a texture larger than sat_max_dimension on a side, and as check_sat_texels.
 SatTable build_sat(const Image& level0);
+
+// build_sat.glsl's range words (TF_SAT_RANGE): the initial values to clear them to before its range pass,
+// and what they mean once it ran. Keys are order-preserving encodings of floats.
+constexpr int sat_range_words = 9;
+std::array<uint32_t, sat_range_words> sat_range_initial();
+// The table's offset and scale from the range words: as build_sat computes them from the texels. Throws
+// tf::Error "texture NAME: texel (i, j) is NaN: sat needs finite texels (channel R)" (as check_sat_texels)
+// when word 8 names a non-finite texel of a width-wide texture, and for a span that overflows float.
+void sat_range_offset_scale(const std::array<uint32_t, sat_range_words>& words, int width,
+                            const std::string& texture_name, glm::vec4& offset, glm::vec4& scale);
 
 // Exact sum of the quantised texels (levels 0..65535) in [x0, x1) x [y0, y1), per channel RGBA, computed from
 // the table with the same modular arithmetic the shader uses. Divide by the box's texel count and by 65535,

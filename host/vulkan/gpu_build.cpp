@@ -1,0 +1,296 @@
+// The GPU MIP and SAT builds: pipelines, per-texture targets, and the commands of each build.
+#include "vulkan/gpu_build.h"
+#include "harness/config.h"
+#include "texture/error.h"
+#include "vulkan/barriers.h"
+#include "vulkan/gpu_build_spirv.h"
+#include "vulkan/pipeline.h"
+#include <algorithm>
+#include <array>
+#include <cstring>
+
+#include "build_mip_comp.h"
+#include "build_sat_comp.h"
+
+namespace tf {
+
+namespace {
+
+// build_mip's and build_sat's push constants (HARNESS_BUILD_PUSH_SIZE bytes).
+struct BuildPush {
+    int32_t size[2];
+    int32_t source_level_or_pass;
+    int32_t levels;
+    int32_t tail;
+    int32_t pad[3];
+};
+static_assert(sizeof(BuildPush) == HARNESS_BUILD_PUSH_SIZE);
+
+VkDescriptorSetLayout create_set_layout(const VulkanContext& context,
+                                        const std::vector<VkDescriptorSetLayoutBinding>& bindings, Cleanup& cleanup)
+{
+    VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    info.bindingCount = uint32_t(bindings.size());
+    info.pBindings = bindings.data();
+    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+    TF_VK(vkCreateDescriptorSetLayout(context.device, &info, nullptr, &layout));
+    VkDevice device = context.device;
+    cleanup.add([=] { vkDestroyDescriptorSetLayout(device, layout, nullptr); });
+    return layout;
+}
+
+VkPipelineLayout create_layout(const VulkanContext& context, VkDescriptorSetLayout set_layout, Cleanup& cleanup)
+{
+    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(BuildPush)};
+    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    info.setLayoutCount = 1;
+    info.pSetLayouts = &set_layout;
+    info.pushConstantRangeCount = 1;
+    info.pPushConstantRanges = &range;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    TF_VK(vkCreatePipelineLayout(context.device, &info, nullptr, &layout));
+    VkDevice device = context.device;
+    cleanup.add([=] { vkDestroyPipelineLayout(device, layout, nullptr); });
+    return layout;
+}
+
+VkDescriptorSet allocate_set(const VulkanContext& context, VkDescriptorSetLayout layout,
+                             const std::vector<VkDescriptorPoolSize>& sizes, VkDescriptorPool& pool, Cleanup& cleanup)
+{
+    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool_info.maxSets = 1;
+    pool_info.poolSizeCount = uint32_t(sizes.size());
+    pool_info.pPoolSizes = sizes.data();
+    TF_VK(vkCreateDescriptorPool(context.device, &pool_info, nullptr, &pool));
+    VkDevice device = context.device;
+    VkDescriptorPool created = pool;
+    cleanup.add([=] { vkDestroyDescriptorPool(device, created, nullptr); }); // frees the set too
+    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocate.descriptorPool = pool;
+    allocate.descriptorSetCount = 1;
+    allocate.pSetLayouts = &layout;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    TF_VK(vkAllocateDescriptorSets(context.device, &allocate, &set));
+    return set;
+}
+
+VkImageView create_level_view(const VulkanContext& context, VkImage image, VkFormat format, uint32_t level,
+                              Cleanup& cleanup)
+{
+    VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    info.image = image;
+    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    info.format = format;
+    info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    TF_VK(vkCreateImageView(context.device, &info, nullptr, &view));
+    VkDevice device = context.device;
+    cleanup.add([=] { vkDestroyImageView(device, view, nullptr); });
+    return view;
+}
+
+void compute_to_compute(VkCommandBuffer cb)
+{
+    memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+}
+
+void transfer_to_compute(VkCommandBuffer cb)
+{
+    memory_barrier(cb, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+}
+
+} // namespace
+
+GpuBuildKernels create_gpu_build_kernels(const VulkanContext& context, Cleanup& cleanup)
+{
+    GpuBuildKernels k;
+    k.mip_set_layout = create_set_layout(
+        context,
+        {{HARNESS_BUILD_BINDING_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, HARNESS_MIP_MAX_LEVELS,
+          VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+         {HARNESS_BUILD_BINDING_COUNTER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}},
+        cleanup);
+    k.sat_set_layout = create_set_layout(
+        context,
+        {{HARNESS_BUILD_BINDING_LEVEL0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+         {HARNESS_BUILD_BINDING_SAT_LOW, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+         {HARNESS_BUILD_BINDING_SAT_HIGH, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+         {HARNESS_BUILD_BINDING_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}},
+        cleanup);
+    k.mip_layout = create_layout(context, k.mip_set_layout, cleanup);
+    k.sat_layout = create_layout(context, k.sat_set_layout, cleanup);
+    k.mip = create_compute_pipeline(context, {build_mip_comp, sizeof(build_mip_comp)}, k.mip_layout, Filter::nearest,
+                                    cleanup);
+    k.exact_sat = context.info.shader_float64;
+    const SpirvWords fp32 = build_sat_spirv_fp32();
+    const ShaderCode sat = k.exact_sat ? ShaderCode{build_sat_comp, sizeof(build_sat_comp)}
+                                       : ShaderCode{fp32.words, fp32.bytes};
+    k.sat = create_compute_pipeline(context, sat, k.sat_layout, Filter::nearest, cleanup);
+    return k;
+}
+
+MipBuildTarget create_mip_build_target(const VulkanContext& context, const GpuBuildKernels& kernels, VkImage image,
+                                       int width, int height, Cleanup& cleanup)
+{
+    const int limit = int(std::min<uint32_t>(context.info.max_image_dimension_2d, 1u << (HARNESS_MIP_MAX_LEVELS - 1)));
+    if (width < 1 || height < 1 || width > limit || height > limit)
+        throw Error("GPU MIP build: texture " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is outside 1.." + std::to_string(limit) + " a side (maxImageDimension2D of " + context.info.name +
+                    ", at most 16384)");
+    MipBuildTarget t;
+    t.width = width;
+    t.height = height;
+    t.levels = mip_level_count(width, height);
+    t.plan = plan_mip_build(width, height);
+    for (int l = 0; l < t.levels; ++l)
+        t.level_views.push_back(create_level_view(context, image, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(l), cleanup));
+    t.counter = create_device_buffer(context, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    cleanup.add([&context, buffer = t.counter]() mutable { destroy_buffer(context, buffer); });
+    t.set = allocate_set(context, kernels.mip_set_layout,
+                         {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, HARNESS_MIP_MAX_LEVELS},
+                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}},
+                         t.pool, cleanup);
+    // Every element of the array is written (views past the last level repeat level 0: never stored to).
+    std::array<VkDescriptorImageInfo, HARNESS_MIP_MAX_LEVELS> images{};
+    for (size_t l = 0; l < images.size(); ++l)
+        images[l] = {VK_NULL_HANDLE, t.level_views[l < t.level_views.size() ? l : 0], VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorBufferInfo counter{t.counter.buffer, 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet writes[2]{{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}, {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
+    writes[0].dstSet = t.set;
+    writes[0].dstBinding = HARNESS_BUILD_BINDING_LEVELS;
+    writes[0].descriptorCount = HARNESS_MIP_MAX_LEVELS;
+    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    writes[0].pImageInfo = images.data();
+    writes[1].dstSet = t.set;
+    writes[1].dstBinding = HARNESS_BUILD_BINDING_COUNTER;
+    writes[1].descriptorCount = 1;
+    writes[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[1].pBufferInfo = &counter;
+    vkUpdateDescriptorSets(context.device, 2, writes, 0, nullptr);
+    return t;
+}
+
+void record_mip_build(VkCommandBuffer cb, const GpuBuildKernels& kernels, const MipBuildTarget& target)
+{
+    if (target.plan.empty())
+        return; // 1x1: level 0 is the chain
+    vkCmdFillBuffer(cb, target.counter.buffer, 0, VK_WHOLE_SIZE, 0u);
+    transfer_to_compute(cb);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, kernels.mip);
+    vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, kernels.mip_layout, 0, 1, &target.set, 0, nullptr);
+    for (size_t i = 0; i < target.plan.size(); ++i) {
+        const MipBuildPass& pass = target.plan[i];
+        if (i > 0)
+            compute_to_compute(cb); // the pass reads the level the last one wrote
+        const BuildPush push{{target.width, target.height}, pass.source_level, pass.levels, pass.tail ? 1 : 0, {}};
+        vkCmdPushConstants(cb, kernels.mip_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+        vkCmdDispatch(cb, uint32_t(pass.groups_x), uint32_t(pass.groups_y), 1);
+    }
+}
+
+SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBuildKernels& kernels,
+                                       VkImageView level0_view, int width, int height, Cleanup& cleanup)
+{
+    if (width < 1 || height < 1 || width > sat_max_dimension || height > sat_max_dimension)
+        throw Error("GPU summed-area table: texture " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is outside 1.." + std::to_string(sat_max_dimension) +
+                    " a side (40-bit sums are exact only up to 4096x4096 texels of 16 bits)");
+    if (uint32_t(width) + 1 > context.info.max_image_dimension_2d || uint32_t(height) + 1 > context.info.max_image_dimension_2d)
+        throw Error("the summed-area table of a " + std::to_string(width) + "x" + std::to_string(height) +
+                    " texture needs one more texel a side than maxImageDimension2D = " +
+                    std::to_string(context.info.max_image_dimension_2d));
+    SatBuildTarget t;
+    t.width = width;
+    t.height = height;
+    const uint32_t tw = uint32_t(width) + 1, th = uint32_t(height) + 1;
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    Cleanup on_failure; // the images are the caller's once the target is whole
+    on_failure.add([&] {
+        destroy_image(context, t.low);
+        destroy_image(context, t.high);
+    });
+    t.low = create_image(context, VK_FORMAT_R32G32B32A32_UINT, tw, th, 1, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+    t.high = create_image(context, VK_FORMAT_R32_UINT, tw, th, 1, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+    const VkDeviceSize range_bytes = sat_range_words * sizeof(uint32_t);
+    t.range = create_device_buffer(context, range_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                             VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    cleanup.add([&context, buffer = t.range]() mutable { destroy_buffer(context, buffer); });
+    t.readback = create_host_buffer(context, range_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    cleanup.add([&context, buffer = t.readback]() mutable { destroy_buffer(context, buffer); });
+    t.set = allocate_set(context, kernels.sat_set_layout,
+                         {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 3}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}}, t.pool,
+                         cleanup);
+    const VkDescriptorImageInfo images[3] = {{VK_NULL_HANDLE, level0_view, VK_IMAGE_LAYOUT_GENERAL},
+                                             {VK_NULL_HANDLE, t.low.view, VK_IMAGE_LAYOUT_GENERAL},
+                                             {VK_NULL_HANDLE, t.high.view, VK_IMAGE_LAYOUT_GENERAL}};
+    const VkDescriptorBufferInfo range{t.range.buffer, 0, range_bytes};
+    VkWriteDescriptorSet writes[4];
+    const uint32_t bindings[3] = {HARNESS_BUILD_BINDING_LEVEL0, HARNESS_BUILD_BINDING_SAT_LOW,
+                                  HARNESS_BUILD_BINDING_SAT_HIGH};
+    for (int i = 0; i < 4; ++i) {
+        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[i].dstSet = t.set;
+        writes[i].descriptorCount = 1;
+        if (i < 3) {
+            writes[i].dstBinding = bindings[i];
+            writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+            writes[i].pImageInfo = &images[i];
+        } else {
+            writes[i].dstBinding = HARNESS_BUILD_BINDING_RANGE;
+            writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+            writes[i].pBufferInfo = &range;
+        }
+    }
+    vkUpdateDescriptorSets(context.device, 4, writes, 0, nullptr);
+    on_failure.dismiss();
+    return t;
+}
+
+void record_sat_layouts(VkCommandBuffer cb, const SatBuildTarget& target)
+{
+    for (VkImage image : {target.low.image, target.high.image})
+        image_barrier(cb, image, 1, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+}
+
+void record_sat_build(VkCommandBuffer cb, const GpuBuildKernels& kernels, const SatBuildTarget& target)
+{
+    const std::array<uint32_t, sat_range_words> initial = sat_range_initial();
+    vkCmdUpdateBuffer(cb, target.range.buffer, 0, sizeof initial, initial.data());
+    transfer_to_compute(cb);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, kernels.sat);
+    vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, kernels.sat_layout, 0, 1, &target.set, 0, nullptr);
+    const uint32_t texels = uint32_t(target.width) * uint32_t(target.height);
+    const uint32_t per_group = 256u * 16u; // TF_SAT_GROUP_SIZE x TF_SAT_RANGE_TEXELS
+    const uint32_t groups[3] = {(texels + per_group - 1) / per_group, uint32_t(target.height) + 1,
+                                (uint32_t(target.width) + 1 + 15) / 16};
+    const int passes[3] = {HARNESS_SAT_PASS_RANGE, HARNESS_SAT_PASS_ROWS, HARNESS_SAT_PASS_COLUMNS};
+    for (int i = 0; i < 3; ++i) {
+        if (i > 0)
+            compute_to_compute(cb);
+        const BuildPush push{{target.width, target.height}, passes[i], 0, 0, {}};
+        vkCmdPushConstants(cb, kernels.sat_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+        vkCmdDispatch(cb, groups[i], 1, 1);
+    }
+    // The range words to the host (the filters' offset and scale).
+    memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                   VK_PIPELINE_STAGE_TRANSFER_BIT);
+    const VkBufferCopy copy{0, 0, sat_range_words * sizeof(uint32_t)};
+    vkCmdCopyBuffer(cb, target.range.buffer, target.readback.buffer, 1, &copy);
+    memory_barrier(cb, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                   VK_PIPELINE_STAGE_HOST_BIT);
+}
+
+void read_sat_range(const SatBuildTarget& target, const std::string& texture_name, glm::vec4& offset,
+                    glm::vec4& scale)
+{
+    std::array<uint32_t, sat_range_words> words{};
+    std::memcpy(words.data(), target.readback.mapped, sizeof words);
+    sat_range_offset_scale(words, target.width, texture_name, offset, scale);
+}
+
+} // namespace tf

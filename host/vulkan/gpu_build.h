@@ -1,0 +1,74 @@
+#pragma once
+// What the filters read, built on the device: the MIP chain (build_mip.comp.glsl, the passes of
+// tf::plan_mip_build) and the summed-area table (build_sat.comp.glsl), recorded into the caller's command
+// buffer, so a texture made on the GPU can be built and filtered in one submission.
+#include "texture/mip.h"
+#include "texture/sat.h"
+#include "vulkan/cleanup.h"
+#include "vulkan/image.h"
+#include "vulkan/resources.h"
+#include <glm/vec4.hpp>
+#include <string>
+#include <vector>
+
+namespace tf {
+
+// The two build pipelines of one device. exact_sat: the SAT quantises in double (shaderFloat64), so its
+// tables equal tf::build_sat's bit for bit; without doubles it quantises in float (within one level).
+struct GpuBuildKernels {
+    VkDescriptorSetLayout mip_set_layout = VK_NULL_HANDLE, sat_set_layout = VK_NULL_HANDLE;
+    VkPipelineLayout mip_layout = VK_NULL_HANDLE, sat_layout = VK_NULL_HANDLE;
+    VkPipeline mip = VK_NULL_HANDLE, sat = VK_NULL_HANDLE;
+    bool exact_sat = false;
+};
+GpuBuildKernels create_gpu_build_kernels(const VulkanContext& context, Cleanup& cleanup);
+
+// The usage an RGBA32F chain image needs to be built in place (and copied from, and sampled).
+constexpr VkImageUsageFlags gpu_build_chain_usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                                    VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+
+// An RGBA32F image of width x height with every level (gpu_build_chain_usage), its per-level storage views
+// and the descriptor set the MIP build binds.
+struct MipBuildTarget {
+    int width = 0, height = 0, levels = 0;
+    std::vector<MipBuildPass> plan;
+    std::vector<VkImageView> level_views; // one storage view a level; [0] is what the SAT build reads
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    Buffer counter; // the tail's group counter (device-local, cleared by each build)
+};
+// Throws tf::Error for a side outside 1..maxImageDimension2D or above 16384 (the shader's 15 views).
+MipBuildTarget create_mip_build_target(const VulkanContext& context, const GpuBuildKernels& kernels, VkImage image,
+                                       int width, int height, Cleanup& cleanup);
+
+// Before: level 0 written and made visible to compute-shader reads, every level in GENERAL layout.
+// After: levels 1.. written by compute shaders (the caller's barrier makes them visible to its reads).
+void record_mip_build(VkCommandBuffer command_buffer, const GpuBuildKernels& kernels, const MipBuildTarget& target);
+
+// The two table images (RGBA32UI low words, R32UI high bytes; storage + sampled), the range words and the
+// descriptor set of a SAT build reading `level0_view` (a storage view of an RGBA32F level 0, GENERAL).
+struct SatBuildTarget {
+    int width = 0, height = 0;
+    GpuImage low, high;
+    Buffer range;    // device-local, the shader's TF_SAT_RANGE
+    Buffer readback; // host-visible copy of it, written by record_sat_build
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+};
+// Throws tf::Error for a side outside 1..sat_max_dimension. Everything but the two images goes with the
+// cleanup; the images are the caller's (destroy_image, or hand them on to a GpuTexture).
+SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBuildKernels& kernels,
+                                       VkImageView level0_view, int width, int height, Cleanup& cleanup);
+
+// Before: level 0 written and visible to compute-shader reads, low and high in GENERAL layout (as
+// record_sat_layouts leaves them). After: both tables written by compute shaders, and the range words
+// copied to target.readback and made visible to the host.
+void record_sat_layouts(VkCommandBuffer command_buffer, const SatBuildTarget& target);
+void record_sat_build(VkCommandBuffer command_buffer, const GpuBuildKernels& kernels, const SatBuildTarget& target);
+
+// Once the submission has completed: the table's offset and scale (sat_range_offset_scale: throws naming
+// `texture_name` for a non-finite texel).
+void read_sat_range(const SatBuildTarget& target, const std::string& texture_name, glm::vec4& offset,
+                    glm::vec4& scale);
+
+} // namespace tf
