@@ -63,6 +63,7 @@ call_for() {
     ewa) echo "tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_ewa_hw(tex, uv, dx, dy, s, 2.0, 16.0)" ;;
     sat) echo "tf_sat(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0)) + tf_sat_assembly(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0), 4)" ;;
     debug) echo "vec4(tf_debug_lod_color(tf_debug_footprint(uv, dx, dy, vec2(textureSize(tex, 0)), textureQueryLevels(tex), s, TF_DEBUG_ANISO, 16, TF_ANISO_GPU, 16.0).lod) + tf_debug_anisotropy_color(tf_debug_anisotropy(dx, dy, vec2(64.0))) + tf_debug_heat(uv.x, 8.0), 1.0) + vec4(tf_debug_aniso_probe(uv, dx, dy, vec2(64.0), 8, TF_ANISO_FELINE, tf_debug_aniso_probe_count(dx, dy, vec2(64.0), 8, TF_ANISO_FELINE) - 1), 0.0, 0.0)" ;;
+    encode) echo "vec4(float(tf_mip_srgb8(uv.x)), float(tf_mip_unorm8(uv.y)), float(tf_mip_half(dx.x)), 0.0)" ;;
     texfilter) echo "tf_trilinear(tex, uv, dx, dy, s) + tf_nearest_mip(tex, uv, dx, dy, s) + tf_brilinear(tex, uv, dx, dy, s, 0.25) + tf_aniso(tex, uv, dx, dy, s, 16, TF_ANISO_GPU) + tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_sat(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0)) + vec4(tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).dUVdy, 0.0, 0.0)" ;;
     *) return 1 ;;
     esac
@@ -234,10 +235,77 @@ check_internal() {
     fi
 }
 
+# The GPU builders (build_mip, build_sat) are compute-only and read and write through macros the user
+# defines before including them: each is compiled in a compute shader of its own, as docs/API.md shows,
+# at 450 and 460, and included twice; on its own (no macros) it must refuse with its #error.
+builder_files=(build_mip build_sat)
+builder_prelude() {
+    case "$1" in
+    build_mip) cat <<'EOF2'
+layout(set = 0, binding = 0, rgba16f) uniform coherent image2D chain[15];
+layout(set = 0, binding = 1, std430) coherent buffer Counter { uint groupsDone; };
+#define TF_MIP_LOAD(level, p) imageLoad(chain[level], p)
+#define TF_MIP_STORE(level, p, v) imageStore(chain[level], p, v)
+#define TF_MIP_COUNTER groupsDone
+EOF2
+        ;;
+    build_sat) cat <<'EOF2'
+layout(set = 0, binding = 0) uniform sampler2D level0;
+layout(set = 0, binding = 1, rgba32ui) uniform uimage2D satLow;
+layout(set = 0, binding = 2, r32ui) uniform writeonly uimage2D satHigh;
+layout(set = 0, binding = 3, std430) buffer Range { uint words[9]; } range;
+#define TF_SAT_LOAD(p) texelFetch(level0, p, 0)
+#define TF_SAT_LOAD_LOW(e) imageLoad(satLow, e)
+#define TF_SAT_STORE_LOW(e, v) imageStore(satLow, e, v)
+#define TF_SAT_STORE_HIGH(e, v) imageStore(satHigh, e, uvec4(v))
+#define TF_SAT_RANGE range.words
+EOF2
+        ;;
+    esac
+}
+builder_main() {
+    case "$1" in
+    build_mip) echo "layout(local_size_x = TF_MIP_GROUP_SIZE) in; void main() { tf_build_mip_pass(0, 6, true, ivec2(256)); }" ;;
+    build_sat) echo "layout(local_size_x = TF_SAT_GROUP_SIZE) in; void main() { tf_sat_range_pass(ivec2(64)); tf_sat_rows_pass(ivec2(64)); tf_sat_columns_pass(ivec2(64)); }" ;;
+    esac
+}
+check_builder() {
+    local file=$1 name=$2 version count shader
+    check_layout "$file" "$name"
+    for version in 450 460; do
+        for count in 1 2; do
+            shader="$WORK/builder_${name}_${version}_${count}.comp"
+            {
+                echo "#version $version"
+                echo "#extension GL_GOOGLE_include_directive : require"
+                builder_prelude "$name"
+                for ((i = 0; i < count; ++i)); do echo "#include \"texfilter/$name.glsl\""; done
+                builder_main "$name"
+            } >"$shader"
+            compile "$version comp $name.glsl$([[ $count == 2 ]] && echo ' included twice')" "$shader"
+        done
+    done
+    shader="$WORK/builder_${name}_alone.comp"
+    printf '#version 450\n#extension GL_GOOGLE_include_directive : require\n#include "texfilter/%s.glsl"\nvoid main() {}\n' \
+        "$name" >"$shader"
+    local out
+    out=$("$GLSLANG" -V -S comp -I"$INCLUDE_DIR" "$shader" -o "$WORK/alone.spv" 2>&1 || true)
+    if [[ ! -e $WORK/alone.spv && $out == *"define TF_"* ]]; then
+        printf 'ok    %-17s %s\n' "alone" "$name.glsl without its macros says which to define"
+    else
+        printf 'FAIL  %-17s %s\n' "alone" "$name.glsl compiled, or failed without naming its macros, on its own"
+        failures=$((failures + 1))
+    fi
+}
+
 for file in "${includes[@]}"; do
     name=$(basename "$file" .glsl)
     if [[ " ${internal_files[*]} " == *" $name "* ]]; then
         check_internal "$file" "$name"
+        continue
+    fi
+    if [[ " ${builder_files[*]} " == *" $name "* ]]; then
+        check_builder "$file" "$name"
         continue
     fi
     if ! call_for "$name" frag >/dev/null; then

@@ -135,7 +135,7 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
     run.texture_width = chain.levels[0].width;
     run.texture_height = chain.levels[0].height;
     const int texture_width = run.texture_width;
-    with_texture(context, chain, true, config.texture.format, [&](const GpuTexture& texture) {
+    with_texture(context, chain, true, config.texture.format, config.texture.build, [&](const GpuTexture& texture) {
         for (SceneKind kind : config.scenes) {
             SceneParams scene = make_scene(kind, config.width, config.height, texture_width);
             RenderOptions render = render_options_for(kind, config.stage);

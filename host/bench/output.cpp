@@ -31,6 +31,8 @@ Json config_json(const BenchRun& run)
             {"height", c.height},
             {"stage", to_string(c.stage)},
             {"texture", c.texture.name_or_path},
+            {"format", to_string(c.texture.format)},
+            {"build", to_string(c.texture.build)},
             {"texture_size", run.texture_width}, // level 0's width, as loaded (procedural: --texture-size)
             {"texture_height", run.texture_height},
             {"spp", c.truth_side * c.truth_side},

@@ -93,6 +93,7 @@ int run_bench(const std::vector<std::string>& argv)
           {"--memory-budget", "SIZE", "most host memory the texture may take (512M, 8G; default: half of physical memory)"},
           {"--format", "F", "what the texture is uploaded as: " + texture_format_names() +
                                 " (default rgba32f; integer formats need --filters without hardware filtering)"},
+          {"--build", "B", "cpu (default: the host builds the MIP chain and SAT) or gpu (the device builds them from level 0)"},
           {"--spp", "N", "ground truth samples a pixel, a square number (default 256)"},
           {"--truth-backend", "B", "vulkan (default: the device) or reference (the CPU, in double)"},
           {"--warmup", "N", "untimed frames before timing (default 5)"},
@@ -126,6 +127,9 @@ int run_bench(const std::vector<std::string>& argv)
     if (args.has("--memory-budget"))
         config.texture.memory_budget = parse_flag(args, "--memory-budget", "", parse_byte_size);
     config.texture.format = parse_flag(args, "--format", "rgba32f", parse_texture_format);
+    config.texture.build = parse_flag(args, "--build", "cpu", parse_texture_build);
+    if (config.texture.build == TextureBuild::gpu)
+        check_gpu_build(config.texture.format, config.texture.name_or_path);
     config.truth_side = parse_flag(args, "--spp", config.quick ? "64" : "256", parse_spp_side);
     std::string truth = args.get("--truth-backend", "vulkan");
     if (truth != "vulkan" && truth != "reference")

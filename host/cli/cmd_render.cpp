@@ -72,9 +72,11 @@ int run_render(const std::vector<std::string>& argv)
     const bool sat = needs_sat(options.filter);
     // No MipChain on the host: an RGBA32F file's levels are built in the staging buffer (other formats are
     // rounded level by level on the host, from the whole chain).
-    const bool streamed = device.gpu && streams_level0(source) && !sat && source.format == TextureFormat::rgba32f;
+    const bool streamed = device.gpu && streams_level0(source) && !sat && source.format == TextureFormat::rgba32f &&
+                          source.build == TextureBuild::cpu;
     TextureUse use = device.texture_use(sat);
     use.streamed = streamed;
+    use.level0_only = source.build == TextureBuild::gpu; // the device builds the rest
     // Every path checks the texture (size, budget, device limits) once, before decoding it.
     std::optional<MipChain> chain;
     TextureSize size;
@@ -99,7 +101,7 @@ int run_render(const std::vector<std::string>& argv)
                                       [&](glm::vec4* texels) { read_level0(source, size, texels); }, draw);
         gpu->finish();
     } else {
-        image = with_texture(gpu->context, *chain, sat, source.format, draw);
+        image = with_texture(gpu->context, *chain, sat, source.format, source.build, draw);
         gpu->finish();
     }
     write_image(out, image);

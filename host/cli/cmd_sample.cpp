@@ -65,6 +65,9 @@ int run_sample(const std::vector<std::string>& argv)
     check_format_filter(source.format, options); // integer data and hardware filtering, before any work
     // The other resource kinds upload their images as RGBA32F (layers, bindless elements) or D32_SFLOAT
     // (shadow): a rounded format would reach the shader through the wrong descriptor type.
+    if (resource.resource != Resource::combined && source.build == TextureBuild::gpu)
+        throw Error("--build gpu is for --resource combined; --resource " + to_string(resource.resource) +
+                    " builds its layers and depth maps on the host");
     if (resource.resource != Resource::combined && source.format != TextureFormat::rgba32f)
         throw Error("--format " + to_string(source.format) + " is for --resource combined; --resource " +
                     to_string(resource.resource) + " uploads RGBA32F (shadow: D32_SFLOAT)");
@@ -76,7 +79,9 @@ int run_sample(const std::vector<std::string>& argv)
     CommandDevice device = open_command_device(backend, args);
     if (device.gpu)
         check_format_support(device.gpu->context, source.format, options);
-    MipChain chain = load_texture(source, device.texture_use(needs_sat(options.filter)));
+    TextureUse use = device.texture_use(needs_sat(options.filter));
+    use.level0_only = source.build == TextureBuild::gpu;
+    MipChain chain = load_texture(source, use);
     GpuSession* gpu = device.gpu.get();
 
     std::vector<glm::dvec4> colors;
@@ -88,7 +93,8 @@ int run_sample(const std::vector<std::string>& argv)
     } else if (!gpu) {
         colors = reference_sample_all(chain, lookups, options);
     } else {
-        std::vector<glm::vec4> results = with_texture(gpu->context, chain, needs_sat(options.filter), source.format, [&](auto& t) {
+        std::vector<glm::vec4> results = with_texture(gpu->context, chain, needs_sat(options.filter), source.format,
+                                                      source.build, [&](auto& t) {
             return gpu_sample(gpu->context, t, lookups, options, &stats);
         });
         gpu->finish();

@@ -13,6 +13,8 @@ std::vector<FlagSpec> texture_flags()
             {"--linear", "", "the image file holds data/linear values: no sRGB decode"},
             {"--format", "F", "what the texture is uploaded as: " + texture_format_names() +
                                   " (default rgba32f; every level rounded to it, on both backends)"},
+            {"--build", "B", "where the MIP chain and summed-area table are built: cpu (the host, default) or gpu "
+                             "(level 0 uploaded, the rest built by the device; --backend vulkan)"},
             {"--memory-budget", "SIZE", "most host memory a texture may take (512M, 8G; default: half of physical "
                                         "memory); checked from the file's header before decoding"}};
 }
@@ -76,6 +78,12 @@ TextureSource texture_source_from(const Args& args)
     source.procedural_size = args.get_int("--texture-size", 256, 1, max_texture_dimension);
     source.color = args.has("--linear") ? ColorSpace::linear : ColorSpace::automatic;
     source.format = parse_flag(args, "--format", "rgba32f", parse_texture_format);
+    source.build = parse_flag(args, "--build", "cpu", parse_texture_build);
+    if (source.build == TextureBuild::gpu) {
+        check_gpu_build(source.format, source.name_or_path);
+        if (args.get("--backend", "vulkan") == "reference")
+            throw Error("--build gpu builds on the Vulkan device: it needs --backend vulkan (the reference builds on the host)");
+    }
     if (args.has("--memory-budget"))
         source.memory_budget = parse_flag(args, "--memory-budget", "", parse_byte_size);
     return source;

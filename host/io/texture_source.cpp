@@ -43,10 +43,17 @@ void read_level0(const TextureSource& source, TextureSize size, glm::vec4* texel
 MipChain load_texture(const TextureSource& source, const TextureUse& use)
 {
     check_texture(source, use);
-    MipChain chain = is_procedural(source.name_or_path)
-                         ? make_procedural(source.name_or_path, source.procedural_size)
-                         : build_mip_chain(read_image(source.name_or_path, source.color, max_texture_dimension));
-    quantise_chain(chain, source.format); // before the table: the SAT sums the texels the format stores
+    MipChain chain;
+    if (is_procedural(source.name_or_path))
+        chain = make_procedural(source.name_or_path, source.procedural_size);
+    else if (use.level0_only)
+        chain.levels.push_back(read_image(source.name_or_path, source.color, max_texture_dimension));
+    else
+        chain = build_mip_chain(read_image(source.name_or_path, source.color, max_texture_dimension));
+    if (use.level0_only)
+        chain.levels.resize(1);
+    if (!use.level0_only) // level 0 alone stays as decoded: the GPU build rounds each level as the host would
+        quantise_chain(chain, source.format); // before the table: the SAT sums the texels the format stores
     if (use.sat) // NaN/Inf texels have no place in an integer table: refused here, naming the texture
         check_sat_texels(chain.levels[0], source.name_or_path);
     return chain;

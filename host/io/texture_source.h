@@ -2,6 +2,7 @@
 // Where a texture comes from: a procedural name (checker, zoneplate, ...) or an image file.
 #include "io/image_io.h"
 #include "core/memory_budget.h"
+#include "core/texture_build.h"
 #include "core/texture_format.h"
 #include "texture/mip.h"
 #include <cstdint>
@@ -17,6 +18,9 @@ struct TextureSource {
     // --format: what the upload stores; load_texture rounds every level to it (quantise_chain), so the
     // CPU reference reads the texels the device does.
     TextureFormat format = TextureFormat::rgba32f;
+    // --build: cpu builds the MIP chain (and SAT) on the host and uploads every level; gpu uploads level 0 and
+    // the device builds the rest (core/texture_build.h).
+    TextureBuild build = TextureBuild::cpu;
 };
 
 // What the texture will be used for, which decides how much memory loading it takes.
@@ -24,6 +28,9 @@ struct TextureUse {
     bool sat = false;                      // a summed-area table is built (sat, sat-assembly): at most 4096 a side
     const DeviceLimits* device = nullptr;  // uploaded to this Vulkan device (and a staging copy on the host)
     bool streamed = false;                 // with a device: level 0 decoded into staging (read_level0), no MipChain
+    // load_texture gives level 0 alone, as decoded, not rounded to the format (--build gpu: the upload rounds
+    // it, and the device builds the other levels from the unrounded texels, as build_mip_chain does).
+    bool level0_only = false;
 };
 
 // The largest texture side accepted from a file before any device is asked (Vulkan guarantees 4096;

@@ -17,7 +17,8 @@ bool same_half(const HalfImage& half, const SamplerOptions& options, const Rende
 
 bool same_texture(const TextureSource& a, const TextureSource& b)
 {
-    return a.name_or_path == b.name_or_path && a.procedural_size == b.procedural_size && a.color == b.color;
+    return a.name_or_path == b.name_or_path && a.procedural_size == b.procedural_size && a.color == b.color &&
+           a.build == b.build;
 }
 
 SamplerOptions truth_options(const SamplerOptions& a) { return truth_half(ViewHalf{a}).options; }
@@ -70,6 +71,7 @@ std::string apply_state(Viewer& v, const ViewState& requested)
             DeviceLimits limits = device_limits(v.context.info);
             MipChain chain = load_texture(next.texture, {needs_sat(next), &limits});
             v.state.texture = next.texture;
+            im.build = next.texture.build;
             set_texture(im, std::move(chain));
         } catch (const Error& e) {
             if (first)

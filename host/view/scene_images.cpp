@@ -77,7 +77,8 @@ void destroy_scene_images(SceneImages& images)
 void set_texture(SceneImages& images, MipChain chain)
 {
     const bool sat = half_needs_sat(images.a) || (images.has_b && half_needs_sat(images.b));
-    GpuTexture uploaded = upload_texture(*images.context, chain, sat); // first: a failure keeps the old one
+    // First: a failure keeps the old one.
+    GpuTexture uploaded = upload_texture(*images.context, chain, sat, TextureFormat::rgba32f, images.build);
     for (HalfImage* h : {&images.a, &images.b, &images.truth, &images.stats}) {
         h->renderers.clear(); // their descriptor sets name the old images
         start_over(*h);

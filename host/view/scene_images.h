@@ -32,7 +32,8 @@ struct HalfImage {
 
 struct SceneImages {
     const VulkanContext* context = nullptr;
-    MipChain chain;
+    MipChain chain;      // the host's chain (the CPU side: the truth's texels, the loupe)
+    TextureBuild build = TextureBuild::cpu; // --build: gpu uploads level 0 and the device builds the rest
     GpuTexture texture;
     bool texture_has_sat = false;
     HalfImage a, b, truth;

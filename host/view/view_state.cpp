@@ -268,6 +268,8 @@ std::vector<std::string> render_flag_words(const ViewState& state, const ViewHal
         words.push_back("--linear");
     if (state.texture.memory_budget != 0)
         words.insert(words.end(), {"--memory-budget", std::to_string(state.texture.memory_budget)});
+    if (state.texture.build == TextureBuild::gpu)
+        words.insert(words.end(), {"--build", "gpu"});
     const std::vector<std::string> sampler = sampler_flag_words(half.options);
     words.insert(words.end(), sampler.begin(), sampler.end());
     words.insert(words.end(), {"--size", std::to_string(state.width) + "x" + std::to_string(state.height), "--stage",
@@ -317,7 +319,8 @@ std::string state_to_json(const ViewState& state)
                {{"name", state.texture.name_or_path},
                 {"size", state.texture.procedural_size},
                 {"linear", state.texture.color == ColorSpace::linear},
-                {"memory-budget", state.texture.memory_budget}}},
+                {"memory-budget", state.texture.memory_budget},
+                {"build", to_string(state.texture.build)}}},
               {"render", {{"stage", to_string(state.render.stage)}, {"derivatives", to_string(state.render.gradients)}}},
               {"width", state.width},
               {"height", state.height},
@@ -347,7 +350,7 @@ ViewState state_from_json(const std::string& text, const std::string& name)
     s.scene = r.parsed("scene", [&] { return parse_scene(r.string(r.member(j, "scene", "scene"), "scene")); });
 
     const json& texture = r.member(j, "texture", "texture");
-    r.only(texture, "texture", {"name", "size", "linear", "memory-budget"});
+    r.only(texture, "texture", {"name", "size", "linear", "memory-budget", "build"});
     s.texture.name_or_path = r.string(r.member(texture, "texture.name", "name"), "texture.name");
     if (s.texture.name_or_path.empty())
         r.fail("texture.name", "empty (a procedural name or an image file)");
@@ -358,6 +361,9 @@ ViewState state_from_json(const std::string& text, const std::string& name)
             r.fail("texture.linear", "expected true or false, got " + texture["linear"].dump());
         s.texture.color = texture["linear"].get<bool>() ? ColorSpace::linear : ColorSpace::automatic;
     }
+    if (texture.contains("build"))
+        s.texture.build = r.parsed("texture.build",
+                                   [&] { return parse_texture_build(r.string(texture["build"], "texture.build")); });
     if (texture.contains("memory-budget")) {
         const json& budget = texture["memory-budget"];
         if (!budget.is_number_unsigned() && !(budget.is_number_integer() && budget.get<long long>() >= 0))

@@ -11,6 +11,7 @@
 
 #include "build_mip_comp.h"
 #include "build_sat_comp.h"
+#include "pack_level_comp.h"
 
 namespace tf {
 
@@ -41,6 +42,7 @@ VkDescriptorSetLayout create_set_layout(const VulkanContext& context,
 
 VkPipelineLayout create_layout(const VulkanContext& context, VkDescriptorSetLayout set_layout, Cleanup& cleanup)
 {
+    static_assert(sizeof(BuildPush) == sizeof(PackPush));
     VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(BuildPush)};
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     info.setLayoutCount = 1;
@@ -128,6 +130,18 @@ GpuBuildKernels create_gpu_build_kernels(const VulkanContext& context, Cleanup& 
     const ShaderCode sat = k.exact_sat ? ShaderCode{build_sat_comp, sizeof(build_sat_comp)}
                                        : ShaderCode{fp32.words, fp32.bytes};
     k.sat = create_compute_pipeline(context, sat, k.sat_layout, Filter::nearest, cleanup);
+    if (context.info.storage_write_without_format) {
+        k.pack_set_layout = create_set_layout(
+            context,
+            {{HARNESS_BUILD_BINDING_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, HARNESS_MIP_MAX_LEVELS,
+              VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+             {HARNESS_BUILD_BINDING_CODES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, HARNESS_MIP_MAX_LEVELS,
+              VK_SHADER_STAGE_COMPUTE_BIT, nullptr}},
+            cleanup);
+        k.pack_layout = create_layout(context, k.pack_set_layout, cleanup);
+        k.pack = create_compute_pipeline(context, {pack_level_comp, sizeof(pack_level_comp)}, k.pack_layout,
+                                         Filter::nearest, cleanup);
+    }
     return k;
 }
 
@@ -283,6 +297,84 @@ void record_sat_build(VkCommandBuffer cb, const GpuBuildKernels& kernels, const 
     vkCmdCopyBuffer(cb, target.range.buffer, target.readback.buffer, 1, &copy);
     memory_barrier(cb, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                    VK_PIPELINE_STAGE_HOST_BIT);
+}
+
+namespace {
+
+VkFormat code_format(TextureFormat format)
+{
+    const FormatInfo& info = format_info(format);
+    if (info.channels == 4)
+        return info.bits == 8 ? VK_FORMAT_R8G8B8A8_UINT : info.bits == 16 ? VK_FORMAT_R16G16B16A16_UINT
+                                                                          : VK_FORMAT_R32G32B32A32_UINT;
+    return info.bits == 8 ? VK_FORMAT_R8_UINT : info.bits == 16 ? VK_FORMAT_R16_UINT : VK_FORMAT_R32_UINT;
+}
+
+int encoding_id(ChannelEncoding encoding)
+{
+    switch (encoding) {
+    case ChannelEncoding::float16: return HARNESS_ENCODING_FLOAT16;
+    case ChannelEncoding::unorm8: return HARNESS_ENCODING_UNORM8;
+    case ChannelEncoding::srgb8: return HARNESS_ENCODING_SRGB8;
+    default: return HARNESS_ENCODING_FLOAT32;
+    }
+}
+
+} // namespace
+
+bool pack_supported(const VulkanContext& context, const GpuBuildKernels& kernels, TextureFormat format)
+{
+    if (!kernels.pack || format_info(format).integer)
+        return false;
+    VkFormatProperties properties{};
+    vkGetPhysicalDeviceFormatProperties(context.physical, code_format(format), &properties);
+    return (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT) != 0;
+}
+
+PackTarget create_pack_target(const VulkanContext& context, const GpuBuildKernels& kernels, const MipBuildTarget& mip,
+                              VkImage format_image, TextureFormat format, Cleanup& cleanup)
+{
+    const FormatInfo& info = format_info(format);
+    PackTarget p;
+    p.code_format = code_format(format);
+    p.channels = info.channels;
+    p.encoding = encoding_id(info.encoding);
+    p.alpha_encoding = encoding_id(info.encoding == ChannelEncoding::srgb8 ? ChannelEncoding::unorm8 : info.encoding);
+    for (int l = 0; l < mip.levels; ++l)
+        p.code_views.push_back(create_level_view(context, format_image, p.code_format, uint32_t(l), cleanup));
+    p.set = allocate_set(context, kernels.pack_set_layout, {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2 * HARNESS_MIP_MAX_LEVELS}},
+                         p.pool, cleanup);
+    std::array<VkDescriptorImageInfo, HARNESS_MIP_MAX_LEVELS> levels{}, codes{};
+    // Level 0 and the entries past the last level are never stored to: they repeat level 1's views, which
+    // are in GENERAL while the pass runs (the layer checks every element's layout).
+    for (size_t l = 0; l < levels.size(); ++l) {
+        const size_t v = l >= 1 && l < p.code_views.size() ? l : std::min<size_t>(1, p.code_views.size() - 1);
+        levels[l] = {VK_NULL_HANDLE, mip.level_views[v], VK_IMAGE_LAYOUT_GENERAL};
+        codes[l] = {VK_NULL_HANDLE, p.code_views[v], VK_IMAGE_LAYOUT_GENERAL};
+    }
+    VkWriteDescriptorSet writes[2]{{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}, {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
+    for (int i = 0; i < 2; ++i) {
+        writes[i].dstSet = p.set;
+        writes[i].dstBinding = i == 0 ? HARNESS_BUILD_BINDING_LEVELS : HARNESS_BUILD_BINDING_CODES;
+        writes[i].descriptorCount = HARNESS_MIP_MAX_LEVELS;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        writes[i].pImageInfo = i == 0 ? levels.data() : codes.data();
+    }
+    vkUpdateDescriptorSets(context.device, 2, writes, 0, nullptr);
+    return p;
+}
+
+void record_pack_levels(VkCommandBuffer cb, const GpuBuildKernels& kernels, const PackTarget& pack,
+                        const MipBuildTarget& mip)
+{
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, kernels.pack);
+    vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, kernels.pack_layout, 0, 1, &pack.set, 0, nullptr);
+    for (int l = 1; l < mip.levels; ++l) {
+        const int w = std::max(1, mip.width >> l), h = std::max(1, mip.height >> l);
+        const PackPush push{{w, h}, l, pack.encoding, pack.alpha_encoding, pack.channels, {}};
+        vkCmdPushConstants(cb, kernels.pack_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+        vkCmdDispatch(cb, uint32_t(w + 15) / 16, uint32_t(h + 15) / 16, 1);
+    }
 }
 
 void read_sat_range(const SatBuildTarget& target, const std::string& texture_name, glm::vec4& offset,

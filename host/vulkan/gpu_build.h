@@ -2,6 +2,7 @@
 // What the filters read, built on the device: the MIP chain (build_mip.comp.glsl, the passes of
 // tf::plan_mip_build) and the summed-area table (build_sat.comp.glsl), recorded into the caller's command
 // buffer, so a texture made on the GPU can be built and filtered in one submission.
+#include "core/texture_format.h"
 #include "texture/mip.h"
 #include "texture/sat.h"
 #include "vulkan/cleanup.h"
@@ -20,8 +21,22 @@ struct GpuBuildKernels {
     VkPipelineLayout mip_layout = VK_NULL_HANDLE, sat_layout = VK_NULL_HANDLE;
     VkPipeline mip = VK_NULL_HANDLE, sat = VK_NULL_HANDLE;
     bool exact_sat = false;
+    // pack_level.comp.glsl: a level's codes into an integer view of the format's image, rounded as the host
+    // rounds them; null without shaderStorageImageWriteWithoutFormat (then levels are blitted).
+    VkDescriptorSetLayout pack_set_layout = VK_NULL_HANDLE;
+    VkPipelineLayout pack_layout = VK_NULL_HANDLE;
+    VkPipeline pack = VK_NULL_HANDLE;
 };
 GpuBuildKernels create_gpu_build_kernels(const VulkanContext& context, Cleanup& cleanup);
+
+// The push constants of pack_level.comp.glsl.
+struct PackPush {
+    int32_t size[2];
+    int32_t level;
+    int32_t encoding, alpha_encoding; // HARNESS_ENCODING_*
+    int32_t channels;
+    int32_t pad[2];
+};
 
 // The usage an RGBA32F chain image needs to be built in place (and copied from, and sampled).
 constexpr VkImageUsageFlags gpu_build_chain_usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
@@ -65,6 +80,27 @@ SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBu
 // copied to target.readback and made visible to the host.
 void record_sat_layouts(VkCommandBuffer command_buffer, const SatBuildTarget& target);
 void record_sat_build(VkCommandBuffer command_buffer, const GpuBuildKernels& kernels, const SatBuildTarget& target);
+
+// The format's levels 1.. from the RGBA32F chain, each code rounded as tf::pack_texels rounds it
+// (pack_level.comp.glsl), through integer views (R8G8B8A8_UINT, ...) of an image created with
+// gpu_pack_image_flags and STORAGE usage.
+struct PackTarget {
+    VkFormat code_format = VK_FORMAT_UNDEFINED;
+    std::vector<VkImageView> code_views; // one a level
+    int encoding = 0, alpha_encoding = 0, channels = 4; // HARNESS_ENCODING_*
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+};
+constexpr VkImageCreateFlags gpu_pack_image_flags = VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT | VK_IMAGE_CREATE_EXTENDED_USAGE_BIT;
+// Whether the device can store `format`'s codes (the pack pipeline exists and the integer view format
+// supports storage); else the levels are blitted (the device's own rounding).
+bool pack_supported(const VulkanContext& context, const GpuBuildKernels& kernels, TextureFormat format);
+PackTarget create_pack_target(const VulkanContext& context, const GpuBuildKernels& kernels, const MipBuildTarget& mip,
+                              VkImage format_image, TextureFormat format, Cleanup& cleanup);
+// Before: the chain's levels written and visible to compute reads; the format image's levels 1.. in GENERAL.
+// After: levels 1.. of the format image written by compute shaders.
+void record_pack_levels(VkCommandBuffer command_buffer, const GpuBuildKernels& kernels, const PackTarget& pack,
+                        const MipBuildTarget& mip);
 
 // Once the submission has completed: the table's offset and scale (sat_range_offset_scale: throws naming
 // `texture_name` for a non-finite texel).

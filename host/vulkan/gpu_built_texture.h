@@ -14,13 +14,16 @@ namespace tf {
 struct GpuBuild {
     GpuTexture texture;  // what the filters bind; its chain is `built` itself for RGBA32F
     GpuImage built;      // RGBA32F, every level, storage: where the levels are built
-    bool in_place = true; // texture.chain is built (else each level is blitted into the format)
+    bool in_place = true; // texture.chain is built (else each level is stored into the format:)
+    bool pack = false;    // by pack_level with the host's rounding (else blitted: the device's rounding)
+    PackTarget pack_target;
     bool with_sat = false;
     GpuBuildKernels kernels;
     MipBuildTarget mip;
     SatBuildTarget sat;
     Buffer staging;        // level 0 as RGBA32F, then packed in the format (no staging without level 0)
-    size_t float_bytes = 0;
+    size_t float_bytes = 0;    // staging: level 0 as given at 0, packed at float_bytes,
+    size_t rounded_offset = 0; // and rounded to the format (what the table sums) here
     std::shared_ptr<Cleanup> objects; // the build's own objects (not texture's images)
 };
 

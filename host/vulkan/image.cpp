@@ -7,13 +7,14 @@ namespace tf {
 
 GpuImage create_image(const VulkanContext& context, VkFormat format, uint32_t width, uint32_t height,
                       uint32_t levels, VkImageUsageFlags usage, VkImageAspectFlags aspect, uint32_t layers,
-                      VkImageViewType view_type)
+                      VkImageViewType view_type, VkImageCreateFlags flags)
 {
     VkDevice device = context.device;
     GpuImage g;
     Cleanup on_failure;
     on_failure.add([&] { destroy_image(context, g); });
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.flags = flags;
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = format;
     info.extent = {width, height, 1};
@@ -37,6 +38,10 @@ GpuImage create_image(const VulkanContext& context, VkFormat format, uint32_t wi
     g.memory_type = allocate.memoryTypeIndex;
     g.memory_size = allocate.allocationSize;
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    VkImageViewUsageCreateInfo view_usage{VK_STRUCTURE_TYPE_IMAGE_VIEW_USAGE_CREATE_INFO};
+    view_usage.usage = usage & ~VkImageUsageFlags(VK_IMAGE_USAGE_STORAGE_BIT);
+    if (flags & VK_IMAGE_CREATE_EXTENDED_USAGE_BIT)
+        view.pNext = &view_usage;
     view.image = g.image;
     view.viewType = view_type;
     view.format = format;

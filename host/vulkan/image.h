@@ -18,7 +18,9 @@ struct GpuImage {
 // Throws a tf::Error naming the size and the device when there is no memory for it.
 GpuImage create_image(const VulkanContext& context, VkFormat format, uint32_t width, uint32_t height,
                       uint32_t levels, VkImageUsageFlags usage, VkImageAspectFlags aspect, uint32_t layers = 1,
-                      VkImageViewType view_type = VK_IMAGE_VIEW_TYPE_2D);
+                      VkImageViewType view_type = VK_IMAGE_VIEW_TYPE_2D, VkImageCreateFlags flags = 0);
+// flags with VK_IMAGE_CREATE_EXTENDED_USAGE_BIT: `usage` may include what only other view formats support
+// (STORAGE through an integer view of an sRGB image); the image's own view then omits STORAGE.
 void destroy_image(const VulkanContext& context, GpuImage& image); // also a half-made or empty one
 
 } // namespace tf

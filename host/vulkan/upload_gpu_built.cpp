@@ -22,6 +22,22 @@ void check_features(const VulkanContext& context, VkFormat format, VkFormatFeatu
 
 constexpr VkPipelineStageFlags shader_stages = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 
+// A layout change of levels [base, base + count).
+void level_barrier(VkCommandBuffer cb, VkImage image, uint32_t base, uint32_t count, VkImageLayout from,
+                   VkImageLayout to, VkAccessFlags src_access, VkAccessFlags dst_access, VkPipelineStageFlags src_stage,
+                   VkPipelineStageFlags dst_stage)
+{
+    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    barrier.srcAccessMask = src_access;
+    barrier.dstAccessMask = dst_access;
+    barrier.oldLayout = from;
+    barrier.newLayout = to;
+    barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = image;
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, base, count, 0, 1};
+    vkCmdPipelineBarrier(cb, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+}
+
 } // namespace
 
 GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, int w, int h, bool with_sat,
@@ -36,13 +52,18 @@ GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, in
                    "store into or blit from R32G32B32A32_SFLOAT images");
     GpuBuild b;
     b.in_place = format == TextureFormat::rgba32f;
-    if (!b.in_place)
-        check_features(context, vk_format(format), VK_FORMAT_FEATURE_BLIT_DST_BIT, "blit into " + to_string(format) + " images");
     if (!b.in_place && !level0)
         throw Error("--build gpu: a level 0 written on the device is RGBA32F (no format conversion of level 0)");
     b.with_sat = with_sat;
     b.objects = std::make_shared<Cleanup>();
     Cleanup& objects = *b.objects;
+    Cleanup on_early_failure;
+    on_early_failure.add([&] { b.objects.reset(); });
+    b.kernels = create_gpu_build_kernels(context, objects);
+    b.pack = !b.in_place && pack_supported(context, b.kernels, format);
+    if (!b.in_place && !b.pack)
+        check_features(context, vk_format(format), VK_FORMAT_FEATURE_BLIT_DST_BIT, "blit into " + to_string(format) + " images");
+    on_early_failure.dismiss();
     GpuTexture& t = b.texture;
     t.format = format;
     t.filterable = format_filterable(context, format);
@@ -58,12 +79,14 @@ GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, in
         t.chain = b.built;
     } else {
         objects.add([&context, image = b.built]() mutable { destroy_image(context, image); });
-        t.chain = create_image(context, vk_format(format), uint32_t(w), uint32_t(h), levels,
-                               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                               VK_IMAGE_ASPECT_COLOR_BIT);
+        const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                        VK_IMAGE_USAGE_TRANSFER_SRC_BIT | (b.pack ? VkImageUsageFlags(VK_IMAGE_USAGE_STORAGE_BIT) : 0u);
+        t.chain = create_image(context, vk_format(format), uint32_t(w), uint32_t(h), levels, usage,
+                               VK_IMAGE_ASPECT_COLOR_BIT, 1, VK_IMAGE_VIEW_TYPE_2D, b.pack ? gpu_pack_image_flags : 0u);
     }
-    b.kernels = create_gpu_build_kernels(context, objects);
     b.mip = create_mip_build_target(context, b.kernels, b.built.image, w, h, objects);
+    if (b.pack)
+        b.pack_target = create_pack_target(context, b.kernels, b.mip, t.chain.image, format, objects);
     if (with_sat) {
         b.sat = create_sat_build_target(context, b.kernels, b.mip.level_views[0], w, h, objects);
         t.sat_low = b.sat.low; // the texture's from here on
@@ -71,16 +94,27 @@ GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, in
     } else {
         upload_empty_sat(context, t);
     }
-    if (level0) { // staging: level 0 as RGBA32F, then (another format) as the format stores it
-        b.float_bytes = level0->texels.size() * sizeof(glm::vec4);
-        const size_t packed_bytes = b.in_place ? 0 : level0->texels.size() * texel_bytes(format);
-        b.staging = create_host_buffer(context, b.float_bytes + packed_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    if (level0) {
+        // Staging: level 0 as RGBA32F (what the levels are built from: as given, like build_mip_chain); for
+        // another format, level 0 as the format stores it, then (with a table) its rounded texels as RGBA32F,
+        // which the table sums (as load_texture's quantise_chain does before build_sat).
+        const size_t texels = level0->texels.size();
+        b.float_bytes = texels * sizeof(glm::vec4);
+        const size_t packed_bytes = b.in_place ? 0 : texels * texel_bytes(format);
+        b.rounded_offset = b.float_bytes + (packed_bytes + 15) / 16 * 16;
+        const size_t total = b.in_place ? b.float_bytes : b.rounded_offset + (with_sat ? b.float_bytes : 0);
+        b.staging = create_host_buffer(context, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         objects.add([&context, buffer = b.staging]() mutable { destroy_buffer(context, buffer); });
-        advise_huge_pages(b.staging.mapped, b.float_bytes + packed_bytes);
-        std::memcpy(b.staging.mapped, level0->texels.data(), b.float_bytes);
+        advise_huge_pages(b.staging.mapped, total);
+        char* bytes = static_cast<char*>(b.staging.mapped);
+        std::memcpy(bytes, level0->texels.data(), b.float_bytes);
         if (!b.in_place)
-            pack_texels(level0->texels.data(), level0->texels.size(), format,
-                        static_cast<char*>(b.staging.mapped) + b.float_bytes);
+            pack_texels(level0->texels.data(), texels, format, bytes + b.float_bytes);
+        if (!b.in_place && with_sat) {
+            glm::vec4* rounded = reinterpret_cast<glm::vec4*>(bytes + b.rounded_offset);
+            for (size_t i = 0; i < texels; ++i)
+                rounded[i] = quantise_texel(level0->texels[i], format);
+        }
     }
     on_failure.dismiss();
     return b;
@@ -112,6 +146,21 @@ void record_gpu_build(VkCommandBuffer cb, GpuBuild& b, Level0 level0)
                           VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
                           first ? VkPipelineStageFlags(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT) : shader_stages, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
     record_mip_build(cb, b.kernels, b.mip);
+    if (b.with_sat && !b.in_place && level0 == Level0::from_staging) {
+        // The table sums the texels the format stores: level 0 rounded, over the unrounded one the levels
+        // were built from (the build's reads done first).
+        image_barrier(cb, b.built.image, 1, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        VkBufferImageCopy rounded{};
+        rounded.bufferOffset = b.rounded_offset;
+        rounded.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        rounded.imageExtent = extent;
+        vkCmdCopyBufferToImage(cb, b.staging.buffer, b.built.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &rounded);
+        image_barrier(cb, b.built.image, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+    }
     if (b.with_sat) {
         // The build's dispatches bind every level writable (the validator counts level 0 as written).
         memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
@@ -128,7 +177,37 @@ void record_gpu_build(VkCommandBuffer cb, GpuBuild& b, Level0 level0)
                       shader_stages);
         return;
     }
-    // Level 0 as the format stores it; every other level blitted (1:1, nearest: a format conversion).
+    const VkPipelineStageFlags before = first ? VkPipelineStageFlags(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT) : shader_stages;
+    const VkImageLayout was = first ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    if (b.pack) {
+        // Level 0 as the format stores it (copied); levels 1.. stored by pack_level, the host's codes.
+        level_barrier(cb, t.chain.image, 0, 1, was, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      before, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        VkBufferImageCopy packed{};
+        packed.bufferOffset = b.float_bytes;
+        packed.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        packed.imageExtent = extent;
+        vkCmdCopyBufferToImage(cb, b.staging.buffer, t.chain.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &packed);
+        level_barrier(cb, t.chain.image, 0, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, shader_stages);
+        if (levels > 1) {
+            level_barrier(cb, t.chain.image, 1, levels - 1, was, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
+                          before, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+            memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+            record_pack_levels(cb, b.kernels, b.pack_target, b.mip);
+            level_barrier(cb, t.chain.image, 1, levels - 1, VK_IMAGE_LAYOUT_GENERAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
+                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, shader_stages);
+        }
+        image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                      VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                      shader_stages);
+        return;
+    }
+    // No integer stores: level 0 as the format stores it; every other level blitted (1:1, nearest: a format
+    // conversion with the device's rounding).
     image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                   VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                   VK_PIPELINE_STAGE_TRANSFER_BIT);

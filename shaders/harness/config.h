@@ -143,6 +143,7 @@
 #define HARNESS_MIP_MAX_LEVELS 15  // 16384 a side: 1 + log2(16384) levels, one storage view each
 #define HARNESS_BUILD_BINDING_LEVELS 0  // build_mip: image2D[HARNESS_MIP_MAX_LEVELS] rgba32f, coherent
 #define HARNESS_BUILD_BINDING_COUNTER 1 // build_mip: buffer { uint }, the tail's group counter
+#define HARNESS_BUILD_BINDING_CODES 2   // pack_level: uimage2D[HARNESS_MIP_MAX_LEVELS], integer views of the format's levels
 #define HARNESS_BUILD_BINDING_LEVEL0 0  // build_sat: image2D rgba32f, level 0 (readonly)
 #define HARNESS_BUILD_BINDING_SAT_LOW 1 // build_sat: uimage2D rgba32ui
 #define HARNESS_BUILD_BINDING_SAT_HIGH 2 // build_sat: uimage2D r32ui
@@ -151,5 +152,9 @@
 #define HARNESS_SAT_PASS_RANGE 0
 #define HARNESS_SAT_PASS_ROWS 1
 #define HARNESS_SAT_PASS_COLUMNS 2
+#define HARNESS_ENCODING_FLOAT32 0 // pack_level: a stored channel's encoding (core/texture_format.h)
+#define HARNESS_ENCODING_FLOAT16 1
+#define HARNESS_ENCODING_UNORM8 2
+#define HARNESS_ENCODING_SRGB8 3
 
 #endif

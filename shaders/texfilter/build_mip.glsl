@@ -39,12 +39,17 @@
 // through TF_MIP_COUNTER, as AMD's single-pass downsampler hands over its last levels) then builds every
 // remaining level alone, reading and writing the images, any parity; the planner adds the tail once the
 // pass's last level has at most TF_MIP_TAIL_TEXELS texels.
-// sRGB and 8-bit textures: storage images of sRGB formats are not writable on most devices. Build the
-// chain in linear light in an RGBA16F or RGBA32F image and copy it into the sRGB (or UNORM) image with
-// vkCmdBlitImage (the blit encodes), or store through a UNORM view of a MUTABLE_FORMAT image with
-// tf_mip_encode_srgb. Decode sRGB level-0 texels (a sampled sRGB view decodes) before building.
+// sRGB, 8-bit and half-float textures: storage images of sRGB formats are not writable on most devices,
+// and a store's float -> unorm or -> half conversion may round to either neighbour. Build the chain in
+// linear light in an RGBA32F image, then store each level's codes (tf_mip_srgb8, tf_mip_unorm8,
+// tf_mip_half: the host's rounding, exactly) through an integer view (R8G8B8A8_UINT, R16G16B16A16_UINT,
+// ...) of the target image created with VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT. Decode sRGB level-0 texels
+// (a sampled sRGB view decodes) before building. vkCmdBlitImage from the RGBA32F chain also converts, with
+// the device's own rounding (lavapipe's sRGB encode is one code low on ~2 % of texels).
 #ifndef TF_BUILD_MIP_GLSL
 #define TF_BUILD_MIP_GLSL
+
+#include "encode.glsl"
 
 #ifndef TF_MIP_LOAD
 #error "texfilter/build_mip.glsl: define TF_MIP_LOAD(level, p) (and TF_MIP_STORE, TF_MIP_COUNTER) before including it"
@@ -59,14 +64,6 @@
 ivec2 tf_mip_level_size(ivec2 size0, int level)
 {
     return max(ivec2(1), size0 >> level);
-}
-
-// Linear value -> sRGB encoded (IEC 61966-2-1), for a store through a UNORM view of an sRGB image.
-vec4 tf_mip_encode_srgb(vec4 linear)
-{
-    vec3 c = clamp(linear.rgb, 0.0, 1.0);
-    vec3 encoded = mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
-    return vec4(encoded, linear.a);
 }
 
 // One axis: the source texels (first index, count 1..3) and weights of destination texel i when a side of
