@@ -703,12 +703,49 @@ bad_formats() {
         "$TEXFILTER" golden --golden-dir format-golden --out format-golden-out
 }
 
+# --build gpu and texfilter build: what the device cannot build is refused before any work, on every
+# command; build --out is a new or empty directory and nothing is left where it fails.
+gpu_builds() {
+    printf '%s\n0.5,0.5,0.01,0,0,0.01\n' "$LOOKUPS_HEADER" >builds.csv
+    expect_error "render --build bogus" "unknown build 'bogus' (expected cpu or gpu)" out.png -- \
+        "${RENDER[@]}" --build bogus -o out.png
+    expect_error "render --build gpu --backend reference" "--build gpu builds on the Vulkan device" out.png -- \
+        "${RENDER[@]}" --build gpu -o out.png
+    expect_error "render --build gpu --texture mipcolors" "texture mipcolors gives every level its own colour" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture mipcolors --filter trilinear --build gpu -o out.png
+    expect_error "sample --build gpu --format r16ui" "--format r16ui is integer data" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter trilinear --build gpu --format r16ui --lookups builds.csv -o out.csv
+    expect_error "sample --build gpu --resource array" "--build gpu is for --resource combined" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter trilinear --build gpu --resource array --lookups builds.csv -o out.csv
+    expect_error "bench --build gpu --texture mipcolors" "texture mipcolors" bench-out -- \
+        "$TEXFILTER" bench --quick --build gpu --texture mipcolors --out bench-out
+    expect_error "golden --update --build gpu" "--update renders the goldens with the CPU reference" - -- \
+        "$TEXFILTER" golden --update --build gpu --golden-dir format-golden
+    mkdir -p build-earlier && echo keep >build-earlier/notes.txt
+    expect_error "build --out a non-empty directory" "not an empty directory" - -- \
+        "$TEXFILTER" build --texture checker --out build-earlier
+    if [[ $(cat build-earlier/notes.txt) != keep || $(ls build-earlier | wc -l) -ne 1 ]]; then
+        fail "build --out a non-empty directory" "the directory's contents were changed"
+    fi
+    expect_error "build --out in a missing directory" "parent directory does not exist" missing/build-out -- \
+        "$TEXFILTER" build --texture checker --out missing/build-out
+    expect_error "build --level-format tiff" "bad value for --level-format: 'tiff'" build-out -- \
+        "$TEXFILTER" build --texture checker --level-format tiff --out build-out
+    expect_error "build --sat of a 5000-texel side" "4096" build-out -- \
+        "$TEXFILTER" build --texture noise --texture-size 5000 --sat --out build-out
+    expect_error "build --texture a missing file" "missing.png" build-out -- \
+        "$TEXFILTER" build --texture missing.png --out build-out
+    expect_error "build without a Vulkan driver" "no Vulkan driver" build-out -- \
+        "${WITHOUT_VULKAN_DRIVER[@]}" "$TEXFILTER" build --texture checker --out build-out
+    expect_success "build --build cpu --sat" build-cpu/sat.bin -- \
+        "$TEXFILTER" build --texture checker --texture-size 64 --build cpu --sat --out build-cpu
+}
 
 # The groups, in order; ctest runs each as its own entry (bad_inputs.GROUP), listed by --list.
 CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_resources diff_contract ground_truth_and_bench_errors
     golden_errors vulkan_errors golden_output_directory outputs_and_inputs unwritable_outputs
     signals_remove_temporaries truncated_images memory_budgets lookups_and_texels reproducible_outputs
-    bad_formats)
+    bad_formats gpu_builds)
 if [[ ${#SELECTED[@]} -eq 0 ]]; then
     SELECTED=("${CASE_GROUPS[@]}")
 fi

@@ -6,18 +6,20 @@
 # does not finish (an error, a crash, a validation message: exit 2 or a signal) does, and then every
 # golden.NAME entry is "Not Run", which ctest counts as a failure.
 #
-# usage: golden_run.sh TEXFILTER OUT_DIR
-# Only what this script writes there is replaced (OUT_DIR/run/, OUT_DIR/verdicts.txt); nothing else in
-# OUT_DIR is touched.
+# usage: golden_run.sh TEXFILTER OUT_DIR [FLAG...]
+# FLAGs go to texfilter golden (the golden_gpu_build.* fixture passes --build gpu: every case's chain and
+# table built by the device). Only what this script writes there is replaced (OUT_DIR/run/,
+# OUT_DIR/verdicts.txt); nothing else in OUT_DIR is touched.
 set -uo pipefail
-if [[ $# -ne 2 ]]; then
-    echo "usage: $0 TEXFILTER OUT_DIR" >&2
+if [[ $# -lt 2 ]]; then
+    echo "usage: $0 TEXFILTER OUT_DIR [FLAG...]" >&2
     exit 2
 fi
 texfilter=$1 out=$2
+shift 2
 mkdir -p "$out"
 rm -rf "$out/run" "$out/verdicts.txt" "$out/verdicts.tmp" # the previous run's, written by this script
-"$texfilter" golden --out "$out/run" > "$out/verdicts.tmp"
+"$texfilter" golden --out "$out/run" "$@" > "$out/verdicts.tmp"
 status=$?
 mv "$out/verdicts.tmp" "$out/verdicts.txt" # a golden.NAME entry never reads a half-written file
 cat "$out/verdicts.txt"

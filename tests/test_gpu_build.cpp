@@ -23,8 +23,12 @@
 #include "vulkan/gpu_built_texture.h"
 #include "vulkan/readback.h"
 #include "vulkan/upload.h"
+#include "io/pfm.h"
 #include <glm/gtc/packing.hpp>
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -400,4 +404,74 @@ TEST_CASE("one-submission")
             worst = std::max(worst, std::abs(double(built[i][c]) - double(uploaded[i][c])));
     CHECK(worst <= 1e-5, "largest difference " + test::show(worst));
     CHECK_EQ(validation_message_count(), 0);
+}
+
+// ---- texfilter/encode.glsl's sRGB table and `texfilter build` ------------------------------------------------
+
+TEST_CASE("srgb-table")
+{
+    // Threshold k-1 must be the smallest float whose host code (tf::pack_texels) is at least k: found here by
+    // bisection over the float bit patterns of [0, 1], against the literals in the include.
+    std::ifstream file(std::string(TEXFILTER_SOURCE_DIR) + "/shaders/texfilter/encode.glsl");
+    std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const size_t start = text.find("float[255](");
+    CHECK(start != std::string::npos, "encode.glsl has the table");
+    std::istringstream numbers(text.substr(start + 11, text.find(");", start) - start - 11));
+    std::vector<float> table;
+    for (std::string item; std::getline(numbers, item, ',');)
+        table.push_back(std::stof(item));
+    CHECK_EQ(table.size(), 255);
+    auto code = [](float f) {
+        const glm::vec4 t(f, f, f, 1.0f);
+        unsigned char bytes[4];
+        pack_texels(&t, 1, TextureFormat::rgba8_srgb, bytes);
+        return int(bytes[0]);
+    };
+    for (int k = 1; k <= 255 && size_t(k) <= table.size(); ++k) {
+        uint32_t lo = 0, hi = 0x3F800000u; // 0.0 and 1.0
+        while (lo < hi) {
+            const uint32_t mid = lo + (hi - lo) / 2;
+            float f;
+            std::memcpy(&f, &mid, 4);
+            if (code(f) >= k)
+                hi = mid;
+            else
+                lo = mid + 1;
+        }
+        float expected;
+        std::memcpy(&expected, &lo, 4);
+        CHECK(table[size_t(k - 1)] == expected, "threshold " + std::to_string(k) + ": " + test::show(table[size_t(k - 1)]) +
+                                                    " in encode.glsl, the host's rounding gives " + test::show(expected));
+    }
+}
+
+TEST_CASE("cli-build-cpu-vs-gpu")
+{
+    // texfilter build writes what the filters read: the device's table is the host's byte for byte and
+    // its levels are within the chain bound (values in [0, 1]: 1e-5).
+    const std::filesystem::path work = test::make_work_dir("gpu-build-cli");
+    for (const char* build : {"cpu", "gpu"}) {
+        const std::string command = test::texfilter_path() + " build --validate --texture zoneplate --texture-size 301 --sat" +
+                                    (test::test_device().empty() ? "" : " --device '" + test::test_device() + "'") +
+                                    " --build " + build + " --out " + (work / build).string() + " > /dev/null";
+        CHECK(std::system(command.c_str()) == 0, command);
+    }
+    auto bytes = [](const std::filesystem::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    const std::string cpu_sat = bytes(work / "cpu" / "sat.bin"), gpu_sat = bytes(work / "gpu" / "sat.bin");
+    CHECK(cpu_sat.size() == 8 + 8 + 32 + size_t(302 * 302) * 20, std::to_string(cpu_sat.size()) + " bytes");
+    CHECK(cpu_sat == gpu_sat, "sat.bin identical");
+    for (int l = 0; l < 9; ++l) {
+        char name[32];
+        std::snprintf(name, sizeof name, "level-%02d.pfm", l);
+        const Image a = read_pfm((work / "cpu" / name).string()), b = read_pfm((work / "gpu" / name).string());
+        CHECK(a.width == b.width && a.height == b.height, name);
+        double worst = 0;
+        for (size_t i = 0; i < a.texels.size() && i < b.texels.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::abs(double(a.texels[i][c]) - double(b.texels[i][c])));
+        CHECK(worst <= (l == 0 ? 0.0 : 1e-5), std::string(name) + ": off by " + test::show(worst));
+    }
 }

@@ -7,6 +7,7 @@
 #include "vulkan/texture_format_support.h"
 #include "vulkan/frame_timer.h"
 #include "core/memory_budget.h"
+#include "io/output_dir.h"
 #include "io/output_path.h"
 #include <cstdio>
 #include <filesystem>
@@ -56,28 +57,6 @@ std::vector<BenchFilter> select_filters(const std::string& flag_value)
 
 // The results directory appears whole or not at all: everything is written into a sibling directory that is
 // renamed into place at the end, and removed if anything fails.
-struct StagingDirectory {
-    fs::path path;
-    bool keep = false;
-    ~StagingDirectory()
-    {
-        std::error_code ignored;
-        if (!keep)
-            fs::remove_all(path, ignored);
-    }
-};
-
-void check_output_directory(const fs::path& out)
-{
-    fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
-    std::error_code ec;
-    if (!fs::is_directory(parent, ec))
-        throw Error(out.string() + ": its parent directory does not exist");
-    check_writable_directory(parent.string(), "bench --out " + out.string());
-    if (fs::exists(fs::symlink_status(out, ec)) && (!fs::is_directory(fs::symlink_status(out, ec)) || !fs::is_empty(out, ec)))
-        throw Error(out.string() + ": exists and is not an empty directory (the benchmark never overwrites results)");
-}
-
 } // namespace
 
 int run_bench(const std::vector<std::string>& argv)
@@ -156,29 +135,25 @@ int run_bench(const std::vector<std::string>& argv)
     while (out_text.size() > 1 && out_text.back() == '/') // results/ names the directory results
         out_text.pop_back();
     fs::path out = out_text;
-    check_output_directory(out);
+    check_new_directory(out.string(), "bench --out");
     GpuSession gpu(context_options_from(args));
     // Every filter runs, the SAT ones too: the texture must fit the table, the memory budget and the device.
     const DeviceLimits limits = device_limits(gpu.context.info);
     for (const BenchFilter& f : config.filters)
         check_format_support(gpu.context, config.texture.format, f.options);
     MipChain chain = load_texture(config.texture, {true, &limits});
-    StagingDirectory staging{temporary_path_for(out.string())};
-    fs::create_directories(staging.path);
+    StagingDirectory staging(out.string());
 
     bool cpu_device = gpu.context.info.type == "cpu";
     config.timer = parse_flag(args, "--timer", cpu_device ? "wall-clock" : "timestamps", parse_frame_timer);
     std::printf("bench on %s (%s %s), %dx%d, %zu scenes x %zu filters, %s timer\n", gpu.context.info.name.c_str(),
                 gpu.context.info.driver_name.c_str(), gpu.context.info.driver_info.c_str(), config.width, config.height,
                 config.scenes.size(), config.filters.size(), to_string(config.timer).c_str());
-    BenchRun run = run_bench(gpu.context, config, chain, staging.path.string());
+    BenchRun run = run_bench(gpu.context, config, chain, staging.path);
     gpu.finish(); // validation messages fail the run before anything appears at --out
-    write_file_atomic((staging.path / "bench.json").string(), bench_json(run));
-    write_file_atomic((staging.path / "bench.csv").string(), bench_csv(run));
-    if (fs::exists(out))
-        fs::remove(out); // empty, checked above
-    fs::rename(staging.path, out);
-    staging.keep = true;
+    write_file_atomic(staging.path + "/bench.json", bench_json(run));
+    write_file_atomic(staging.path + "/bench.csv", bench_csv(run));
+    staging.publish();
     for (const BenchGoal& g : run.goals)
         std::printf("goal %-14s %s: %s%s%s\n", ("[" + g.status + "]").c_str(), g.goal.c_str(), g.measured.c_str(),
                     g.note.empty() ? "" : " -- ", g.note.c_str());

@@ -11,6 +11,7 @@ int run_sample(const std::vector<std::string>& argv);
 int run_diff(const std::vector<std::string>& argv);
 int run_golden(const std::vector<std::string>& argv);
 int run_bench(const std::vector<std::string>& argv);
+int run_build(const std::vector<std::string>& argv);
 int run_view(const std::vector<std::string>& argv);
 
 } // namespace tf

@@ -18,6 +18,7 @@ const char* usage = "usage: texfilter COMMAND [options]\n"
                     "  diff      compare two images (idiff-style thresholds)\n"
                     "  golden    render every golden case on the GPU and compare; --update re-blesses from the CPU reference\n"
                     "  bench     time, count and score every scene x filter against ground truth (JSON, CSV, images)\n"
+                    "  build     a texture's MIP chain and summed-area table, built by the device (or host), to files\n"
                     "  view      a window to fly over the scenes, compare filters side by side, see LOD and anisotropy\n"
                     "\n"
                     "texfilter COMMAND --help shows a command's options.\n";
@@ -50,6 +51,8 @@ int main(int argc, char** argv)
             return tf::run_golden(rest);
         if (command == "bench")
             return tf::run_bench(rest);
+        if (command == "build")
+            return tf::run_build(rest);
         if (command == "view")
             return tf::run_view(rest);
         std::fprintf(stderr, "texfilter: unknown command '%s'\n\n%s", command.c_str(), usage);

@@ -215,6 +215,27 @@ void pack_texels(const glm::vec4* texels, size_t count, TextureFormat format, vo
     }
 }
 
+void unpack_texels(const void* in, size_t count, TextureFormat format, glm::vec4* texels)
+{
+    const FormatInfo& info = format_info(format);
+    const auto* bytes = static_cast<const unsigned char*>(in);
+    for (size_t i = 0; i < count; ++i) {
+        glm::vec4 t(0.0f, 0.0f, 0.0f, 1.0f);
+        for (int c = 0; c < info.channels; ++c) {
+            const ChannelEncoding encoding = c == 3 ? alpha_encoding(info) : info.encoding;
+            switch (encoding) {
+            case ChannelEncoding::float32: std::memcpy(&t[c], bytes, 4); bytes += 4; break;
+            case ChannelEncoding::float16: { uint16_t h; std::memcpy(&h, bytes, 2); t[c] = half_value(h); bytes += 2; break; }
+            case ChannelEncoding::unorm8: t[c] = float(double(*bytes++) / 255.0); break;
+            case ChannelEncoding::srgb8: t[c] = srgb8_decode_table()[*bytes++]; break;
+            case ChannelEncoding::uint16: { uint16_t u; std::memcpy(&u, bytes, 2); t[c] = float(u); bytes += 2; break; }
+            case ChannelEncoding::uint32: { uint32_t u; std::memcpy(&u, bytes, 4); t[c] = float(u); bytes += 4; break; }
+            }
+        }
+        texels[i] = t;
+    }
+}
+
 bool needs_hardware_filtering(const SamplerOptions& options)
 {
     switch (options.filter) {

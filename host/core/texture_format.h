@@ -57,6 +57,9 @@ void quantise_chain(MipChain& chain, TextureFormat format);
 // `count` texels, as quantise_chain left them (uint formats: the codes as floats), in the format's memory
 // layout (texel_bytes each): what the upload copies.
 void pack_texels(const glm::vec4* texels, size_t count, TextureFormat format, void* out);
+// The inverse: `count` stored texels (texel_bytes each) decoded as the shader reads them (sRGB by the exact
+// decode; uint: the codes as floats; a one-channel format gives (r, 0, 0, 1)).
+void unpack_texels(const void* bytes, size_t count, TextureFormat format, glm::vec4* texels);
 
 // Refuses, before any work, what cannot work on any device: a sampler filtering integer texels (hw-* modes
 // and --taps hardware). Throws tf::Error naming the format and the filter.

@@ -109,4 +109,38 @@ void record_file(OwnedDirectory& directory, const std::string& relative)
     write_marker(directory);
 }
 
+void check_new_directory(const std::string& out, const std::string& what)
+{
+    const fs::path path = out;
+    const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    std::error_code ec;
+    if (!fs::is_directory(parent, ec))
+        throw Error(out + ": its parent directory does not exist");
+    check_writable_directory(parent.string(), what + " " + out);
+    if (fs::exists(fs::symlink_status(path, ec)) &&
+        (!fs::is_directory(fs::symlink_status(path, ec)) || !fs::is_empty(path, ec)))
+        throw Error(out + ": exists and is not an empty directory (" + what + " never overwrites results)");
+}
+
+StagingDirectory::StagingDirectory(const std::string& target_path)
+    : path(temporary_path_for(target_path)), target(target_path)
+{
+    fs::create_directories(path);
+}
+
+StagingDirectory::~StagingDirectory()
+{
+    std::error_code ignored;
+    if (!published)
+        fs::remove_all(path, ignored);
+}
+
+void StagingDirectory::publish()
+{
+    if (fs::exists(target))
+        fs::remove(target); // empty, checked before the work
+    fs::rename(path, target);
+    published = true;
+}
+
 } // namespace tf

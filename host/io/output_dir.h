@@ -18,6 +18,22 @@ struct OwnedDirectory {
 // failure image would mislead). Refuses anything else, naming the path and why. The marker is written at once.
 OwnedDirectory claim_directory(const std::string& path, const std::string& command);
 
+// A results directory written whole or not at all (bench --out, build --out): `out` must be new or an empty
+// directory whose parent is writable (checked_new_directory, before any work); the files go to a staging
+// directory beside it, which publish() renames into place. A staging directory not published is removed
+// (an error, a signal: temporary_path_for registers it with the signal cleanup).
+void check_new_directory(const std::string& out, const std::string& what);
+struct StagingDirectory {
+    std::string path;   // beside the target, unique per process
+    std::string target;
+    bool published = false;
+    explicit StagingDirectory(const std::string& target); // creates it
+    ~StagingDirectory();
+    void publish(); // the target (empty, checked before) is replaced by the staging directory
+    StagingDirectory(const StagingDirectory&) = delete;
+    StagingDirectory& operator=(const StagingDirectory&) = delete;
+};
+
 // Lists a file before it is written (relative to the directory, no "..": sub/NAME), so that even an
 // interrupted run leaves a marker that covers everything it wrote. Rewrites the marker atomically.
 void record_file(OwnedDirectory& directory, const std::string& relative);
