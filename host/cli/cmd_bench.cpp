@@ -1,4 +1,5 @@
 #include "bench/bench.h"
+#include "bench/gpu_build_bench.h"
 #include "bench/mip_build_bench.h"
 #include "flags/cli_common.h"
 #include "cli/commands.h"
@@ -81,7 +82,11 @@ int run_bench(const std::vector<std::string>& argv)
           {"--stage", "S", "fragment (default) or compute; the mesh scene always rasterizes"},
           {"--timer", "T", "timestamps (GPU timestamps; default on GPUs) or wall-clock (default on CPU devices)"},
           {"--mip-build", "", "instead: time the host's MIP build beside memcpy (--texture-size, default 8192; no --out)"},
-          {"--repeat", "N", "--mip-build: runs of each measure, the median reported (default 5)"}},
+          {"--repeat", "N", "--mip-build, --gpu-build: runs of each measure, the median reported (default 5, 3)"},
+          {"--gpu-build", "", "instead: time the device's MIP and SAT builds beside the host's and beside a copy of "
+                              "the same bytes on each, and the dynamic texture's frame (no --out)"},
+          {"--sizes", "A,B", "--gpu-build: texture sides (default 1024,4096,8192)"},
+          {"--dynamic-size", "N", "--gpu-build: the dynamic texture's side, 0 for none (default 1024)"}},
          device_flags()});
     Args args = parse_args("bench", argv, specs, 0);
     if (args.has("--help")) {
@@ -91,6 +96,23 @@ int run_bench(const std::vector<std::string>& argv)
     if (args.has("--mip-build")) {
         const int side = args.get_int("--texture-size", 8192, 1, 16384);
         std::fputs(format_mip_build_bench(run_mip_build_bench(side, args.get_int("--repeat", 5, 1, 100))).c_str(), stdout);
+        return 0;
+    }
+    if (args.has("--gpu-build")) {
+        std::vector<int> sides;
+        for (const std::string& item : split_list(args.get("--sizes", "1024,4096,8192"))) {
+            Args one = parse_args("bench", {"--sizes", item}, {{"--sizes", "N", ""}}, 0);
+            sides.push_back(one.get_int("--sizes", 0, 1, max_texture_dimension));
+        }
+        const int repeats = args.get_int("--repeat", 3, 1, 100);
+        const int dynamic_side = args.get_int("--dynamic-size", 1024, 0, max_texture_dimension);
+        GpuSession gpu(context_options_from(args));
+        const bool cpu_device = gpu.context.info.type == "cpu";
+        const FrameTimer timer = parse_flag(args, "--timer", cpu_device ? "wall-clock" : "timestamps", parse_frame_timer);
+        const std::string text =
+            format_gpu_build_bench(run_gpu_build_bench(gpu.context, sides, repeats, timer, dynamic_side));
+        gpu.finish();
+        std::fputs(text.c_str(), stdout);
         return 0;
     }
     BenchConfig config;

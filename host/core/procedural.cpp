@@ -99,7 +99,7 @@ std::string name_list() {
 } // namespace
 
 const std::vector<std::string>& procedural_names() {
-    static const std::vector<std::string> names = {"checker", "zoneplate", "grid", "noise", "mipcolors"};
+    static const std::vector<std::string> names = {"checker", "zoneplate", "grid", "noise", "mipcolors", "dynamic"};
     return names;
 }
 
@@ -119,7 +119,31 @@ MipChain make_procedural(const std::string& name, int size) {
     if (name == "checker") return build_mip_chain(checker(size));
     if (name == "zoneplate") return build_mip_chain(zoneplate(size));
     if (name == "grid") return build_mip_chain(grid(size));
+    if (name == "dynamic") return build_mip_chain(dynamic_texture(size, 0));
     return build_mip_chain(noise(size));
+}
+
+// Keep in step with shaders/harness/dynamic_texture.comp.glsl (tests/test_gpu_build.cpp compares them).
+Image dynamic_texture(int size, int frame) {
+    if (size < 1 || size > kMaxSize)
+        throw Error("procedural texture size " + std::to_string(size) + " out of range [1, " +
+                    std::to_string(kMaxSize) + "]");
+    Image image = make_image(size, size);
+    const int64_t cell = std::max(2, size / 16), f = frame;
+    // The rings' centre circles the middle on a 16-frame square path (integer steps).
+    const int64_t phase = f % 16, step = std::max(1, size / 32);
+    const int64_t cx = size / 2 + step * (phase < 8 ? phase - 4 : 12 - phase);
+    const int64_t cy = size / 2 + step * (phase < 4 ? phase : phase < 12 ? 8 - phase : phase - 16);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const int64_t sx = (x + 3 * f) % size, sy = (y + 2 * f) % size;
+            const bool dark = ((sx / cell + sy / cell) & 1) != 0;
+            const int64_t dx = x - cx, dy = y - cy;
+            const int64_t ring = ((dx * dx + dy * dy) * 4 / (cell * cell) + f) & 3;
+            const int64_t fine = (sx ^ sy) & 15;
+            image.at(x, y) = glm::vec4(dark ? 0.1f : 0.85f, float(ring) * 0.25f, float(fine) * 0.0625f, 1.0f);
+        }
+    return image;
 }
 
 } // namespace tf

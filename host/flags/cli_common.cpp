@@ -8,7 +8,7 @@ namespace tf {
 
 std::vector<FlagSpec> texture_flags()
 {
-    return {{"--texture", "T|PATH", "procedural texture (checker, zoneplate, grid, noise, mipcolors) or an image file"},
+    return {{"--texture", "T|PATH", "procedural texture (checker, zoneplate, grid, noise, mipcolors, dynamic) or an image file"},
             {"--texture-size", "N", "side of a procedural texture in texels (default 256)"},
             {"--linear", "", "the image file holds data/linear values: no sRGB decode"},
             {"--format", "F", "what the texture is uploaded as: " + texture_format_names() +
