@@ -4,6 +4,7 @@
 #include "texture/error.h"
 #include "cli/golden.h"
 #include "vulkan/backend.h"
+#include "vulkan/render_pipeline.h"
 #include "vulkan/texture_format_support.h"
 #include "io/image_io.h"
 #include "io/output_dir.h"
@@ -12,6 +13,7 @@
 #include "io/report.h"
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #ifndef TEXFILTER_SOURCE_DIR
 #define TEXFILTER_SOURCE_DIR ""
@@ -65,6 +67,9 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
     std::vector<ReportCase> report;
     int failures = 0;
     int skipped = 0;
+    // The cases share ~30 pipelines: each compiled once (most of a case's time on lavapipe). Declared after
+    // the session, so destroyed before it; every render has completed by then (gpu_render waits).
+    auto pipelines = std::make_unique<RenderPipelineCache>();
     for (GoldenCase c : run.cases) {
         if (run.build == TextureBuild::gpu) {
             // mipcolors' levels are not a downsample, integer formats round codes on the host: cpu builds only.
@@ -83,7 +88,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
         MipChain chain = load_texture(c.texture, use);
         SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
         Image actual = with_texture(gpu.context, chain, needs_sat(c.sampler.filter), c.texture.format, c.texture.build,
-                                    [&](auto& t) { return gpu_render(gpu.context, t, scene, c.sampler, c.render); });
+                                    [&](auto& t) { return gpu_render(gpu.context, t, scene, c.sampler, c.render, pipelines.get()); });
 
         std::string golden_path = run.golden_dir + "/" + c.name + ".png";
         Image golden = read_image_raw(golden_path);
@@ -114,6 +119,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
         report.push_back(entry);
     }
     std::string device_name = gpu.context.info.name;
+    pipelines.reset(); // before the device goes
     gpu.finish();
     record_file(out, "report.html");
     std::string report_path = run.out_dir + "/report.html";

@@ -15,8 +15,10 @@ namespace tf {
 
 // Renders the scene: ray-cast in a fragment shader (full-screen triangle) or a compute shader (2x2 quads
 // from subgroup quad operations), or, with render.rasterize, its triangles through the raster pipeline.
+// cache: pipelines kept across renders (vulkan/render_pipeline.h; golden), null for a pipeline of its own.
+struct RenderPipelineCache;
 Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
-                 const SamplerOptions& options, const RenderOptions& render);
+                 const SamplerOptions& options, const RenderOptions& render, RenderPipelineCache* cache = nullptr);
 
 std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture& texture,
                                   const std::vector<Lookup>& lookups, const SamplerOptions& options,

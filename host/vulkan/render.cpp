@@ -32,7 +32,7 @@ RenderKind render_kind(const SamplerOptions& options, const RenderOptions& rende
 
 std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const GpuTexture& texture,
                                              const SceneParams& scene, const SamplerOptions& options,
-                                             const RenderOptions& render)
+                                             const RenderOptions& render, RenderPipelineCache* cache)
 {
     check_view(options.filter, render.view);
     auto renderer = std::make_unique<GpuRenderer>();
@@ -69,8 +69,10 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
         r.vertices = create_mesh_vertices(context, scene, cleanup);
     }
     r.pass = create_pass(context, texture, options, stages, push_stages, buffers, cleanup);
-    r.pipeline = create_render_pipeline(context, r.kind, r.pass.pipeline_layout, options.filter, r.width, r.height,
-                                        cleanup, texture.format);
+    r.pipeline = cache ? cached_render_pipeline(context, *cache, r.kind, r.pass.pipeline_layout, options.filter, r.width,
+                                                r.height, texture.format)
+                       : create_render_pipeline(context, r.kind, r.pass.pipeline_layout, options.filter, r.width,
+                                                r.height, cleanup, texture.format);
     return renderer;
 }
 
@@ -87,9 +89,9 @@ Image render_frame(GpuRenderer& r, const SceneParams& scene)
 }
 
 Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
-                 const SamplerOptions& options, const RenderOptions& render)
+                 const SamplerOptions& options, const RenderOptions& render, RenderPipelineCache* cache)
 {
-    std::unique_ptr<GpuRenderer> renderer = create_renderer(context, texture, scene, options, render);
+    std::unique_ptr<GpuRenderer> renderer = create_renderer(context, texture, scene, options, render, cache);
     return render_frame(*renderer, scene);
 }
 

@@ -27,9 +27,10 @@ struct GpuRenderer {
     Cleanup cleanup; // last member, so it runs first: destroys everything above in reverse order of creation
 };
 
+// cache: reuse a pipeline made earlier for the same kind, filter and size (null: the renderer's own).
 std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const GpuTexture& texture,
                                              const SceneParams& scene, const SamplerOptions& options,
-                                             const RenderOptions& render);
+                                             const RenderOptions& render, RenderPipelineCache* cache = nullptr);
 
 // Draws one frame of `scene` (same kind and size as at creation; the camera path changes only its
 // parameters) and reads it back.

@@ -54,4 +54,19 @@ VkPipeline create_render_pipeline(const VulkanContext& context, RenderKind kind,
     return create_graphics_pipeline(context, desc, layout, filter, cleanup);
 }
 
+VkPipeline cached_render_pipeline(const VulkanContext& context, RenderPipelineCache& cache, RenderKind kind,
+                                  VkPipelineLayout layout, Filter filter, uint32_t width, uint32_t height,
+                                  TextureFormat format)
+{
+    const bool integer = format_info(format).integer;
+    const bool sized = kind != RenderKind::compute; // graphics pipelines fix their viewport
+    for (const RenderPipelineCache::Entry& e : cache.entries)
+        if (e.kind == kind && e.filter == filter && e.integer == integer &&
+            (!sized || (e.width == width && e.height == height)))
+            return e.pipeline;
+    const VkPipeline pipeline = create_render_pipeline(context, kind, layout, filter, width, height, cache.cleanup, format);
+    cache.entries.push_back({kind, filter, width, height, integer, pipeline});
+    return pipeline;
+}
+
 } // namespace tf

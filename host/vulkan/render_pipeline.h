@@ -4,6 +4,7 @@
 #include "core/texture_format.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
+#include <vector>
 
 namespace tf {
 
@@ -21,5 +22,26 @@ void check_render_kind(const VulkanContext& context, RenderKind kind);
 VkPipeline create_render_pipeline(const VulkanContext& context, RenderKind kind, VkPipelineLayout layout,
                                   Filter filter, uint32_t width, uint32_t height, Cleanup& cleanup,
                                   TextureFormat format = TextureFormat::rgba32f);
+
+// Render pipelines kept for reuse by later renderers of one command (golden renders ~120 cases with ~30
+// distinct pipelines; lavapipe spends most of a case compiling its pipeline). A pipeline depends only on the
+// key below: every renderer of one kind creates an identically defined pipeline layout (create_renderer),
+// and Vulkan binds a pipeline with any compatible layout; the layout it was made with may be destroyed.
+// Destroy the cache (its cleanup) before the context, after the last frame using its pipelines completed.
+struct RenderPipelineCache {
+    struct Entry {
+        RenderKind kind;
+        Filter filter;
+        uint32_t width, height;
+        bool integer; // the HARNESS_RESOURCE_UINT shaders
+        VkPipeline pipeline;
+    };
+    std::vector<Entry> entries;
+    Cleanup cleanup;
+};
+// create_render_pipeline through `cache`: an entry made earlier for the same key, else a new one kept there.
+VkPipeline cached_render_pipeline(const VulkanContext& context, RenderPipelineCache& cache, RenderKind kind,
+                                  VkPipelineLayout layout, Filter filter, uint32_t width, uint32_t height,
+                                  TextureFormat format);
 
 } // namespace tf
