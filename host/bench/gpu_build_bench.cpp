@@ -45,11 +45,12 @@ double mip_bytes(int side)
     return bytes;
 }
 
-// Level 0 read three times (range, rows twice), the low table read once, both tables written once.
+// Level 0 read twice (range, rows), the low table written (rows), read and written again with the high
+// table (columns).
 double sat_bytes(int side)
 {
     const double entries = double(side + 1) * (side + 1);
-    return 3.0 * double(side) * side * sizeof(glm::vec4) + entries * (16 + 16 + 4 + 16);
+    return 2.0 * double(side) * side * sizeof(glm::vec4) + entries * (16 + 16 + 16 + 4);
 }
 
 constexpr VkDeviceSize copy_chunk = VkDeviceSize(256) << 20; // the copy's source buffer: beyond any cache

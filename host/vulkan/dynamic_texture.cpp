@@ -2,6 +2,7 @@
 #include "vulkan/dynamic_texture.h"
 #include "texture/error.h"
 #include "vulkan/barriers.h"
+#include "vulkan/compute_objects.h"
 #include "vulkan/pipeline.h"
 
 #include "dynamic_texture_comp.h"
@@ -25,35 +26,12 @@ DynamicTexture create_dynamic_texture(const VulkanContext& context, int size)
     on_failure.add([&] { destroy_dynamic_texture(context, d); });
     d.objects = std::make_shared<Cleanup>();
     Cleanup& objects = *d.objects;
-    VkDevice device = context.device;
-    const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = 1;
-    set_info.pBindings = &binding;
-    TF_VK(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &d.set_layout));
-    objects.add([device, layout = d.set_layout] { vkDestroyDescriptorSetLayout(device, layout, nullptr); });
-    const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(GeneratorPush)};
-    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layout_info.setLayoutCount = 1;
-    layout_info.pSetLayouts = &d.set_layout;
-    layout_info.pushConstantRangeCount = 1;
-    layout_info.pPushConstantRanges = &range;
-    TF_VK(vkCreatePipelineLayout(device, &layout_info, nullptr, &d.layout));
-    objects.add([device, layout = d.layout] { vkDestroyPipelineLayout(device, layout, nullptr); });
+    d.set_layout = create_set_layout(context, {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}},
+                                     objects);
+    d.layout = create_push_layout(context, d.set_layout, sizeof(GeneratorPush), objects);
     d.pipeline = create_compute_pipeline(context, {dynamic_texture_comp, sizeof(dynamic_texture_comp)}, d.layout,
                                          Filter::nearest, objects);
-    const VkDescriptorPoolSize pool_size{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1};
-    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pool_info.maxSets = 1;
-    pool_info.poolSizeCount = 1;
-    pool_info.pPoolSizes = &pool_size;
-    TF_VK(vkCreateDescriptorPool(device, &pool_info, nullptr, &d.pool));
-    objects.add([device, pool = d.pool] { vkDestroyDescriptorPool(device, pool, nullptr); });
-    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocate.descriptorPool = d.pool;
-    allocate.descriptorSetCount = 1;
-    allocate.pSetLayouts = &d.set_layout;
-    TF_VK(vkAllocateDescriptorSets(device, &allocate, &d.set));
+    d.set = allocate_set(context, d.set_layout, {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}}, d.pool, objects);
     const VkDescriptorImageInfo image{VK_NULL_HANDLE, d.build.mip.level_views[0], VK_IMAGE_LAYOUT_GENERAL};
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstSet = d.set;
@@ -61,7 +39,7 @@ DynamicTexture create_dynamic_texture(const VulkanContext& context, int size)
     write.descriptorCount = 1;
     write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     write.pImageInfo = &image;
-    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
     on_failure.dismiss();
     return d;
 }

@@ -4,6 +4,7 @@
 #include "texture/error.h"
 #include "vulkan/barriers.h"
 #include "vulkan/gpu_build_spirv.h"
+#include "vulkan/compute_objects.h"
 #include "vulkan/pipeline.h"
 #include <algorithm>
 #include <array>
@@ -25,71 +26,7 @@ struct BuildPush {
     int32_t tail;
     int32_t pad[3];
 };
-static_assert(sizeof(BuildPush) == HARNESS_BUILD_PUSH_SIZE);
-
-VkDescriptorSetLayout create_set_layout(const VulkanContext& context,
-                                        const std::vector<VkDescriptorSetLayoutBinding>& bindings, Cleanup& cleanup)
-{
-    VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    info.bindingCount = uint32_t(bindings.size());
-    info.pBindings = bindings.data();
-    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-    TF_VK(vkCreateDescriptorSetLayout(context.device, &info, nullptr, &layout));
-    VkDevice device = context.device;
-    cleanup.add([=] { vkDestroyDescriptorSetLayout(device, layout, nullptr); });
-    return layout;
-}
-
-VkPipelineLayout create_layout(const VulkanContext& context, VkDescriptorSetLayout set_layout, Cleanup& cleanup)
-{
-    static_assert(sizeof(BuildPush) == sizeof(PackPush));
-    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(BuildPush)};
-    VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    info.setLayoutCount = 1;
-    info.pSetLayouts = &set_layout;
-    info.pushConstantRangeCount = 1;
-    info.pPushConstantRanges = &range;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    TF_VK(vkCreatePipelineLayout(context.device, &info, nullptr, &layout));
-    VkDevice device = context.device;
-    cleanup.add([=] { vkDestroyPipelineLayout(device, layout, nullptr); });
-    return layout;
-}
-
-VkDescriptorSet allocate_set(const VulkanContext& context, VkDescriptorSetLayout layout,
-                             const std::vector<VkDescriptorPoolSize>& sizes, VkDescriptorPool& pool, Cleanup& cleanup)
-{
-    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pool_info.maxSets = 1;
-    pool_info.poolSizeCount = uint32_t(sizes.size());
-    pool_info.pPoolSizes = sizes.data();
-    TF_VK(vkCreateDescriptorPool(context.device, &pool_info, nullptr, &pool));
-    VkDevice device = context.device;
-    VkDescriptorPool created = pool;
-    cleanup.add([=] { vkDestroyDescriptorPool(device, created, nullptr); }); // frees the set too
-    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocate.descriptorPool = pool;
-    allocate.descriptorSetCount = 1;
-    allocate.pSetLayouts = &layout;
-    VkDescriptorSet set = VK_NULL_HANDLE;
-    TF_VK(vkAllocateDescriptorSets(context.device, &allocate, &set));
-    return set;
-}
-
-VkImageView create_level_view(const VulkanContext& context, VkImage image, VkFormat format, uint32_t level,
-                              Cleanup& cleanup)
-{
-    VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    info.image = image;
-    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    info.format = format;
-    info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, 1};
-    VkImageView view = VK_NULL_HANDLE;
-    TF_VK(vkCreateImageView(context.device, &info, nullptr, &view));
-    VkDevice device = context.device;
-    cleanup.add([=] { vkDestroyImageView(device, view, nullptr); });
-    return view;
-}
+static_assert(sizeof(BuildPush) == HARNESS_BUILD_PUSH_SIZE && sizeof(PackPush) == HARNESS_BUILD_PUSH_SIZE);
 
 void compute_to_compute(VkCommandBuffer cb)
 {
@@ -121,8 +58,8 @@ GpuBuildKernels create_gpu_build_kernels(const VulkanContext& context, Cleanup& 
          {HARNESS_BUILD_BINDING_SAT_HIGH, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
          {HARNESS_BUILD_BINDING_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}},
         cleanup);
-    k.mip_layout = create_layout(context, k.mip_set_layout, cleanup);
-    k.sat_layout = create_layout(context, k.sat_set_layout, cleanup);
+    k.mip_layout = create_push_layout(context, k.mip_set_layout, sizeof(BuildPush), cleanup);
+    k.sat_layout = create_push_layout(context, k.sat_set_layout, sizeof(BuildPush), cleanup);
     k.mip = create_compute_pipeline(context, {build_mip_comp, sizeof(build_mip_comp)}, k.mip_layout, Filter::nearest,
                                     cleanup);
     k.exact_sat = context.info.shader_float64;
@@ -138,7 +75,7 @@ GpuBuildKernels create_gpu_build_kernels(const VulkanContext& context, Cleanup& 
              {HARNESS_BUILD_BINDING_CODES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, HARNESS_MIP_MAX_LEVELS,
               VK_SHADER_STAGE_COMPUTE_BIT, nullptr}},
             cleanup);
-        k.pack_layout = create_layout(context, k.pack_set_layout, cleanup);
+        k.pack_layout = create_push_layout(context, k.pack_set_layout, sizeof(PackPush), cleanup);
         k.pack = create_compute_pipeline(context, {pack_level_comp, sizeof(pack_level_comp)}, k.pack_layout,
                                          Filter::nearest, cleanup);
     }

@@ -22,22 +22,6 @@ void check_features(const VulkanContext& context, VkFormat format, VkFormatFeatu
 
 constexpr VkPipelineStageFlags shader_stages = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 
-// A layout change of levels [base, base + count).
-void level_barrier(VkCommandBuffer cb, VkImage image, uint32_t base, uint32_t count, VkImageLayout from,
-                   VkImageLayout to, VkAccessFlags src_access, VkAccessFlags dst_access, VkPipelineStageFlags src_stage,
-                   VkPipelineStageFlags dst_stage)
-{
-    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    barrier.srcAccessMask = src_access;
-    barrier.dstAccessMask = dst_access;
-    barrier.oldLayout = from;
-    barrier.newLayout = to;
-    barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image;
-    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, base, count, 0, 1};
-    vkCmdPipelineBarrier(cb, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
-}
-
 } // namespace
 
 GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, int w, int h, bool with_sat,
@@ -181,25 +165,27 @@ void record_gpu_build(VkCommandBuffer cb, GpuBuild& b, Level0 level0)
     const VkImageLayout was = first ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     if (b.pack) {
         // Level 0 as the format stores it (copied); levels 1.. stored by pack_level, the host's codes.
-        level_barrier(cb, t.chain.image, 0, 1, was, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      before, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        image_barrier(cb, t.chain.image, 1, was, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      before, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_IMAGE_ASPECT_COLOR_BIT, 1, 0);
         VkBufferImageCopy packed{};
         packed.bufferOffset = b.float_bytes;
         packed.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         packed.imageExtent = extent;
         vkCmdCopyBufferToImage(cb, b.staging.buffer, t.chain.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &packed);
-        level_barrier(cb, t.chain.image, 0, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
-                      VK_PIPELINE_STAGE_TRANSFER_BIT, shader_stages);
+        image_barrier(cb, t.chain.image, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, shader_stages,
+                      VK_IMAGE_ASPECT_COLOR_BIT, 1, 0);
         if (levels > 1) {
-            level_barrier(cb, t.chain.image, 1, levels - 1, was, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
-                          before, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+            image_barrier(cb, t.chain.image, levels - 1, was, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
+                          before, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_IMAGE_ASPECT_COLOR_BIT, 1, 1);
             memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                            VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
             record_pack_levels(cb, b.kernels, b.pack_target, b.mip);
-            level_barrier(cb, t.chain.image, 1, levels - 1, VK_IMAGE_LAYOUT_GENERAL,
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
-                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, shader_stages);
+            image_barrier(cb, t.chain.image, levels - 1, VK_IMAGE_LAYOUT_GENERAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_SHADER_WRITE_BIT,
+                          VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, shader_stages,
+                          VK_IMAGE_ASPECT_COLOR_BIT, 1, 1);
         }
         image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                       VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
@@ -211,7 +197,8 @@ void record_gpu_build(VkCommandBuffer cb, GpuBuild& b, Level0 level0)
     image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                   VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                   VK_PIPELINE_STAGE_TRANSFER_BIT);
-    image_barrier(cb, t.chain.image, levels, first ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+    image_barrier(cb, t.chain.image, levels,
+                  first ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
                   first ? VkPipelineStageFlags(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT) : shader_stages, VK_PIPELINE_STAGE_TRANSFER_BIT);
     VkBufferImageCopy packed{};
@@ -228,10 +215,12 @@ void record_gpu_build(VkCommandBuffer cb, GpuBuild& b, Level0 level0)
         vkCmdBlitImage(cb, b.built.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, t.chain.image,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
     }
-    image_barrier(cb, t.chain.image, levels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+    image_barrier(cb, t.chain.image, levels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                   VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, shader_stages);
     // Leave `built` as an in-place build leaves its image, so a rebuild starts from one layout.
-    image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+    image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                   VK_ACCESS_TRANSFER_READ_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
 }
 

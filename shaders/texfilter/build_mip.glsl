@@ -84,6 +84,12 @@ void tfi_mip_axis(int i, int src, int dst, out int first, out int count, out vec
 // Destination texel q of `level` from level − 1 (size srcSize), read through TF_MIP_LOAD.
 vec4 tfi_mip_texel(int level, ivec2 srcSize, ivec2 dstSize, ivec2 q)
 {
+    if (((srcSize.x | srcSize.y) & 1) == 0) { // the common case, unrolled: 2 x 2 texels at 1/2 a side
+        const ivec2 s = 2 * q;
+        const vec4 top = 0.5 * TF_MIP_LOAD(level - 1, s) + 0.5 * TF_MIP_LOAD(level - 1, s + ivec2(1, 0));
+        const vec4 bottom = 0.5 * TF_MIP_LOAD(level - 1, s + ivec2(0, 1)) + 0.5 * TF_MIP_LOAD(level - 1, s + ivec2(1, 1));
+        return 0.5 * top + 0.5 * bottom;
+    }
     int fx, nx, fy, ny;
     vec3 wx, wy;
     tfi_mip_axis(q.x, srcSize.x, dstSize.x, fx, nx, wx);

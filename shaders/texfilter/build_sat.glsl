@@ -22,8 +22,9 @@
 //          Doubles (shaderFloat64) for the quantisation, so it rounds as the host does; define
 //          TF_SAT_NO_FP64 on a device without them: float quantisation, within one level of the host's
 //          (not bit for bit).
-// Cost:    pass 1 reads level 0; pass 2 reads it again and writes the row sums into satLow; pass 3 reads
-//          those and writes both tables: 2 reads of level 0 + 1 read and 2 writes of the tables.
+// Cost:    pass 1 reads level 0; pass 2 reads it again (quantising each texel once) and writes the row sums
+//          into satLow; pass 3 reads those and writes both tables: 2 reads of level 0, 1 read and 2 writes
+//          of the tables.
 //
 // The range words: 0..3 the smallest texel of R, G, B, A and 4..7 the largest, as order-preserving keys
 // (tf_sat_key); word 8 is the first non-finite texel, (index << 4) | (kind << 2) | channel with index =
@@ -31,7 +32,7 @@
 // from a non-finite texel is meaningless: check word 8 (tf::build_sat refuses such textures).
 // Quantisation (sat.glsl's header): offset = the smallest value, scale = largest − smallest rounded up to
 // float, q = round((v − offset)/scale · 65535), half away from zero, in double: the host's formula.
-// Row pass: one group a row; each invocation sums a run of the row, the group scans the runs, and the
+// Row pass: one group a row; each invocation sums a run of ≤ 16 texels of the row (256 runs cover 4096), the group scans the runs, and the
 // row's inclusive prefix sums (below 2^28) go to satLow (x + 1, y + 1), column 0 zero. Column pass: each
 // group 16 columns x 16 runs of rows; a run's sum, a scan over the 16 runs, then the running 40-bit sums
 // (two words, uaddCarry: no 64-bit integers) go to satLow and satHigh; row 0 zero.
@@ -42,7 +43,7 @@
 #error "texfilter/build_sat.glsl: define TF_SAT_LOAD(p), TF_SAT_LOAD_LOW, TF_SAT_STORE_LOW, TF_SAT_STORE_HIGH and TF_SAT_RANGE before including it"
 #endif
 #define TF_SAT_GROUP_SIZE 256
-#define TF_SAT_RANGE_TEXELS 16 // texels an invocation of the range pass reads
+#define TF_SAT_RANGE_TEXELS 16 // texels an invocation reads in the range pass, and the most in a row's run (4096 / 256)
 
 // Order-preserving float key: a < b  <=>  tf_sat_key(a) < tf_sat_key(b) (for non-NaN floats).
 uint tf_sat_key(float v)
@@ -182,19 +183,23 @@ void tf_sat_rows_pass(ivec2 size)
     if (row < 0)
         return;
     const vec4 offset = tf_sat_offset(TF_SAT_RANGE), scale = tf_sat_scale(TF_SAT_RANGE);
-    const int run = (size.x + TF_SAT_GROUP_SIZE - 1) / TF_SAT_GROUP_SIZE; // texels an invocation sums
+    // Texels an invocation sums: at most 16 (sides up to 4096), kept quantised for the second sweep.
+    const int run = (size.x + TF_SAT_GROUP_SIZE - 1) / TF_SAT_GROUP_SIZE;
     const int x0 = int(lid) * run, x1 = min(size.x, x0 + run);
+    uvec4 levels[TF_SAT_RANGE_TEXELS];
     uvec4 sum = uvec4(0u);
-    for (int x = x0; x < x1; ++x)
-        sum += tfi_sat_quantise4(TF_SAT_LOAD(ivec2(x, row)), offset, scale);
+    for (int k = 0; k < TF_SAT_RANGE_TEXELS && x0 + k < x1; ++k) {
+        levels[k] = tfi_sat_quantise4(TF_SAT_LOAD(ivec2(x0 + k, row)), offset, scale);
+        sum += levels[k];
+    }
     tfi_sat_runs[lid] = sum;
     tfi_sat_scan_runs();
     uvec4 prefix = lid > 0u ? tfi_sat_runs[lid - 1u] : uvec4(0u);
     if (lid == 0u)
         TF_SAT_STORE_LOW(ivec2(0, row + 1), uvec4(0u));
-    for (int x = x0; x < x1; ++x) {
-        prefix += tfi_sat_quantise4(TF_SAT_LOAD(ivec2(x, row)), offset, scale);
-        TF_SAT_STORE_LOW(ivec2(x + 1, row + 1), prefix);
+    for (int k = 0; k < TF_SAT_RANGE_TEXELS && x0 + k < x1; ++k) {
+        prefix += levels[k];
+        TF_SAT_STORE_LOW(ivec2(x0 + k + 1, row + 1), prefix);
     }
 }
 

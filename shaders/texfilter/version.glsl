@@ -1,6 +1,6 @@
 // texfilter/version.glsl — the version of these includes, as macros (no functions, no types):
 //          TF_VERSION_MAJOR, TF_VERSION_MINOR, TF_VERSION_PATCH, and
-//          TF_VERSION = MAJOR·10000 + MINOR·100 + PATCH (0.6.0 → 600), usable in #if.
+//          TF_VERSION = MAJOR·10000 + MINOR·100 + PATCH (0.7.0 → 700), usable in #if.
 //          It is the CMake project's version too (CMakeLists.txt refuses to configure when they differ).
 //
 // Use:     #include "texfilter/version.glsl"   (common.glsl, and so every include, pulls it in)
@@ -13,7 +13,7 @@
 #define TF_VERSION_GLSL
 
 #define TF_VERSION_MAJOR 0
-#define TF_VERSION_MINOR 6
+#define TF_VERSION_MINOR 7
 #define TF_VERSION_PATCH 0
 #define TF_VERSION (TF_VERSION_MAJOR * 10000 + TF_VERSION_MINOR * 100 + TF_VERSION_PATCH)
 
