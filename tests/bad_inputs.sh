@@ -737,6 +737,11 @@ gpu_builds() {
         "$TEXFILTER" build --texture missing.png --out build-out
     expect_error "build without a Vulkan driver" "no Vulkan driver" build-out -- \
         "${WITHOUT_VULKAN_DRIVER[@]}" "$TEXFILTER" build --texture checker --out build-out
+    expect_success "sample --build gpu --filter sat" ok_gpu_sat.csv -- \
+        "$TEXFILTER" sample --texture noise --texture-size 37 --filter sat --build gpu --lookups builds.csv -o ok_gpu_sat.csv
+    expect_success "render --build gpu --format rgba8-srgb" ok_gpu.png -- \
+        "$TEXFILTER" render --scene plane --texture checker --texture-size 40 --filter trilinear --size 16x16 \
+        --build gpu --format rgba8-srgb -o ok_gpu.png
     expect_success "build --build cpu --sat" build-cpu/sat.bin -- \
         "$TEXFILTER" build --texture checker --texture-size 64 --build cpu --sat --out build-cpu
 }
