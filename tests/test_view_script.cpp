@@ -265,4 +265,35 @@ TEST_CASE("helpers-check-the-verb")
     CHECK_THROWS_WITH(script_off(a[0]), "script_off does not apply to 'wait'");
 }
 
+// 7. The dynamic texture's actions: texture-animate on|off and texture-frame N (0..1000000, as render's
+//    --texture-frame), with their errors at their lines.
+TEST_CASE("texture-frame-actions")
+{
+    const std::vector<ScriptAction> a =
+        parse_script("texture dynamic --texture-size 128\ntexture-animate off\ntexture-frame 40\ntexture-animate on\n"
+                     "texture-frame 0\ntexture-frame 1000000\n",
+                     "dynamic.txt");
+    CHECK_EQ(a.size(), 6);
+    if (a.size() != 6)
+        return;
+    CHECK(script_texture(a[0]).name_or_path == "dynamic");
+    CHECK(a[1].verb == "texture-animate" && script_off(a[1]));
+    CHECK(a[2].verb == "texture-frame" && a[2].line == 3 && script_count(a[2]) == 40);
+    CHECK(a[3].verb == "texture-animate" && !script_off(a[3]));
+    CHECK(script_count(a[4]) == 0);
+    CHECK(script_count(a[5]) == 1000000);
+    CHECK_BAD_LINE("texture-frame", "texture-frame N");
+    CHECK_BAD_LINE("texture-frame 1 2", "texture-frame N");
+    CHECK_BAD_LINE("texture-frame -1", "texture frame '-1' is not a whole number in 0..1000000");
+    CHECK_BAD_LINE("texture-frame 1000001", "0..1000000");
+    CHECK_BAD_LINE("texture-frame 2.5", "texture frame '2.5'");
+    CHECK_BAD_LINE("texture-animate", "on|off");
+    CHECK_BAD_LINE("texture-animate maybe", "on or off");
+    CHECK_BAD_LINE("texture-animte on", "unknown action 'texture-animte'");
+    // The camera path's frame keeps its own bounds: the two counters are not confused.
+    CHECK_GOOD_LINE("frame 1000001");
+    // The texture action takes no frame: that is texture-frame's (its words are render's texture flags).
+    CHECK_BAD_LINE("texture dynamic --texture-frame 3", "unknown flag --texture-frame");
+}
+
 TEST_SUITE_END();

@@ -5,11 +5,13 @@
 #include "support.h"
 #include "flags/args.h"
 #include "flags/cli_common.h"
+#include "core/procedural.h"
 #include "view/view_state.h"
 #include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 
@@ -362,11 +364,98 @@ TEST_CASE("json-errors")
     CHECK_THROWS_WITH(read_state_file("/nonexistent/state.json"), "/nonexistent/state.json: cannot open");
 }
 
+// 6. The dynamic texture: its frame is on the render line (--texture-frame, with --build gpu when the viewer
+//    builds on the device), parses back through the CLI's texture_source_from, and round-trips through JSON;
+//    any other texture has no frame, on the line, in the JSON and in texture_source_from.
+TEST_CASE("dynamic-texture-frame")
+{
+    ViewState s = example_state();
+    s.texture.name_or_path = "dynamic";
+    s.texture.procedural_size = 512;
+    s.texture.build = TextureBuild::gpu;
+    s.texture.texture_frame = 12345;
+    for (const std::string& line : render_command_lines(s, "shot.png")) { // A's and B's: the same texture
+        const TextureSource back = texture_source_from(parse_render_line(line));
+        CHECK(back.name_or_path == "dynamic" && back.texture_frame == 12345 && back.build == TextureBuild::gpu &&
+                  back.procedural_size == 512,
+              line);
+    }
+    s.texture.texture_frame = 0; // frame 0 too: the line says which frame it shows
+    s.texture.build = TextureBuild::cpu;
+    const std::string zero = render_command_lines(s, "shot.png")[0];
+    CHECK(contains(zero, " --texture-frame 0 ") && !contains(zero, "--build"), zero);
+    CHECK(!contains(render_command_lines(example_state(), "shot.png")[0], "--texture-frame"));
+
+    s.texture.build = TextureBuild::gpu;
+    s.texture.texture_frame = max_texture_frame;
+    const std::string text = state_to_json(s);
+    const ViewState back = state_from_json(text, "dynamic.json");
+    CHECK(back.texture.texture_frame == max_texture_frame && back.texture.build == TextureBuild::gpu, text);
+    CHECK(state_to_json(back) == text);
+    auto json_refused = [&](const std::string& from, const std::string& to, const std::string& part) {
+        std::string edited_text = text;
+        const size_t at = edited_text.find(from);
+        CHECK(at != std::string::npos, from);
+        if (at == std::string::npos)
+            return;
+        const std::string message = json_error(edited_text.replace(at, from.size(), to));
+        CHECK(contains(message, "saved.json: texture.frame: ") && contains(message, part), message);
+    };
+    json_refused("\"frame\": 1000000", "\"frame\": 1000001", "0..1000000");
+    json_refused("\"frame\": 1000000", "\"frame\": -1", "0..1000000");
+    json_refused("\"frame\": 1000000", "\"frame\": \"7\"", "expected a whole number");
+    json_refused("\"name\": \"dynamic\"", "\"name\": \"grid\"", "only the dynamic texture has frames (the texture is grid)");
+
+    auto source_error = [](std::vector<std::string> argv) {
+        try {
+            texture_source_from(parse_args("render", argv, texture_flags(), 0));
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    const std::string other = source_error({"--texture", "checker", "--texture-frame", "3"});
+    CHECK(contains(other, "--texture-frame applies to --texture dynamic only") && contains(other, "'checker'"), other);
+    CHECK(contains(source_error({"--texture", "dynamic", "--texture-frame", "1000001"}), "--texture-frame"));
+    CHECK(source_error({"--texture", "dynamic", "--texture-frame", "1000000"}).empty());
+}
+
+// 7. What --texture-frame loads: dynamic_texture(size, N) as level 0, bit for bit, its host chain for a cpu
+//    build and level 0 alone for a gpu build (the device builds the rest); frame 0 is make_procedural's. A
+//    frame set on another texture (not through the CLI) is refused naming the texture.
+TEST_CASE("dynamic-texture-load")
+{
+    TextureSource source;
+    source.name_or_path = "dynamic";
+    source.procedural_size = 24;
+    source.texture_frame = 5;
+    const Image expected = dynamic_texture(24, 5);
+    auto same = [](const Image& a, const Image& b) {
+        return a.width == b.width && a.height == b.height &&
+               std::memcmp(a.texels.data(), b.texels.data(), a.texels.size() * sizeof(glm::vec4)) == 0;
+    };
+    const MipChain chain = load_texture(source);
+    CHECK(chain.levels.size() == build_mip_chain(expected).levels.size());
+    CHECK(same(chain.levels.at(0), expected));
+    CHECK(same(chain.levels.back(), build_mip_chain(expected).levels.back()));
+    TextureUse level0;
+    level0.level0_only = true;
+    const MipChain alone = load_texture(source, level0);
+    CHECK(alone.levels.size() == 1);
+    CHECK(same(alone.levels.at(0), expected));
+    CHECK(!same(expected, dynamic_texture(24, 6))); // the frames differ, so the checks above can fail
+    source.texture_frame = 0;
+    CHECK(same(load_texture(source).levels.at(0), make_procedural("dynamic", 24).levels[0]));
+    source.name_or_path = "noise";
+    source.texture_frame = 2;
+    CHECK_THROWS_WITH(load_texture(source), "texture noise: --texture-frame 2 applies to the dynamic procedural texture only");
+}
+
 TEST_SUITE_END();
 
 TEST_SUITE_BEGIN("gpu");
 
-// 6. The lines run: `texfilter render` accepts each (A and B, an output path a shell must quote) and
+// 8. The lines run: `texfilter render` accepts each (A and B, an output path a shell must quote) and
 //    writes its PNG. Frames without --camera/--frame/--view, which render does not take yet on its own.
 TEST_CASE("command-lines-run")
 {

@@ -10,7 +10,7 @@
 set -euo pipefail
 
 CASE_GROUPS=(no-display bad-script scene-plane scene-tunnel scene-zoom scene-minify scene-slanted scene-triangles
-             scene-mesh split debug-views truth camera state x-capture window-events ui)
+             scene-mesh split debug-views truth camera state x-capture window-events ui dynamic-texture)
 if [[ ${1:-} == --list ]]; then
     printf '%s\n' "${CASE_GROUPS[@]}"
     exit 0
@@ -252,6 +252,42 @@ quit"
     viewer_ok ui || exit 1
     if "$TEXFILTER" diff whole.png bare.png >/dev/null 2>&1; then fail ui "the UI screenshot shows no panels"; else
         pass "screenshot-ui holds the panels, screenshot does not"; fi
+    ;;
+dynamic-texture)
+    # --build gpu: the texture is made and built on the device every drawn frame; each screenshot's line names
+    # its frame (--texture-frame) and renders it the offscreen way (level 0 uploaded, the chain built there).
+    # (--build cpu and --texture-frame on other textures: tests/test_view_state.cpp, no window needed.)
+    view "ui off
+wait 3
+screenshot animated.png
+texture-animate on
+wait 4
+screenshot later.png
+texture-frame 40
+screenshot chosen.png
+filter sat
+screenshot still.png
+quit" --texture dynamic --texture-size 128 --build gpu --filter trilinear
+    viewer_ok "dynamic texture" || exit 1
+    frames=()
+    for shot in animated later chosen; do
+        frames+=("$(sed -n 's/.*--texture-frame \([0-9]*\).*/\1/p' $shot.txt)")
+        grep -q -- "--build gpu" $shot.txt || fail $shot "$shot.txt lacks --build gpu"
+    done
+    # wait N draws N frames, each one texture frame on; a screenshot stops the animation where it is.
+    [[ "${frames[*]}" == "3 7 40" ]] || fail dynamic-texture "texture frames ${frames[*]}, expected 3 7 40"
+    # Two frames (animated to, and set) each equal their render; frames differ from each other.
+    for shot in animated chosen; do
+        same_as_render "dynamic texture $shot: screenshot = texfilter render --texture-frame --build gpu" $shot.png
+    done
+    for pair in "animated later" "animated chosen"; do
+        set -- $pair
+        if "$TEXFILTER" diff $1.png $2.png >/dev/null 2>&1; then fail dynamic-texture "$1 and $2 look the same"; else
+            pass "the texture moves: $1 and $2 differ"; fi
+    done
+    grep -q "sat filters need a static texture" view.stderr || fail dynamic-texture "no message refusing sat"
+    if cmp -s chosen.png still.png; then pass "sat refused on the dynamic texture, the frame kept"; else
+        fail dynamic-texture "the frame changed after the refused sat filter"; fi
     ;;
 *) echo "unknown group $GROUP" >&2; exit 2 ;;
 esac

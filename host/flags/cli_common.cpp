@@ -10,6 +10,8 @@ std::vector<FlagSpec> texture_flags()
 {
     return {{"--texture", "T|PATH", "procedural texture (checker, zoneplate, grid, noise, mipcolors, dynamic) or an image file"},
             {"--texture-size", "N", "side of a procedural texture in texels (default 256)"},
+            {"--texture-frame", "N", "--texture dynamic: its frame, 0..1000000 (default 0; the viewer animates it "
+                                     "with --build gpu)"},
             {"--linear", "", "the image file holds data/linear values: no sRGB decode"},
             {"--format", "F", "what the texture is uploaded as: " + texture_format_names() +
                                   " (default rgba32f; every level rounded to it, on both backends)"},
@@ -79,6 +81,12 @@ TextureSource texture_source_from(const Args& args)
     source.color = args.has("--linear") ? ColorSpace::linear : ColorSpace::automatic;
     source.format = parse_flag(args, "--format", "rgba32f", parse_texture_format);
     source.build = parse_flag(args, "--build", "cpu", parse_texture_build);
+    if (args.has("--texture-frame")) {
+        source.texture_frame = args.get_int("--texture-frame", 0, 0, max_texture_frame);
+        if (!is_dynamic_texture(source))
+            throw Error("--texture-frame applies to --texture dynamic only (the animated procedural texture), not to '" +
+                        source.name_or_path + "'");
+    }
     if (source.build == TextureBuild::gpu) {
         check_gpu_build(source.format, source.name_or_path);
         if (args.get("--backend", "vulkan") == "reference")

@@ -16,6 +16,12 @@ TextureSize check_texture(const TextureSource& source, const TextureUse& use)
         height = header.height;
     }
     const std::string what = procedural ? "texture " + source.name_or_path : source.name_or_path;
+    if (source.texture_frame < 0 || source.texture_frame > max_texture_frame)
+        throw Error(what + ": texture frame " + std::to_string(source.texture_frame) + " is outside 0.." +
+                    std::to_string(max_texture_frame));
+    if (source.texture_frame != 0 && !is_dynamic_texture(source))
+        throw Error(what + ": --texture-frame " + std::to_string(source.texture_frame) +
+                    " applies to the dynamic procedural texture only (--texture dynamic)");
     if (use.sat && (width > sat_max_dimension || height > sat_max_dimension))
         throw Error(what + ": " + std::to_string(width) + "x" + std::to_string(height) +
                     " is larger than the summed-area table allows (" + std::to_string(sat_max_dimension) +
@@ -31,6 +37,8 @@ TextureSize check_texture(const TextureSource& source, const TextureUse& use)
     return {width, height};
 }
 
+bool is_dynamic_texture(const TextureSource& source) { return source.name_or_path == "dynamic"; }
+
 bool streams_level0(const TextureSource& source) { return !is_procedural(source.name_or_path); }
 
 void read_level0(const TextureSource& source, TextureSize size, glm::vec4* texels)
@@ -44,7 +52,11 @@ MipChain load_texture(const TextureSource& source, const TextureUse& use)
 {
     check_texture(source, use);
     MipChain chain;
-    if (is_procedural(source.name_or_path))
+    if (is_dynamic_texture(source) && use.level0_only) // the device builds the rest
+        chain.levels.push_back(dynamic_texture(source.procedural_size, source.texture_frame));
+    else if (is_dynamic_texture(source))
+        chain = build_mip_chain(dynamic_texture(source.procedural_size, source.texture_frame));
+    else if (is_procedural(source.name_or_path))
         chain = make_procedural(source.name_or_path, source.procedural_size);
     else if (use.level0_only)
         chain.levels.push_back(read_image(source.name_or_path, source.color, max_texture_dimension));

@@ -21,7 +21,15 @@ struct TextureSource {
     // --build: cpu builds the MIP chain (and SAT) on the host and uploads every level; gpu uploads level 0 and
     // the device builds the rest (core/texture_build.h).
     TextureBuild build = TextureBuild::cpu;
+    // --texture-frame: the frame of the "dynamic" procedural texture (tf::dynamic_texture; 0 = make_procedural's);
+    // any other texture must leave it 0 (load_texture and check_texture refuse it).
+    int texture_frame = 0;
 };
+
+// The animated procedural texture: the only one with frames (--texture-frame), rebuilt every frame on the
+// device by the viewer with --build gpu (vulkan/dynamic_texture.h).
+bool is_dynamic_texture(const TextureSource& source);
+constexpr int max_texture_frame = 1000000;
 
 // What the texture will be used for, which decides how much memory loading it takes.
 struct TextureUse {

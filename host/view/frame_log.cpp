@@ -16,10 +16,11 @@ void FrameLog::add(const Viewer& v)
     if (path.empty() || frames >= 1000000) // bounded: a long session keeps its first million frames
         return;
     char row[256];
-    std::snprintf(row, sizeof row, "%d,%s,%s,%s,%d,%d,%.3f,%.3f,%d\n", frames, to_string(v.state.scene).c_str(),
+    std::snprintf(row, sizeof row, "%d,%s,%s,%s,%d,%d,%.3f,%.3f,%d,%d,%.3f\n", frames, to_string(v.state.scene).c_str(),
                   to_string(v.images.a.options.filter).c_str(),
                   v.images.has_b ? to_string(v.images.b.options.filter).c_str() : "", v.scene_width, v.scene_height,
-                  v.stats.frame_ms, v.stats.render_ms, v.stats.preview_scale);
+                  v.stats.frame_ms, v.stats.render_ms, v.stats.preview_scale,
+                  v.images.dynamic ? v.state.texture.texture_frame : -1, v.stats.texture_ms);
     rows += row;
     ++frames;
 }
@@ -27,7 +28,7 @@ void FrameLog::add(const Viewer& v)
 void FrameLog::write() const
 {
     if (!path.empty())
-        write_file_atomic(path, "frame,scene,filter_a,filter_b,width,height,frame_ms,render_ms,preview_scale\n" + rows);
+        write_file_atomic(path, "frame,scene,filter_a,filter_b,width,height,frame_ms,render_ms,preview_scale,texture_frame,texture_ms\n" + rows);
 }
 
 } // namespace tf

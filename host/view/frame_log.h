@@ -1,6 +1,7 @@
 #pragma once
 // --frame-log FILE: one CSV row a presented frame (frame time, the scene's render time, preview fraction,
-// filters), for the viewer benchmark (docs/BENCHMARKS.md). Written atomically when the viewer ends.
+// filters, the dynamic texture's frame (-1: none) and rebuild time), for the viewer benchmark
+// (docs/BENCHMARKS.md, docs/VIEWER.md). Written atomically when the viewer ends.
 #include <string>
 
 namespace tf {

@@ -1,6 +1,7 @@
 // Mouse and keys: fly (WASD, Q/E down/up, wheel forward), drag with the right button to turn (or, in orbit
 // mode, to swing around the point the centre of the view looks at), R resets, space toggles the animation,
-// L the loupe, F12 takes a screenshot. Only when the UI does not want the input.
+// T the dynamic texture's animation, ',' and '.' step its frame back and forward (pausing it), L the loupe,
+// F12 takes a screenshot. Only when the UI does not want the input.
 #include "view/viewer.h"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -34,6 +35,14 @@ void handle_input(Viewer& v, double seconds)
             v.controls.camera_set = false;
             scene_changed(v);
             return;
+        }
+        if (ImGui::IsKeyPressed(GLFW_KEY_T))
+            v.controls.texture_animate = !v.controls.texture_animate;
+        const int step = ImGui::IsKeyPressed(GLFW_KEY_PERIOD) - ImGui::IsKeyPressed(GLFW_KEY_COMMA);
+        if (step != 0 && is_dynamic_texture(v.state.texture)) {
+            v.controls.texture_animate = false;
+            const int frame = v.state.texture.texture_frame + step;
+            v.controls.message = set_viewer_texture_frame(v, frame < 0 ? max_texture_frame : frame % (max_texture_frame + 1));
         }
         if (ImGui::IsKeyPressed(GLFW_KEY_L))
             v.controls.loupe = !v.controls.loupe;

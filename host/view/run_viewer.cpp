@@ -15,10 +15,12 @@ bool same_half(const HalfImage& half, const SamplerOptions& options, const Rende
     return same_options(half.options, options) && same_render(half.render, render);
 }
 
+// The dynamic texture built on the device changes frame without a reload (set_texture_frame); on the host
+// a new frame is a new chain.
 bool same_texture(const TextureSource& a, const TextureSource& b)
 {
     return a.name_or_path == b.name_or_path && a.procedural_size == b.procedural_size && a.color == b.color &&
-           a.build == b.build;
+           a.build == b.build && (rebuilt_on_device(a) || a.texture_frame == b.texture_frame);
 }
 
 SamplerOptions truth_options(const SamplerOptions& a) { return truth_half(ViewHalf{a}).options; }
@@ -66,19 +68,35 @@ std::string apply_state(Viewer& v, const ViewState& requested)
         v.controls.message = std::string(e.what()) + ": fragment stage, fine derivatives instead";
     }
     const bool first = im.chain.levels.empty();
+    if (!is_dynamic_texture(next.texture))
+        next.texture.texture_frame = 0; // only the dynamic texture has frames
+    if (rebuilt_on_device(next.texture) && needs_sat(next)) {
+        const std::string problem = "the dynamic texture is rebuilt on the device every frame, without a summed-area "
+                                    "table: sat filters need a static texture (--build cpu, or another texture)";
+        if (first)
+            throw Error(problem);
+        return problem; // the previous state stays
+    }
     if (first || !same_texture(next.texture, v.state.texture)) {
         try {
             DeviceLimits limits = device_limits(v.context.info);
+            // The dynamic texture's host chain (its frame now) gives the sizes and the footprint; the device
+            // makes every frame's texels itself.
             MipChain chain = load_texture(next.texture, {needs_sat(next), &limits});
-            v.state.texture = next.texture;
             im.build = next.texture.build;
-            set_texture(im, std::move(chain));
+            if (rebuilt_on_device(next.texture))
+                set_dynamic_texture(im, std::move(chain));
+            else
+                set_texture(im, std::move(chain));
+            v.state.texture = next.texture;
         } catch (const Error& e) {
             if (first)
                 throw;
             return e.what(); // the previous texture stays
         }
         scene_changed(v);
+    } else if (rebuilt_on_device(next.texture)) {
+        v.state.texture.texture_frame = next.texture.texture_frame; // built before the next frame renders
     }
     const bool scene_moved = next.scene != v.state.scene || next.frame != v.state.frame || first;
     const RenderOptions a_render = half_render(next, next.view, next.a.options);
@@ -167,6 +185,8 @@ void view_until_closed(const ViewOptions& options)
                 ++v.state.frame;
                 scene_changed(v);
             }
+            if (texture_animates(v)) // rebuilt on the device before the next frame's renders
+                advance_texture_frame(v);
             log.add(v);
         } else {
             wait_events(0.02); // minimised: nothing to draw until the window comes back

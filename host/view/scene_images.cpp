@@ -1,5 +1,6 @@
 #include "view/scene_images.h"
 #include "reference/scene_cast.h"
+#include "vulkan/context.h"
 #include <algorithm>
 #include <chrono>
 
@@ -29,7 +30,7 @@ GpuRenderer& renderer_for(SceneImages& images, HalfImage& half, const SceneParam
         half.shown = nullptr;
         half.renderers.clear();
     }
-    auto made = create_renderer(*images.context, images.texture, scene, half.options, half.render);
+    auto made = create_renderer(*images.context, bound_texture(images), scene, half.options, half.render);
     return *half.renderers.emplace(key, std::move(made)).first->second;
 }
 
@@ -45,7 +46,16 @@ SceneParams scaled_scene(const SceneParams& scene, int scale)
     return s;
 }
 
+void destroy_dynamic(SceneImages& images)
+{
+    if (images.dynamic && images.context)
+        destroy_dynamic_texture(*images.context, *images.dynamic);
+    images.dynamic.reset();
+    images.dynamic_frame = -1;
+}
+
 } // namespace
+
 
 bool same_options(const SamplerOptions& a, const SamplerOptions& b)
 {
@@ -65,13 +75,49 @@ int samples_per_pixel(const SamplerOptions& options)
     return options.filter == Filter::ground_truth ? options.truth_side * options.truth_side : 1;
 }
 
+const GpuTexture& bound_texture(const SceneImages& images)
+{
+    return images.dynamic ? images.dynamic->build.texture : images.texture;
+}
+
 void destroy_scene_images(SceneImages& images)
 {
     for (HalfImage* h : {&images.a, &images.b, &images.truth, &images.stats})
         h->renderers.clear();
     if (images.context)
         destroy_texture(*images.context, images.texture);
+    destroy_dynamic(images);
     images.texture_has_sat = false;
+}
+
+void set_dynamic_texture(SceneImages& images, MipChain chain)
+{
+    // First: a failure keeps the old one.
+    DynamicTexture made = create_dynamic_texture(*images.context, chain.levels[0].width);
+    for (HalfImage* h : {&images.a, &images.b, &images.truth, &images.stats}) {
+        h->renderers.clear(); // their descriptor sets name the old images
+        start_over(*h);
+    }
+    destroy_texture(*images.context, images.texture);
+    destroy_dynamic(images);
+    images.dynamic = made;
+    images.texture_has_sat = false;
+    images.chain = std::move(chain);
+}
+
+bool set_texture_frame(SceneImages& images, int frame)
+{
+    if (!images.dynamic || images.dynamic_frame == frame)
+        return false;
+    const auto start = std::chrono::steady_clock::now();
+    // Its own submission, before the halves' renders of this frame (render_frame submits on the same queue):
+    // the build's last barrier makes the chain visible to their fragment and compute reads, and its first
+    // orders the last frame's reads before level 0 is rewritten.
+    submit_and_wait(*images.context, [&](VkCommandBuffer cb) { record_dynamic_frame(cb, *images.dynamic, frame); });
+    images.dynamic_frame = frame;
+    images.dynamic_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    restart(images);
+    return true;
 }
 
 void set_texture(SceneImages& images, MipChain chain)
@@ -84,6 +130,7 @@ void set_texture(SceneImages& images, MipChain chain)
         start_over(*h);
     }
     destroy_texture(*images.context, images.texture);
+    destroy_dynamic(images);
     images.texture = uploaded;
     images.texture_has_sat = sat;
     images.chain = std::move(chain);
@@ -95,7 +142,7 @@ void set_half_options(SceneImages& images, HalfImage& half, const SamplerOptions
     half.render = render;
     start_over(half);
     half.renderers.clear();
-    if (needs_sat(options.filter) && !images.texture_has_sat) {
+    if (needs_sat(options.filter) && !images.texture_has_sat && !images.dynamic) { // apply_state refuses sat there
         MipChain chain = images.chain;
         set_texture(images, std::move(chain));
     }

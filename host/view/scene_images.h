@@ -5,9 +5,14 @@
 // so the UI stays interactive on a CPU rasterizer) and at full size when it rests. A half whose filter is
 // ground-truth, and the truth itself, accumulate their samples a chunk a frame, in the sample pattern of
 // `--filter ground-truth`, so that the finished image is that render's.
+//
+// The dynamic texture with --build gpu (`--texture dynamic`): a DynamicTexture the halves' renderers bind,
+// regenerated and rebuilt on the device for each new texture frame (set_texture_frame) in a submission before
+// the halves render that frame; no summed-area table (sat filters need a static texture).
 #include "scene/scene.h"
 #include "texture/mip.h"
 #include "vulkan/render.h"
+#include "vulkan/dynamic_texture.h"
 #include "vulkan/upload.h"
 #include <map>
 #include <memory>
@@ -34,7 +39,10 @@ struct SceneImages {
     const VulkanContext* context = nullptr;
     MipChain chain;      // the host's chain (the CPU side: the truth's texels, the loupe)
     TextureBuild build = TextureBuild::cpu; // --build: gpu uploads level 0 and the device builds the rest
-    GpuTexture texture;
+    GpuTexture texture;  // a static texture (none while `dynamic` is)
+    std::optional<DynamicTexture> dynamic; // --texture dynamic --build gpu: level 0 made and built on the device
+    int dynamic_frame = -1; // the frame `dynamic` holds; -1: none yet
+    double dynamic_ms = 0;  // its last rebuild's wall time (submission and wait)
     bool texture_has_sat = false;
     HalfImage a, b, truth;
     HalfImage stats; // fetches_per_pixel's renders
@@ -44,6 +52,16 @@ struct SceneImages {
 void destroy_scene_images(SceneImages& images);
 // Replaces the texture (uploads with a summed-area table when a half needs one); the halves start over.
 void set_texture(SceneImages& images, MipChain chain);
+// Replaces the texture by a DynamicTexture of side `chain`'s (the host's frame: sizes, the footprint); its
+// frame is built by the first set_texture_frame. The halves start over.
+void set_dynamic_texture(SceneImages& images, MipChain chain);
+// The dynamic texture at `frame`: when it holds another, level 0 is regenerated and the chain rebuilt on the
+// device (one submission, waited for) and every half starts over. Returns true when it rebuilt; false
+// without a dynamic texture.
+bool set_texture_frame(SceneImages& images, int frame);
+// What the halves' renderers bind: the dynamic texture's, or the static one.
+const GpuTexture& bound_texture(const SceneImages& images);
+
 // New filter options for a half: its renderers go, it starts over.
 void set_half_options(SceneImages& images, HalfImage& half, const SamplerOptions& options, const RenderOptions& render);
 // The scene changed (camera, frame, size): every half starts over, renderers kept.

@@ -122,6 +122,10 @@ int count(const ScriptAction& a)
         expect_words(a, 1, "hold MS");
         return int(whole(a.words[0], 0, 60000, "milliseconds"));
     }
+    if (a.verb == "texture-frame") {
+        expect_words(a, 1, "texture-frame N");
+        return int(whole(a.words[0], 0, max_texture_frame, "texture frame"));
+    }
     expect_words(a, 1, "frame N");
     return int(whole(a.words[0], 0, 1L << 30, "frame"));
 }
@@ -219,6 +223,8 @@ const Verb kVerbs[] = {
     {"quit", [](const ScriptAction& a) { expect_words(a, 0, "quit"); }},
     {"camera", check_camera},
     {"animate", [](const ScriptAction& a) { on_off(a); }},
+    {"texture-animate", [](const ScriptAction& a) { on_off(a); }},
+    {"texture-frame", [](const ScriptAction& a) { count(a); }},
     {"truth", [](const ScriptAction& a) { on_off(a); }},
     {"view", [](const ScriptAction& a) { view_name(a); }},
     {"divider", [](const ScriptAction& a) { divider(a); }},
@@ -336,7 +342,7 @@ SamplerOptions script_sampler(const ScriptAction& a)
 
 bool script_off(const ScriptAction& a)
 {
-    require_verb(a, {"compare", "loupe", "animate", "truth", "ui"}, "script_off");
+    require_verb(a, {"compare", "loupe", "animate", "texture-animate", "truth", "ui"}, "script_off");
     return a.words.size() == 1 && a.words[0] == "off";
 }
 
@@ -348,7 +354,7 @@ std::pair<int, int> script_size(const ScriptAction& a)
 
 int script_count(const ScriptAction& a)
 {
-    require_verb(a, {"wait", "hold", "frame"}, "script_count");
+    require_verb(a, {"wait", "hold", "frame", "texture-frame"}, "script_count");
     return at_line(a, [&] { return count(a); });
 }
 

@@ -15,6 +15,7 @@
 //   loupe X Y ZOOM (pixels >= 0, zoom 1..64) | loupe off   cursor X Y   minimize   restore
 //   close (as the window's close button; the last action)   ui on|off (the panels)
 //   stage fragment|compute           derivatives fine|coarse|ray
+//   texture-animate on|off (the dynamic texture's frames)   texture-frame N (0..1000000, the dynamic texture)
 //
 // Use:     for (const ScriptAction& a : read_script(path)) if (a.verb == "filter") set_a(script_sampler(a)); ...
 // Cost:    reads the file once; the typed helpers re-parse one action's words (microseconds). They are for
@@ -46,9 +47,9 @@ std::vector<ScriptAction> read_script(const std::string& path);
 SceneKind script_scene(const ScriptAction& action);                 // scene
 TextureSource script_texture(const ScriptAction& action);           // texture
 SamplerOptions script_sampler(const ScriptAction& action);          // filter, compare F
-bool script_off(const ScriptAction& action);                        // compare/loupe/animate/truth/ui: "off"
+bool script_off(const ScriptAction& action);                        // compare/loupe/animate/texture-animate/truth/ui: "off"
 std::pair<int, int> script_size(const ScriptAction& action);        // resize
-int script_count(const ScriptAction& action);                       // wait, hold, frame
+int script_count(const ScriptAction& action);                       // wait, hold, frame, texture-frame
 std::string script_path(const ScriptAction& action);                // screenshot, screenshot-ui
 std::string script_word(const ScriptAction& action);                // view, stage, derivatives, camera's sub-verb
 Stage script_stage(const ScriptAction& action);                     // stage

@@ -12,20 +12,22 @@ void run_action(Viewer& v, const ScriptAction& a, ScriptRun& run)
 {
     const std::string& verb = a.verb;
     ViewState next = v.state;
-    auto apply = [&] {
-        std::string problem = apply_state(v, next);
+    auto report = [&](const std::string& problem, const char* kept) {
         if (!problem.empty()) { // shown in the UI, as a dropped file's would be; the script goes on
             v.controls.message = problem;
-            std::fprintf(stderr, "texfilter view: %s:%d: %s (the previous texture is kept)\n",
-                         v.options.script_name.c_str(), a.line, problem.c_str());
+            std::fprintf(stderr, "texfilter view: %s:%d: %s (%s)\n", v.options.script_name.c_str(), a.line,
+                         problem.c_str(), kept);
         }
     };
+    auto apply = [&] { report(apply_state(v, next), "the previous texture is kept"); };
     if (verb == "scene") {
         next.scene = script_scene(a);
         v.controls.camera_set = false;
         apply();
     } else if (verb == "texture") {
         next.texture = script_texture(a);
+        next.texture.build = v.state.texture.build; // built where the viewer's --build says
+        next.texture.memory_budget = v.state.texture.memory_budget;
         apply();
     } else if (verb == "filter") {
         next.a.options = script_sampler(a);
@@ -89,6 +91,14 @@ void run_action(Viewer& v, const ScriptAction& a, ScriptRun& run)
         scene_changed(v);
     } else if (verb == "animate") {
         v.controls.animate = !script_off(a);
+    } else if (verb == "texture-animate") {
+        v.controls.texture_animate = !script_off(a);
+        if (v.controls.texture_animate && !rebuilt_on_device(v.state.texture))
+            report("texture-animate: only the dynamic texture with --build gpu animates (the texture is " +
+                       v.state.texture.name_or_path + ", built on the " + to_string(v.state.texture.build) + ")",
+                   "it stays as it is");
+    } else if (verb == "texture-frame") {
+        report(set_viewer_texture_frame(v, script_count(a)), "the frame is unchanged");
     } else if (verb == "divider") {
         v.state.divider = float(script_divider(a));
     } else if (verb == "loupe") {

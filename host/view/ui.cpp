@@ -102,6 +102,9 @@ void hud(Viewer& v)
         ImGui::Text("%s", v.context.info.name.c_str());
         ImGui::Text("%s %s", v.context.info.driver_name.c_str(), v.context.info.driver_info.c_str());
         ImGui::Text("frame %d of the camera path%s", v.state.frame, v.controls.animate ? " (animating)" : "");
+        if (v.images.dynamic)
+            ImGui::Text("texture frame %d%s, rebuilt on the device: %.1f ms", v.state.texture.texture_frame,
+                        texture_animates(v) ? " (animating)" : "", v.images.dynamic_ms);
     }
     ImGui::End();
 }
@@ -209,6 +212,16 @@ void build_ui(Viewer& v)
         }
         ImGui::SameLine();
         ImGui::TextDisabled("(or drop an image file on the window)");
+        if (is_dynamic_texture(v.state.texture)) { // its frame; with --build gpu it animates, rebuilt on the device
+            if (rebuilt_on_device(v.state.texture))
+                ImGui::Checkbox("animate the texture (T)", &v.controls.texture_animate);
+            int frame = next.texture.texture_frame;
+            if (ImGui::InputInt("texture frame", &frame) && frame != next.texture.texture_frame) {
+                next.texture.texture_frame = std::clamp(frame, 0, max_texture_frame);
+                v.controls.texture_animate = false; // a frame chosen is a frame to look at
+                changed = true;
+            }
+        }
         if (!v.controls.message.empty())
             ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", v.controls.message.c_str());
         changed |= enum_combo("stage", next.render.stage, 0, 1, stage_name);

@@ -270,6 +270,8 @@ std::vector<std::string> render_flag_words(const ViewState& state, const ViewHal
         words.insert(words.end(), {"--memory-budget", std::to_string(state.texture.memory_budget)});
     if (state.texture.build == TextureBuild::gpu)
         words.insert(words.end(), {"--build", "gpu"});
+    if (is_dynamic_texture(state.texture)) // the frame shown: the viewer animates it
+        words.insert(words.end(), {"--texture-frame", std::to_string(state.texture.texture_frame)});
     const std::vector<std::string> sampler = sampler_flag_words(half.options);
     words.insert(words.end(), sampler.begin(), sampler.end());
     words.insert(words.end(), {"--size", std::to_string(state.width) + "x" + std::to_string(state.height), "--stage",
@@ -320,7 +322,8 @@ std::string state_to_json(const ViewState& state)
                 {"size", state.texture.procedural_size},
                 {"linear", state.texture.color == ColorSpace::linear},
                 {"memory-budget", state.texture.memory_budget},
-                {"build", to_string(state.texture.build)}}},
+                {"build", to_string(state.texture.build)},
+                {"frame", state.texture.texture_frame}}},
               {"render", {{"stage", to_string(state.render.stage)}, {"derivatives", to_string(state.render.gradients)}}},
               {"width", state.width},
               {"height", state.height},
@@ -350,7 +353,7 @@ ViewState state_from_json(const std::string& text, const std::string& name)
     s.scene = r.parsed("scene", [&] { return parse_scene(r.string(r.member(j, "scene", "scene"), "scene")); });
 
     const json& texture = r.member(j, "texture", "texture");
-    r.only(texture, "texture", {"name", "size", "linear", "memory-budget", "build"});
+    r.only(texture, "texture", {"name", "size", "linear", "memory-budget", "build", "frame"});
     s.texture.name_or_path = r.string(r.member(texture, "texture.name", "name"), "texture.name");
     if (s.texture.name_or_path.empty())
         r.fail("texture.name", "empty (a procedural name or an image file)");
@@ -364,6 +367,11 @@ ViewState state_from_json(const std::string& text, const std::string& name)
     if (texture.contains("build"))
         s.texture.build = r.parsed("texture.build",
                                    [&] { return parse_texture_build(r.string(texture["build"], "texture.build")); });
+    if (texture.contains("frame")) {
+        s.texture.texture_frame = r.integer(texture["frame"], "texture.frame", 0, max_texture_frame);
+        if (s.texture.texture_frame != 0 && !is_dynamic_texture(s.texture))
+            r.fail("texture.frame", "only the dynamic texture has frames (the texture is " + s.texture.name_or_path + ")");
+    }
     if (texture.contains("memory-budget")) {
         const json& budget = texture["memory-budget"];
         if (!budget.is_number_unsigned() && !(budget.is_number_integer() && budget.get<long long>() >= 0))

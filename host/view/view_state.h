@@ -10,7 +10,8 @@
 // Options: a flag goes on the command line when it matters for the half's filter (its exact value, floats
 //          %.9g so they round-trip) or when it differs from the CLI's default; the ground truth's sample range
 //          (truth_first, truth_count) is the viewer's progressive state and never written: the line renders
-//          the whole grid, what the accumulation converges to.
+//          the whole grid, what the accumulation converges to. The dynamic texture's line always names its
+//          frame (--texture-frame N, JSON texture.frame): the viewer animates it.
 // Cost:    string building; no device, no files.
 #include "core/filter.h"
 #include "io/texture_source.h"

@@ -22,9 +22,29 @@ constexpr int truth_samples_a_step = 4;
 
 } // namespace
 
+bool rebuilt_on_device(const TextureSource& t) { return is_dynamic_texture(t) && t.build == TextureBuild::gpu; }
+
+bool texture_animates(const Viewer& v) { return v.controls.texture_animate && v.images.dynamic.has_value(); }
+
+void advance_texture_frame(Viewer& v)
+{
+    int& frame = v.state.texture.texture_frame;
+    frame = frame >= max_texture_frame ? 0 : frame + 1;
+}
+
+std::string set_viewer_texture_frame(Viewer& v, int frame)
+{
+    if (!is_dynamic_texture(v.state.texture))
+        return "texture " + v.state.texture.name_or_path + " has no frames (only the dynamic texture animates)";
+    ViewState next = v.state;
+    next.texture.texture_frame = frame;
+    return apply_state(v, next); // --build gpu: rebuilt on the device; cpu: a new host chain
+}
+
+// Like the camera's animation, a texture animating renders previews: each frame is a new image.
 bool moving_now(const Viewer& v)
 {
-    return v.controls.animate || std::chrono::steady_clock::now() - v.last_move < settle_time;
+    return v.controls.animate || texture_animates(v) || std::chrono::steady_clock::now() - v.last_move < settle_time;
 }
 
 bool images_complete(const Viewer& v)
@@ -93,6 +113,8 @@ void recreate_swapchain(Viewer& v, int width, int height)
 // The halves one step on; previews adapt their fraction to the frame budget.
 void update_images(Viewer& v)
 {
+    // A new texture frame first, in its own submission: the halves then render from it.
+    v.stats.texture_ms = set_texture_frame(v.images, v.state.texture.texture_frame) ? v.images.dynamic_ms : 0.0;
     const bool preview = v.options.preview && moving_now(v);
     const int scale = preview ? v.preview_scale : 1;
     const SceneParams scene = current_scene(v);
@@ -294,6 +316,8 @@ void finish_images(Viewer& v)
 {
     v.last_move = {};
     v.controls.animate = false;
+    v.controls.texture_animate = false; // the texture stays at the frame shot
+    set_texture_frame(v.images, v.state.texture.texture_frame);
     const SceneParams scene = current_scene(v);
     SceneImages& im = v.images;
     // Bounded: each step adds at least one sample, and a ground truth has at most 4096.

@@ -1,7 +1,8 @@
 #pragma once
 // texfilter view: the window, its swapchain and UI, the scene images, and the loop that ties them. One
 // frame in flight: the scene renders synchronously (render_frame), then the composition and the UI are
-// recorded, submitted and presented.
+// recorded, submitted and presented. The dynamic texture (--texture dynamic --build gpu) is rebuilt on the
+// device first, in its own submission, for each new texture frame (SceneImages::dynamic).
 #include "view/compose.h"
 #include "view/imgui_layer.h"
 #include "view/scene_images.h"
@@ -32,6 +33,9 @@ struct ViewControls {
     Camera camera;
     bool camera_set = false; // false: the scene's own camera
     bool animate = false;
+    // The dynamic texture (--texture dynamic --build gpu) steps one texture frame a drawn frame, rebuilt on the
+    // device each time; off: it stays at its frame (nothing rebuilt).
+    bool texture_animate = true;
     bool truth = false;       // B is the ground truth, accumulated progressively
     bool ui = true;           // panels shown
     bool loupe = false;
@@ -50,6 +54,7 @@ struct ViewControls {
 
 struct FrameStats {
     double frame_ms = 0, render_ms = 0;
+    double texture_ms = 0; // the dynamic texture's rebuild this frame (0: none)
     int preview_scale = 1; // 1: full size
     double fetches_per_pixel = -1; // A's, measured when the view settles with the HUD shown
     bool fetches_measured = false;
@@ -93,8 +98,16 @@ bool draw_frame(Viewer& viewer, bool with_ui, const Buffer* capture = nullptr);
 void finish_images(Viewer& viewer);
 std::string view_title(const Viewer& viewer);
 
+// The dynamic texture made and built on the device, frame by frame (the viewer's SceneImages::dynamic).
+bool rebuilt_on_device(const TextureSource& texture);
+bool texture_animates(const Viewer& viewer); // rebuilt on the device and animating
+// The next texture frame (after max_texture_frame, 0 again): the halves re-render at the next draw_frame.
+void advance_texture_frame(Viewer& viewer);
+// A problem (for the UI and the script's stderr) when the texture has no frames; else sets it, "".
+std::string set_viewer_texture_frame(Viewer& viewer, int frame);
+
 void upload_compose_images(Viewer& viewer); // the halves' images into the composition pass's buffers
-bool moving_now(const Viewer& viewer);      // the camera moved within the settle time, or animates
+bool moving_now(const Viewer& viewer);      // the camera moved within the settle time, or it or the texture animates
 bool images_complete(const Viewer& viewer); // every half at full size with all its samples
 void take_dropped_files(Viewer& viewer);    // a file dropped onto the window becomes the texture
 void create_frame_objects(Viewer& viewer);  // the acquire semaphore, the frame fence, the command buffer
