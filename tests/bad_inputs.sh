@@ -737,6 +737,8 @@ gpu_builds() {
         "$TEXFILTER" build --texture missing.png --out build-out
     expect_error "build without a Vulkan driver" "no Vulkan driver" build-out -- \
         "${WITHOUT_VULKAN_DRIVER[@]}" "$TEXFILTER" build --texture checker --out build-out
+    expect_error "render --texture-frame on a static texture" "--texture-frame applies to --texture dynamic only" out.png -- \
+        "$TEXFILTER" render --scene plane --texture checker --texture-frame 3 --filter trilinear -o out.png
     expect_success "sample --build gpu --filter sat" ok_gpu_sat.csv -- \
         "$TEXFILTER" sample --texture noise --texture-size 37 --filter sat --build gpu --lookups builds.csv -o ok_gpu_sat.csv
     expect_success "render --build gpu --format rgba8-srgb" ok_gpu.png -- \
