@@ -56,7 +56,6 @@ void destroy_dynamic(SceneImages& images)
 
 } // namespace
 
-
 bool same_options(const SamplerOptions& a, const SamplerOptions& b)
 {
     return a.filter == b.filter && a.wrap == b.wrap && a.lod_bias == b.lod_bias && a.lod_min == b.lod_min &&
