@@ -50,7 +50,7 @@ VulkanContext create_context(const ContextOptions& options)
     features.pNext = &features13;
     features.features.samplerAnisotropy = context.info.sampler_anisotropy ? VK_TRUE : VK_FALSE;
     features.features.shaderFloat64 = context.info.shader_float64 ? VK_TRUE : VK_FALSE;
-    features.features.shaderStorageImageWriteWithoutFormat = context.info.storage_write_without_format ? VK_TRUE : VK_FALSE;
+    features.features.shaderStorageImageExtendedFormats = context.info.storage_image_extended_formats ? VK_TRUE : VK_FALSE;
     features.features.shaderSampledImageArrayDynamicIndexing =
         context.info.sampled_image_array_dynamic_indexing ? VK_TRUE : VK_FALSE;
     const char* swapchain_extension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;

@@ -28,7 +28,7 @@ struct DeviceInfo {
     bool quad_ops_compute = false;
     bool sampler_anisotropy = false; // feature
     bool shader_float64 = false;     // feature, enabled when offered (the GPU SAT build's exact quantisation)
-    bool storage_write_without_format = false; // feature, enabled when offered (the GPU build's exact codes)
+    bool storage_image_extended_formats = false; // feature, enabled when offered (the GPU build's r8ui, r16ui codes)
     // Vulkan 1.2 descriptor indexing (enabled when offered; `sample --resource bindless` needs the first)
     bool sampled_image_array_non_uniform_indexing = false;
     bool runtime_descriptor_array = false;

@@ -109,7 +109,7 @@ std::vector<DeviceInfo> list_devices(VkInstance instance)
         d.quad_ops_compute = quad && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
         d.sampler_anisotropy = features.samplerAnisotropy == VK_TRUE;
         d.shader_float64 = features.shaderFloat64 == VK_TRUE;
-        d.storage_write_without_format = features.shaderStorageImageWriteWithoutFormat == VK_TRUE;
+        d.storage_image_extended_formats = features.shaderStorageImageExtendedFormats == VK_TRUE;
         d.sampled_image_array_non_uniform_indexing = features12.shaderSampledImageArrayNonUniformIndexing == VK_TRUE;
         d.runtime_descriptor_array = features12.runtimeDescriptorArray == VK_TRUE;
         d.sampled_image_array_dynamic_indexing = features.shaderSampledImageArrayDynamicIndexing == VK_TRUE;

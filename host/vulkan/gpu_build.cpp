@@ -12,7 +12,6 @@
 
 #include "build_mip_comp.h"
 #include "build_sat_comp.h"
-#include "pack_level_comp.h"
 
 namespace tf {
 
@@ -67,7 +66,7 @@ GpuBuildKernels create_gpu_build_kernels(const VulkanContext& context, Cleanup& 
     const ShaderCode sat = k.exact_sat ? ShaderCode{build_sat_comp, sizeof(build_sat_comp)}
                                        : ShaderCode{fp32.words, fp32.bytes};
     k.sat = create_compute_pipeline(context, sat, k.sat_layout, Filter::nearest, cleanup);
-    if (context.info.storage_write_without_format) {
+    {
         k.pack_set_layout = create_set_layout(
             context,
             {{HARNESS_BUILD_BINDING_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, HARNESS_MIP_MAX_LEVELS,
@@ -76,8 +75,6 @@ GpuBuildKernels create_gpu_build_kernels(const VulkanContext& context, Cleanup& 
               VK_SHADER_STAGE_COMPUTE_BIT, nullptr}},
             cleanup);
         k.pack_layout = create_push_layout(context, k.pack_set_layout, sizeof(PackPush), cleanup);
-        k.pack = create_compute_pipeline(context, {pack_level_comp, sizeof(pack_level_comp)}, k.pack_layout,
-                                         Filter::nearest, cleanup);
     }
     return k;
 }
@@ -259,12 +256,29 @@ int encoding_id(ChannelEncoding encoding)
 
 } // namespace
 
-bool pack_supported(const VulkanContext& context, const GpuBuildKernels& kernels, TextureFormat format)
+// The pack_level variant whose store's format qualifier is the integer view's.
+SpirvWords pack_spirv(VkFormat codes)
 {
-    if (!kernels.pack || format_info(format).integer)
+    switch (codes) {
+    case VK_FORMAT_R8G8B8A8_UINT: return pack_spirv_rgba8ui();
+    case VK_FORMAT_R16G16B16A16_UINT: return pack_spirv_rgba16ui();
+    case VK_FORMAT_R8_UINT: return pack_spirv_r8ui();
+    case VK_FORMAT_R16_UINT: return pack_spirv_r16ui();
+    default: return pack_spirv_r32ui();
+    }
+}
+
+bool pack_supported(const VulkanContext& context, const GpuBuildKernels&, TextureFormat format)
+{
+    const FormatInfo& info = format_info(format);
+    if (info.integer || (info.channels == 4 && info.bits == 32))
+        return false;
+    const VkFormat codes = code_format(format);
+    // r8ui and r16ui are extended storage formats (a shader capability of their own).
+    if ((codes == VK_FORMAT_R8_UINT || codes == VK_FORMAT_R16_UINT) && !context.info.storage_image_extended_formats)
         return false;
     VkFormatProperties properties{};
-    vkGetPhysicalDeviceFormatProperties(context.physical, code_format(format), &properties);
+    vkGetPhysicalDeviceFormatProperties(context.physical, codes, &properties);
     return (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT) != 0;
 }
 
@@ -274,6 +288,8 @@ PackTarget create_pack_target(const VulkanContext& context, const GpuBuildKernel
     const FormatInfo& info = format_info(format);
     PackTarget p;
     p.code_format = code_format(format);
+    const SpirvWords words = pack_spirv(p.code_format);
+    p.pipeline = create_compute_pipeline(context, {words.words, words.bytes}, kernels.pack_layout, Filter::nearest, cleanup);
     p.channels = info.channels;
     p.encoding = encoding_id(info.encoding);
     p.alpha_encoding = encoding_id(info.encoding == ChannelEncoding::srgb8 ? ChannelEncoding::unorm8 : info.encoding);
@@ -304,7 +320,7 @@ PackTarget create_pack_target(const VulkanContext& context, const GpuBuildKernel
 void record_pack_levels(VkCommandBuffer cb, const GpuBuildKernels& kernels, const PackTarget& pack,
                         const MipBuildTarget& mip)
 {
-    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, kernels.pack);
+    vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pack.pipeline);
     vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, kernels.pack_layout, 0, 1, &pack.set, 0, nullptr);
     for (int l = 1; l < mip.levels; ++l) {
         const int w = std::max(1, mip.width >> l), h = std::max(1, mip.height >> l);

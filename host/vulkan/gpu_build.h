@@ -22,10 +22,9 @@ struct GpuBuildKernels {
     VkPipeline mip = VK_NULL_HANDLE, sat = VK_NULL_HANDLE;
     bool exact_sat = false;
     // pack_level.comp.glsl: a level's codes into an integer view of the format's image, rounded as the host
-    // rounds them; null without shaderStorageImageWriteWithoutFormat (then levels are blitted).
+    // rounds them (its pipeline, one an integer view format, is the PackTarget's).
     VkDescriptorSetLayout pack_set_layout = VK_NULL_HANDLE;
     VkPipelineLayout pack_layout = VK_NULL_HANDLE;
-    VkPipeline pack = VK_NULL_HANDLE;
 };
 GpuBuildKernels create_gpu_build_kernels(const VulkanContext& context, Cleanup& cleanup);
 
@@ -86,14 +85,15 @@ void record_sat_build(VkCommandBuffer command_buffer, const GpuBuildKernels& ker
 // gpu_pack_image_flags and STORAGE usage.
 struct PackTarget {
     VkFormat code_format = VK_FORMAT_UNDEFINED;
+    VkPipeline pipeline = VK_NULL_HANDLE; // pack_level for code_format
     std::vector<VkImageView> code_views; // one a level
     int encoding = 0, alpha_encoding = 0, channels = 4; // HARNESS_ENCODING_*
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
 };
 constexpr VkImageCreateFlags gpu_pack_image_flags = VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT | VK_IMAGE_CREATE_EXTENDED_USAGE_BIT;
-// Whether the device can store `format`'s codes (the pack pipeline exists and the integer view format
-// supports storage); else the levels are blitted (the device's own rounding).
+// Whether the device can store `format`'s codes (the integer view format supports storage; r8ui and r16ui
+// also need shaderStorageImageExtendedFormats); else the levels are blitted (the device's own rounding).
 bool pack_supported(const VulkanContext& context, const GpuBuildKernels& kernels, TextureFormat format);
 PackTarget create_pack_target(const VulkanContext& context, const GpuBuildKernels& kernels, const MipBuildTarget& mip,
                               VkImage format_image, TextureFormat format, Cleanup& cleanup);
