@@ -7,7 +7,7 @@
 # golden.NAME entry is "Not Run", which ctest counts as a failure.
 #
 # usage: golden_run.sh TEXFILTER OUT_DIR [FLAG...]
-# FLAGs go to texfilter golden (the golden_gpu_build.* fixture passes --build gpu: every case's chain and
+# FLAGs go to texfilter golden (CMake passes --build cpu,gpu: every case rendered with the host's build, then
 # table built by the device). Only what this script writes there is replaced (OUT_DIR/run/,
 # OUT_DIR/verdicts.txt); nothing else in OUT_DIR is touched.
 set -uo pipefail

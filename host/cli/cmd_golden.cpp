@@ -43,7 +43,7 @@ std::string default_golden_dir()
 
 struct GoldenRun {
     std::string golden_dir, out_dir;
-    TextureBuild build = TextureBuild::cpu; // --build: where each case's chain is built (goldens: always the host)
+    std::vector<TextureBuild> builds = {TextureBuild::cpu}; // --build: where each case's chain is built, in turn
     std::vector<GoldenCase> cases;
 };
 
@@ -58,6 +58,14 @@ void update_goldens(const GoldenRun& run)
     }
 }
 
+// "cpu", "gpu" or "cpu,gpu".
+std::vector<std::string> split_list_of_builds(const std::string& text)
+{
+    if (text == "cpu,gpu")
+        return {"cpu", "gpu"};
+    return {text};
+}
+
 int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
 {
     GpuSession gpu(context_options);
@@ -70,13 +78,17 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
     // The cases share ~30 pipelines: each compiled once (most of a case's time on lavapipe). Declared after
     // the session, so destroyed before it; every render has completed by then (gpu_render waits).
     auto pipelines = std::make_unique<RenderPipelineCache>();
+    // --build cpu,gpu renders every case once a build in this one process: the second build's pipelines are
+    // the first's. Its lines and images are named gpu-build/NAME.
+    for (TextureBuild build : run.builds)
     for (GoldenCase c : run.cases) {
-        if (run.build == TextureBuild::gpu) {
+        const std::string label = std::string(run.builds.size() > 1 && build == TextureBuild::gpu ? "gpu-build/" : "") + c.name;
+        if (build == TextureBuild::gpu) {
             // mipcolors' levels are not a downsample, integer formats round codes on the host: cpu builds only.
             try {
                 check_gpu_build(c.texture.format, c.texture.name_or_path);
             } catch (const Error& e) {
-                std::printf("%-40s SKIP  %s\n", c.name.c_str(), e.what());
+                std::printf("%-40s SKIP  %s\n", label.c_str(), e.what());
                 ++skipped;
                 continue;
             }
@@ -98,12 +110,12 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
                         " (run texfilter golden --update)");
         Image encoded = encode_srgb(actual);
         DiffResult result = diff_images(encoded, golden, c.thresholds);
-        ReportCase entry{c.name, result.pass, describe(result, c.thresholds), "", "", ""};
+        ReportCase entry{label, result.pass, describe(result, c.thresholds), "", "", ""};
         if (!result.pass) {
             ++failures;
-            entry.actual_png = "actual/" + c.name + ".png";
-            entry.golden_png = "golden/" + c.name + ".png";
-            entry.diff_png = "diff/" + c.name + ".png";
+            entry.actual_png = "actual/" + label + ".png";
+            entry.golden_png = "golden/" + label + ".png";
+            entry.diff_png = "diff/" + label + ".png";
             for (const std::string* file : {&entry.actual_png, &entry.golden_png, &entry.diff_png}) {
                 record_file(out, *file);
                 fs::create_directories(fs::path(run.out_dir) / fs::path(*file).parent_path());
@@ -113,7 +125,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
             // Amplified so that one 8-bit step shows; the diff is of sRGB-encoded values.
             write_image(run.out_dir + "/" + entry.diff_png, diff_image(encoded, golden, 32.0));
         }
-        std::printf("%-40s %s  max %.5f  over %.3f%%\n", c.name.c_str(), result.pass ? "PASS" : "FAIL",
+        std::printf("%-40s %s  max %.5f  over %.3f%%\n", label.c_str(), result.pass ? "PASS" : "FAIL",
                     result.max_error, result.fail_percent);
         std::fflush(stdout);
         report.push_back(entry);
@@ -143,7 +155,8 @@ int run_golden(const std::vector<std::string>& argv)
                                                                  "installed texfilter requires it)"},
                                          {"--out", "DIR", "where failures and report.html go (default golden-out)"},
                                          {"--build", "B", "cpu (default) or gpu: where each case's MIP chain and "
-                                                          "summed-area table are built before the GPU renders it"}},
+                                                          "summed-area table are built before the GPU renders it; "
+                                                          "cpu,gpu: both in turn, one process (gpu lines named gpu-build/NAME)"}},
                                         device_flags()});
     Args args = parse_args("golden", argv, specs, 0);
     if (args.has("--help")) {
@@ -153,8 +166,14 @@ int run_golden(const std::vector<std::string>& argv)
     GoldenRun run;
     run.golden_dir = args.has("--golden-dir") ? args.get("--golden-dir", "") : default_golden_dir();
     run.out_dir = args.get("--out", "golden-out");
-    run.build = parse_flag(args, "--build", "cpu", parse_texture_build);
-    if (run.build == TextureBuild::gpu && args.has("--update"))
+    run.builds.clear();
+    for (const std::string& name : split_list_of_builds(args.get("--build", "cpu")))
+        try {
+            run.builds.push_back(parse_texture_build(name));
+        } catch (const Error& e) {
+            throw Error(std::string("bad value for --build: ") + e.what());
+        }
+    if (run.builds != std::vector<TextureBuild>{TextureBuild::cpu} && args.has("--update"))
         throw Error("--update renders the goldens with the CPU reference, which builds on the host: drop --build gpu");
     std::vector<GoldenCase> all = read_manifest(run.golden_dir + "/manifest.txt");
     if (args.has("--case")) {
