@@ -8,7 +8,7 @@
 #
 # usage: golden_run.sh TEXFILTER OUT_DIR [FLAG...]
 # FLAGs go to texfilter golden (CMake passes --build cpu,gpu: every case rendered with the host's build, then
-# table built by the device). Only what this script writes there is replaced (OUT_DIR/run/,
+# with the device's, from level 0). Only what this script writes there is replaced (OUT_DIR/run/,
 # OUT_DIR/verdicts.txt); nothing else in OUT_DIR is touched.
 set -uo pipefail
 if [[ $# -lt 2 ]]; then
