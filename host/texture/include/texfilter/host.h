@@ -19,6 +19,7 @@
 //   - Bad input (empty or oversize images, NaN where a table needs finite values, boxes outside the texture)
 //     throws tf::Error with a message saying what and why; nothing else is thrown except std::bad_alloc.
 //   - Functions are thread-safe on distinct arguments; large MIP levels are built on every core.
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <array>
 #include <cstdint>
@@ -159,5 +160,33 @@ void sat_range_offset_scale(const std::array<uint32_t, sat_range_words>& words, 
 // multiply by scale and add offset for the box mean in texel units. Throws tf::Error for a box that is
 // inverted or not inside the texture.
 std::array<uint64_t, 4> sat_box_sum(const SatTable& table, int x0, int y0, int x1, int y1);
+
+// ---- Cube maps (shaders/texfilter/cube.glsl; docs/ENVIRONMENT.md) ----------------------------------------------
+
+// Six square faces in Vulkan's layer order: +X, -X, +Y, -Y, +Z, -Z (face index = array layer).
+constexpr int cube_face_count = 6;
+
+// Every face's full MIP chain, all faces the same square size (the floor rule per face).
+struct CubeMap {
+    std::array<MipChain, cube_face_count> faces;
+    int size() const { return faces[0].levels.empty() ? 0 : faces[0].levels[0].width; }
+};
+
+// The faces' level 0 given, each face's chain built by build_mip_chain. Throws tf::Error when a face is
+// empty or not square, or the faces differ in size.
+CubeMap build_cube_map(std::array<Image, cube_face_count> faces);
+
+// Vulkan's "Cube Map Face Selection": the face of the direction's major axis (ties: x before y before z,
+// and +0 counts as positive) and the face coordinates s, t in [0, 1] where the direction meets it
+// (s = (sc / |ma| + 1) / 2, t = (tc / |ma| + 1) / 2 with the spec's sc, tc, ma). A zero direction gives
+// face +X at its centre.
+struct CubeFacePoint {
+    int face = 0;
+    double s = 0.5, t = 0.5;
+};
+CubeFacePoint cube_face_point(const glm::dvec3& direction);
+// The inverse on the face plane: the direction (not normalised, |ma| = 1) through face coordinates (s, t)
+// of `face`; s, t outside [0, 1] extend the face's plane.
+glm::dvec3 cube_face_direction(int face, double s, double t);
 
 } // namespace tf
