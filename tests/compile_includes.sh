@@ -63,8 +63,10 @@ call_for() {
     ewa) echo "tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_ewa_hw(tex, uv, dx, dy, s, 2.0, 16.0)" ;;
     sat) echo "tf_sat(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0)) + tf_sat_assembly(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0), 4)" ;;
     debug) echo "vec4(tf_debug_lod_color(tf_debug_footprint(uv, dx, dy, vec2(textureSize(tex, 0)), textureQueryLevels(tex), s, TF_DEBUG_ANISO, 16, TF_ANISO_GPU, 16.0).lod) + tf_debug_anisotropy_color(tf_debug_anisotropy(dx, dy, vec2(64.0))) + tf_debug_heat(uv.x, 8.0), 1.0) + vec4(tf_debug_aniso_probe(uv, dx, dy, vec2(64.0), 8, TF_ANISO_FELINE, tf_debug_aniso_probe_count(dx, dy, vec2(64.0), 8, TF_ANISO_FELINE) - 1), 0.0, 0.0)" ;;
+    cube) echo "tf_trilinear_cube(cube, vec3(uv, 1.0), vec3(dx, 0.0), vec3(dy, 0.0), s) + tf_aniso_cube(cube, vec3(uv, -1.0), vec3(dx, 0.0), vec3(dy, 0.0), s, 8, TF_ANISO_GPU) + tf_ewa_cube_hw(cube, vec3(1.0, uv), vec3(0.0, dx), vec3(0.0, dy), s, 2.0, 16.0) + tf_nearest_cube(cube, vec3(uv, 0.5), s)" ;;
+    latlong) echo "tf_trilinear_latlong(tex, vec3(uv, 1.0), vec3(dx, 0.0), vec3(dy, 0.0), s) + tf_ewa_latlong(tex, vec3(uv, -1.0), vec3(dx, 0.0), vec3(dy, 0.0), s, 2.0, 16.0) + tf_aniso_latlong_hw(tex, vec3(1.0, uv), vec3(0.0, dx), vec3(0.0, dy), s, 8, TF_ANISO_FELINE) + tf_bilinear_latlong(tex, vec3(uv, 0.5), s)" ;;
     encode) echo "vec4(float(tf_mip_srgb8(uv.x)), float(tf_mip_unorm8(uv.y)), float(tf_mip_half(dx.x)), 0.0)" ;;
-    texfilter) echo "tf_trilinear(tex, uv, dx, dy, s) + tf_nearest_mip(tex, uv, dx, dy, s) + tf_brilinear(tex, uv, dx, dy, s, 0.25) + tf_aniso(tex, uv, dx, dy, s, 16, TF_ANISO_GPU) + tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_sat(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0)) + vec4(tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).dUVdy, 0.0, 0.0)" ;;
+    texfilter) echo "tf_trilinear(tex, uv, dx, dy, s) + tf_nearest_mip(tex, uv, dx, dy, s) + tf_brilinear(tex, uv, dx, dy, s, 0.25) + tf_aniso(tex, uv, dx, dy, s, 16, TF_ANISO_GPU) + tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_sat(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0)) + vec4(tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).dUVdy, 0.0, 0.0) + tf_ewa_cube(cube, vec3(uv, 1.0), vec3(dx, 0.0), vec3(dy, 0.0), s, 2.0, 16.0) + tf_trilinear_latlong(tex, vec3(uv, 1.0), vec3(dx, 0.0), vec3(dy, 0.0), s)" ;;
     *) return 1 ;;
     esac
 }
@@ -90,6 +92,7 @@ write_shader() {
     echo "layout(set = 0, binding = 0) uniform sampler2D tex;"
     echo "layout(set = 0, binding = 3) uniform usampler2D satLow;  // the SAT's two integer words (sat.glsl)"
     echo "layout(set = 0, binding = 4) uniform usampler2D satHigh;"
+    echo "layout(set = 0, binding = 5) uniform samplerCube cube;    // cube.glsl"
     case "$stage" in
     frag)
         cat <<EOF

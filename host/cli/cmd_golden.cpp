@@ -10,6 +10,9 @@
 #include "io/output_dir.h"
 #include "io/output_path.h"
 #include "reference/render.h"
+#include "reference/env_render.h"
+#include "io/environment_source.h"
+#include "vulkan/environment.h"
 #include "io/report.h"
 #include <cstdio>
 #include <filesystem>
@@ -50,12 +53,31 @@ struct GoldenRun {
 void update_goldens(const GoldenRun& run)
 {
     for (const GoldenCase& c : run.cases) {
+        std::string path = run.golden_dir + "/" + c.name + ".png";
+        if (is_environment_scene(c.scene)) {
+            const EnvironmentMap env = load_environment(c.texture);
+            SceneParams scene = make_scene(c.scene, c.width, c.height, environment_size(env));
+            write_image(path, reference_render_environment(scene, env, c.sampler, c.render));
+            std::printf("updated %s (CPU reference)\n", path.c_str());
+            continue;
+        }
         MipChain chain = load_texture(c.texture, {needs_sat(c.sampler.filter), nullptr});
         SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
-        std::string path = run.golden_dir + "/" + c.name + ".png";
         write_image(path, reference_render(scene, chain, c.sampler, c.render));
         std::printf("updated %s (CPU reference)\n", path.c_str());
     }
+}
+
+// An environment case (skybox, reflect) on the device: its map uploaded, rendered, destroyed.
+Image render_environment_case(const VulkanContext& context, const GoldenCase& c, const DeviceLimits& limits)
+{
+    const EnvironmentMap env = load_environment(c.texture, {false, &limits});
+    SceneParams scene = make_scene(c.scene, c.width, c.height, environment_size(env));
+    GpuEnvironment gpu = env.map == EnvMap::cube ? upload_cube_environment(context, env.cube)
+                                                 : upload_latlong_environment(context, env.latlong);
+    Cleanup cleanup;
+    cleanup.add([&] { destroy_environment(context, gpu); });
+    return gpu_render_environment(context, gpu, scene, c.sampler, c.render);
 }
 
 // "cpu", "gpu" or "cpu,gpu".
@@ -86,6 +108,8 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
         if (build == TextureBuild::gpu) {
             // mipcolors' levels are not a downsample, integer formats round codes on the host: cpu builds only.
             try {
+                if (is_environment_scene(c.scene))
+                    throw Error("environment maps are built on the host");
                 check_gpu_build(c.texture.format, c.texture.name_or_path);
             } catch (const Error& e) {
                 std::printf("%-40s SKIP  %s\n", label.c_str(), e.what());
@@ -94,13 +118,18 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
             }
             c.texture.build = TextureBuild::gpu;
         }
-        check_format_support(gpu.context, c.texture.format, c.sampler);
-        TextureUse use{needs_sat(c.sampler.filter), &limits};
-        use.level0_only = c.texture.build == TextureBuild::gpu;
-        MipChain chain = load_texture(c.texture, use);
-        SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
-        Image actual = with_texture(gpu.context, chain, needs_sat(c.sampler.filter), c.texture.format, c.texture.build,
-                                    [&](auto& t) { return gpu_render(gpu.context, t, scene, c.sampler, c.render, pipelines.get()); });
+        Image actual;
+        if (is_environment_scene(c.scene)) {
+            actual = render_environment_case(gpu.context, c, limits);
+        } else {
+            check_format_support(gpu.context, c.texture.format, c.sampler);
+            TextureUse use{needs_sat(c.sampler.filter), &limits};
+            use.level0_only = c.texture.build == TextureBuild::gpu;
+            MipChain chain = load_texture(c.texture, use);
+            SceneParams scene = make_scene(c.scene, c.width, c.height, chain.levels[0].width);
+            actual = with_texture(gpu.context, chain, needs_sat(c.sampler.filter), c.texture.format, c.texture.build,
+                                  [&](auto& t) { return gpu_render(gpu.context, t, scene, c.sampler, c.render, pipelines.get()); });
+        }
 
         std::string golden_path = run.golden_dir + "/" + c.name + ".png";
         Image golden = read_image_raw(golden_path);

@@ -2,6 +2,9 @@
 #include "cli/commands.h"
 #include "texture/error.h"
 #include "vulkan/backend.h"
+#include "vulkan/environment.h"
+#include "io/environment_source.h"
+#include "reference/env_render.h"
 #include "vulkan/texture_format_support.h"
 #include "io/image_io.h"
 #include "io/output_path.h"
@@ -14,6 +17,35 @@
 #include <optional>
 
 namespace tf {
+
+namespace {
+
+// skybox and reflect: the environment map --env makes of --texture, rendered on either backend.
+Image render_environment_scene(SceneKind kind, int width, int height, int frame, const std::optional<Camera>& camera,
+                               const TextureSource& source, const SamplerOptions& options, const RenderOptions& render,
+                               CommandDevice& device)
+{
+    const EnvironmentMap env = load_environment(source, device.texture_use(false));
+    const int size = environment_size(env);
+    SceneParams scene = scene_at_frame(make_scene(kind, width, height, size), frame, size);
+    if (camera)
+        scene = with_camera(scene, *camera);
+    if (!device.gpu)
+        return reference_render_environment(scene, env, options, render);
+    const VulkanContext& context = device.gpu->context;
+    Image image;
+    {
+        GpuEnvironment gpu = env.map == EnvMap::cube ? upload_cube_environment(context, env.cube)
+                                                     : upload_latlong_environment(context, env.latlong);
+        Cleanup cleanup;
+        cleanup.add([&] { destroy_environment(context, gpu); });
+        image = gpu_render_environment(context, gpu, scene, options, render);
+    }
+    device.gpu->finish();
+    return image;
+}
+
+} // namespace
 
 int run_render(const std::vector<std::string>& argv)
 {
@@ -57,6 +89,13 @@ int run_render(const std::vector<std::string>& argv)
     if (width % 2 || height % 2)
         throw Error("bad value for --size: '" + args.get("--size", "") + "' (sides must be even: derivatives come from 2x2 quads)");
     TextureSource source = texture_source_from(args);
+    const bool environment = is_environment_scene(kind);
+    if (environment) { // before any work
+        check_environment_filter(options.filter);
+        if (render.view != DebugView::color)
+            throw Error("--view " + to_string(render.view) + " is not available on the environment scenes (skybox, "
+                        "reflect): use --view color");
+    }
     check_format_filter(source.format, options); // integer data and hardware filtering, before any work
     std::string out = checked_output_path(args.require("-o"), {".png", ".exr", ".pfm"}, {source.name_or_path});
     if (render.view == DebugView::data && out.size() >= 4 && out.compare(out.size() - 4, 4, ".png") == 0)
@@ -67,6 +106,11 @@ int run_render(const std::vector<std::string>& argv)
     if (!is_pfm_path(out))
         load_image_io(); // a missing image I/O module fails here, before the render
     CommandDevice device = open_command_device(backend, args);
+    if (environment) {
+        write_image(out, render_environment_scene(kind, width, height, frame, camera, source, options, render, device));
+        std::printf("%s\n", out.c_str());
+        return 0;
+    }
     if (device.gpu)
         check_format_support(device.gpu->context, source.format, options);
     const bool sat = needs_sat(options.filter);

@@ -1,4 +1,5 @@
 #include "flags/cli_common.h"
+#include "core/environment.h"
 #include "vulkan/device_memory_check.h"
 #include "texture/error.h"
 #include "core/memory_budget.h"
@@ -18,7 +19,10 @@ std::vector<FlagSpec> texture_flags()
             {"--build", "B", "where the MIP chain and summed-area table are built: cpu (the host, default) or gpu "
                              "(level 0 uploaded, the rest built by the device; --backend vulkan)"},
             {"--memory-budget", "SIZE", "most host memory a texture may take (512M, 8G; default: half of physical "
-                                        "memory); checked from the file's header before decoding"}};
+                                        "memory); checked from the file's header before decoding"},
+            {"--env", "E", "environment scenes (skybox, reflect): cube (default; a procedural name makes six faces of it, "
+                           "each tinted, or cube-labels, cube-hash, cube-smooth; a file is a 4:3 horizontal cross) or "
+                           "latlong (a 2:1 equirectangular image; a procedural name: the same cube, resampled)"}};
 }
 
 std::vector<FlagSpec> sampler_flags(SamplerFlags which)
@@ -94,6 +98,7 @@ TextureSource texture_source_from(const Args& args)
     }
     if (args.has("--memory-budget"))
         source.memory_budget = parse_flag(args, "--memory-budget", "", parse_byte_size);
+    source.env = parse_flag(args, "--env", "cube", parse_env_map);
     return source;
 }
 

@@ -4,6 +4,7 @@
 #include "core/memory_budget.h"
 #include "core/texture_build.h"
 #include "core/texture_format.h"
+#include "core/lookup.h"
 #include "texture/mip.h"
 #include <cstdint>
 #include <string>
@@ -24,6 +25,9 @@ struct TextureSource {
     // --texture-frame: the frame of the "dynamic" procedural texture (tf::dynamic_texture; 0 = make_procedural's);
     // any other texture must leave it 0 (load_texture and check_texture refuse it).
     int texture_frame = 0;
+    // --env: what an environment scene (skybox, reflect) makes of the texture: a cube map or a lat-long map
+    // (io/environment_source.h). The 2D scenes ignore it.
+    EnvMap env = EnvMap::cube;
 };
 
 // The animated procedural texture: the only one with frames (--texture-frame), rebuilt every frame on the

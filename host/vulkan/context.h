@@ -23,6 +23,7 @@ struct DeviceInfo {
     float max_sampler_anisotropy = 0;
     float max_sampler_lod_bias = 0;
     uint32_t max_image_dimension_2d = 0;
+    uint32_t max_image_dimension_cube = 0;
     uint32_t subgroup_size = 0;
     bool quad_ops_fragment = false;
     bool quad_ops_compute = false;

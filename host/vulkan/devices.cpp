@@ -103,6 +103,7 @@ std::vector<DeviceInfo> list_devices(VkInstance instance)
         d.max_sampler_anisotropy = limits.maxSamplerAnisotropy;
         d.max_sampler_lod_bias = limits.maxSamplerLodBias;
         d.max_image_dimension_2d = limits.maxImageDimension2D;
+        d.max_image_dimension_cube = limits.maxImageDimensionCube;
         d.subgroup_size = subgroup.subgroupSize;
         bool quad = (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_QUAD_BIT) != 0;
         d.quad_ops_fragment = quad && (subgroup.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT);

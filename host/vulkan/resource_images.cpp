@@ -9,8 +9,6 @@
 
 namespace tf {
 
-namespace {
-
 // Every level of every chain into layer k of `g` (texel_bytes a texel: RGBA32F, or D32 from .r), one
 // level at a time through one staging buffer of level 0's size; the image ends SHADER_READ_ONLY.
 void upload_layers(const VulkanContext& context, const GpuImage& g, const std::vector<MipChain>& chains,
@@ -53,6 +51,8 @@ void upload_layers(const VulkanContext& context, const GpuImage& g, const std::v
                       VK_REMAINING_ARRAY_LAYERS);
     });
 }
+
+namespace {
 
 // A one-layer 2D_ARRAY view of a one-level 2D colour image (Vulkan allows it for any 2D image).
 VkImageView array_view(const VulkanContext& context, VkImage image, VkFormat format)

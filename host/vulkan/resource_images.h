@@ -32,6 +32,12 @@ GpuResources upload_resources(const VulkanContext& context, const std::vector<Mi
                               bool with_sat);
 void destroy_resources(const VulkanContext& context, GpuResources& resources);
 
+// Every level of every chain into layer k of `g` (RGBA32F, or D32 from .r with depth_only), one level at a
+// time through one staging buffer of level 0's size; the image ends SHADER_READ_ONLY_OPTIMAL. The chains
+// have g's size and level count (array kinds, a cube's faces).
+void upload_layers(const VulkanContext& context, const GpuImage& g, const std::vector<MipChain>& chains,
+                   VkImageAspectFlags aspect, bool depth_only);
+
 // The depth format the shadow kind uploads, and its check (also for an early refusal): sampled, with
 // depth comparison, and (linear: for the hardware's bilinear/trilinear comparison lookups) linear filtering,
 // which Vulkan does not require of depth formats (lavapipe 22.3 lacks it).

@@ -76,6 +76,14 @@
 #define HARNESS_BINDING_SAT_LOW 4  // usampler2D RGBA32UI: summed-area table, low 32 bits per channel
 #define HARNESS_BINDING_SAT_HIGH 5 // usampler2D R32UI: bits 32..39 of the four channels, one byte each
 #define HARNESS_BINDING_SAMPLER 6  // sampler (separate kinds) or samplerShadow (shadow): for the hardware taps
+#define HARNESS_BINDING_TEXTURE_NEAREST 7 // environment renders, cube: the cube again with a NEAREST sampler
+                                          // (the manual cube filters read texels through it)
+
+// Environment renders (render_env.frag.glsl, env_select.glsl): which map a variant binds at
+// HARNESS_BINDING_TEXTURE (-DHARNESS_ENV=ID): samplerCube (linear: hardware taps, or the hw-* state), or a
+// lat-long sampler2D (repeat in u, clamp in v).
+#define HARNESS_ENV_CUBE 1
+#define HARNESS_ENV_LATLONG 2
 
 // How the harness binds the texture (a -D define per SPIR-V variant; filter_select.glsl, api: access.glsl):
 #define HARNESS_RESOURCE_COMBINED 0       // sampler2D u_texture (and usampler2D SAT tables)

@@ -4,7 +4,7 @@
 // pattern of host/reference/ground_truth.cpp (the CPU twin, in double). Box: uniform over the pixel. Gaussian:
 // sigma HARNESS_GROUND_TRUTH_SIGMA pixels about the centre, Box-Muller on the stratified unit square.
 // A frame may take a range of the samples (pc.truthFirst, pc.truthCount) and return their mean.
-// Needs scene.glsl and filter_select.glsl (u_texture, pc) included first.
+// Needs scene.glsl and filter_select.glsl (u_texture, pc) or env_select.glsl included first.
 #ifndef HARNESS_GROUND_TRUTH_GLSL
 #define HARNESS_GROUND_TRUTH_GLSL
 
@@ -34,16 +34,24 @@ vec2 truth_sample(ivec2 pixel, int i, int side, int pixelFilter)
     return vec2(pixel) + 0.5 + r * vec2(cos(angle), sin(angle));
 }
 
-// The mean of samples [first, first + count) of the side x side grid (count 0: from first to the end), so
-// that the viewer can accumulate the truth a few samples a frame: chunk means weighted by their counts
+// The samples a frame takes: [first, first + count) of the side x side grid (count 0: from first to the end),
+// so that the viewer can accumulate the truth a few samples a frame: chunk means weighted by their counts
 // give the mean of the whole grid. The range is clamped into the grid (at least one sample), so the loop
 // is bounded and the mean finite whatever the host sends; the host refuses a range past the grid.
+void truth_samples(out int side, out int first, out int count)
+{
+    side = clamp(pc.truthSide, 1, HARNESS_MAX_TRUTH_SIDE); // bounded loop whatever the host sends
+    int total = side * side;
+    first = clamp(pc.truthFirst, 0, total - 1);
+    count = pc.truthCount <= 0 ? total - first : min(pc.truthCount, total - first);
+}
+
+#ifdef HARNESS_TEX // 2D scenes (env_select.glsl has the environment maps' twin)
+// The mean of the frame's samples (truth_samples) of the level-0 texture over the scene.
 vec4 ground_truth(ivec2 pixel)
 {
-    int side = clamp(pc.truthSide, 1, HARNESS_MAX_TRUTH_SIDE); // bounded loop whatever the host sends
-    int total = side * side;
-    int first = clamp(pc.truthFirst, 0, total - 1);
-    int count = pc.truthCount <= 0 ? total - first : min(pc.truthCount, total - first);
+    int side, first, count;
+    truth_samples(side, first, count);
     tf_Sampler s = tf_sampler(pc.wrapMode);
     vec4 sum = vec4(0.0);
     [[dont_unroll]] for (int i = first; i < first + count; ++i) {
@@ -52,5 +60,6 @@ vec4 ground_truth(ivec2 pixel)
     }
     return sum / float(count);
 }
+#endif
 
 #endif

@@ -15,6 +15,13 @@
 //      each depth texel (.r) compared with cmp before it is filtered (tfi_compare_texel)
 //   13 sampler2DShadow tex + float dref, 14 texture2D tex, samplerShadow smp + float dref: _hw only, the
 //      hardware comparison per tap
+//   Environment kinds (cube.glsl, latlong.glsl; docs/ENVIRONMENT.md): the 2D families run on one face / the
+//   lat-long texture, with texels past the edges read through the map's own rule (TFI_FETCH) instead of a wrap:
+//   15 samplerCube tex, 16 textureCube tex, sampler smp, 17 samplerCubeArray tex, 18 textureCubeArray tex,
+//      sampler smp: manual (texels read at their centres through the sampler, which must be NEAREST) + _hw
+//      (taps through the sampler, which must be LINEAR); extras `int face` (+ `int layer`, arrays)
+//   19 sampler2D tex + tfi_LatLong: a lat-long map (the texture is kind 1's; the extra only tells the overloads
+//      apart): manual + _hw
 // Macros a body may use (parameter names are fixed: tex, smp, layer, cmp, dref):
 //   TFI_T, TFI_A      the texture parameters in a declaration / a call (`sampler2D tex` / `tex`)
 //   TFI_X, TFI_XA     the extras, with their leading comma (`, int layer` / `, layer`; empty for 2D)
@@ -24,6 +31,9 @@
 //                     that no entry point of theirs reaches (their `hardware` flag is always false)
 //   TFI_MANUAL, TFI_HW   1 where the kind gets the manual / the _hw entry points
 //   TFI_CAN_FETCH        0 for the shadow-sampler kinds (no texelFetch on a sampler2DShadow)
+//   TFI_WRAP(i, size, mode), TFI_WRAP_PAIR(i, size, mode): tf_wrap / tfi_wrap_pair; the environment kinds
+//                        pass the integer texel coordinate through (TFI_FETCH reads past the edges itself)
+//   TFI_ENV, TFI_CUBE, TFI_LATLONG  1 for the environment kinds (15..19), the cube kinds, the lat-long kind
 //   TFI_OWNS_T           0 where an earlier kind already defined the functions that take only TFI_T (11, 12
 //                        share sampler2D / texture2D with 1, 2: size and level queries are the same)
 //   TFI_SAT_T, TFI_SAT_A, TFI_SAT_X, TFI_SAT_XA, TFI_SAT_LOW(p), TFI_SAT_HIGH(p), TFI_SAT_SIZE: the SAT's two
@@ -55,8 +65,13 @@
 #undef TFI_SAT_LOW
 #undef TFI_SAT_HIGH
 #undef TFI_SAT_SIZE
+#undef TFI_WRAP
+#undef TFI_WRAP_PAIR
+#undef TFI_ENV
+#undef TFI_CUBE
+#undef TFI_LATLONG
 
-#if TFI_KIND < 1 || TFI_KIND > 14
+#if TFI_KIND < 1 || TFI_KIND > 19
 #error "texfilter/access.glsl: unknown TFI_KIND"
 #endif
 
@@ -83,10 +98,23 @@
 #define TFI_T itexture2D tex
 #elif TFI_KIND == 13
 #define TFI_T sampler2DShadow tex
-#else
+#elif TFI_KIND == 14
 #define TFI_T texture2D tex, samplerShadow smp
+#elif TFI_KIND == 15
+#define TFI_T samplerCube tex
+#elif TFI_KIND == 16
+#define TFI_T textureCube tex, sampler smp
+#elif TFI_KIND == 17
+#define TFI_T samplerCubeArray tex
+#elif TFI_KIND == 18
+#define TFI_T textureCubeArray tex, sampler smp
+#else
+#define TFI_T sampler2D tex
 #endif
-#if TFI_KIND == 3 || TFI_KIND == 6 || TFI_KIND == 14
+#define TFI_ENV (TFI_KIND >= 15)
+#define TFI_CUBE (TFI_KIND >= 15 && TFI_KIND <= 18)
+#define TFI_LATLONG (TFI_KIND == 19)
+#if TFI_KIND == 3 || TFI_KIND == 6 || TFI_KIND == 14 || TFI_KIND == 16 || TFI_KIND == 18
 #define TFI_A tex, smp
 #else
 #define TFI_A tex
@@ -99,9 +127,18 @@
 #elif TFI_KIND == 11 || TFI_KIND == 12
 #define TFI_X , tf_Compare cmp
 #define TFI_XA , cmp
-#elif TFI_KIND >= 13
+#elif TFI_KIND == 13 || TFI_KIND == 14
 #define TFI_X , float dref
 #define TFI_XA , dref
+#elif TFI_KIND == 15 || TFI_KIND == 16
+#define TFI_X , int face
+#define TFI_XA , face
+#elif TFI_KIND == 17 || TFI_KIND == 18
+#define TFI_X , int face, int layer
+#define TFI_XA , face, layer
+#elif TFI_KIND == 19
+#define TFI_X , tfi_LatLong latlong
+#define TFI_XA , latlong
 #else
 #define TFI_X
 #define TFI_XA
@@ -120,12 +157,26 @@
 #define TFI_FETCH(p, l) vec4(texelFetch(TF_NONUNIFORM(tex), p, l))
 #elif TFI_KIND == 11 || TFI_KIND == 12
 #define TFI_FETCH(p, l) vec4(tfi_compare_texel(cmp, texelFetch(TF_NONUNIFORM(tex), p, l).r))
-#elif TFI_KIND >= 13
+#elif TFI_KIND == 13 || TFI_KIND == 14
 #define TFI_FETCH(p, l) vec4(0.0)
+#elif TFI_CUBE
+#define TFI_FETCH(p, l) tfi_cube_texel(TFI_A TFI_XA, p, l) // common.glsl: seamless, any p
+#elif TFI_LATLONG
+#define TFI_FETCH(p, l) tfi_latlong_texel(TFI_A, p, l) // common.glsl: across the seam and the poles, any p
 #else
 #define TFI_FETCH(p, l) texelFetch(TF_NONUNIFORM(tex), p, l)
 #endif
-#define TFI_CAN_FETCH (TFI_KIND < 13)
+#define TFI_CAN_FETCH (TFI_KIND < 13 || TFI_KIND >= 15)
+
+// How a family turns a texel coordinate into the one TFI_FETCH reads: wrapped by the sampler's mode, or, for
+// the environment kinds, passed through (their TFI_FETCH reads past the texture's edges by the map's rule).
+#if TFI_ENV
+#define TFI_WRAP(i, size, mode) int(clamp((i), -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD))
+#define TFI_WRAP_PAIR(i, size, mode) (ivec2(TFI_WRAP(i, size, mode)) + ivec2(0, 1))
+#else
+#define TFI_WRAP(i, size, mode) tf_wrap(i, size, mode)
+#define TFI_WRAP_PAIR(i, size, mode) tfi_wrap_pair(i, size, mode)
+#endif
 
 // A hardware lookup at an explicit LOD (the _hw forms); kinds without a sampler: a stand-in vec4(0) that no
 // entry point of theirs reaches (their `hardware` flag is always false).
@@ -141,21 +192,34 @@
 #define TFI_LOOKUP(uv, l) vec4(textureLod(TF_NONUNIFORM(tex), vec3(uv, dref), l))
 #elif TFI_KIND == 14
 #define TFI_LOOKUP(uv, l) vec4(textureLod(TF_NONUNIFORM(sampler2DShadow(tex, smp)), vec3(uv, dref), l))
+#elif TFI_KIND == 15
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), tfi_cube_direction(face, uv), l)
+#elif TFI_KIND == 16
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(samplerCube(tex, smp)), tfi_cube_direction(face, uv), l)
+#elif TFI_KIND == 17
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), vec4(tfi_cube_direction(face, uv), float(layer)), l)
+#elif TFI_KIND == 18
+#define TFI_LOOKUP(uv, l) \
+    textureLod(TF_NONUNIFORM(samplerCubeArray(tex, smp)), vec4(tfi_cube_direction(face, uv), float(layer)), l)
+#elif TFI_KIND == 19
+#define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), uv, l)
 #else
 #define TFI_LOOKUP(uv, l) vec4(0.0)
 #endif
 
 // Which entry points a kind gets: the manual forms where texelFetch reads the texture alone, the _hw forms
 // where a sampler comes with it.
-#define TFI_MANUAL (TFI_KIND != 3 && TFI_KIND != 6 && TFI_KIND < 13)
+#define TFI_MANUAL (TFI_KIND != 3 && TFI_KIND != 6 && (TFI_KIND < 13 || TFI_KIND >= 15))
 #define TFI_HW (TFI_KIND == 1 || TFI_KIND == 3 || TFI_KIND == 4 || TFI_KIND == 6 || TFI_KIND >= 13)
 
-// 11 and 12 share sampler2D / texture2D with 1 and 2: the functions that take only the texture (size and
+// 11 and 12 (and 19) share sampler2D / texture2D with 1 and 2: the functions that take only the texture (size and
 // level queries) are defined once, by whichever of them is instantiated.
 #if TFI_KIND == 11
 #define TFI_OWNS_T ((TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) == 0)
 #elif TFI_KIND == 12
 #define TFI_OWNS_T ((TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) == 0)
+#elif TFI_KIND == 19 // sampler2D: kind 1's, or kind 11's when only the shadow kinds are instantiated
+#define TFI_OWNS_T ((TF_RESOURCES & (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_SHADOW)) == 0)
 #else
 #define TFI_OWNS_T 1
 #endif

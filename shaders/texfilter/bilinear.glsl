@@ -39,7 +39,7 @@ vec4 tf_bilinear_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
     vec2 x = clamp(tf_reduce_uv(uv, wrapMode) * vec2(size) - 0.5, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
     vec2 i0 = floor(x);
     vec2 a = x - i0;
-    ivec2 xs = tfi_wrap_pair(i0.x, size.x, wrapMode), ys = tfi_wrap_pair(i0.y, size.y, wrapMode);
+    ivec2 xs = TFI_WRAP_PAIR(i0.x, size.x, wrapMode), ys = TFI_WRAP_PAIR(i0.y, size.y, wrapMode);
     TF_COUNT_FETCHES(4);
     vec4 top = mix(TFI_FETCH(ivec2(xs.x, ys.x), level), TFI_FETCH(ivec2(xs.y, ys.x), level), a.x);
     vec4 bottom = mix(TFI_FETCH(ivec2(xs.x, ys.y), level), TFI_FETCH(ivec2(xs.y, ys.y), level), a.x);

@@ -52,7 +52,7 @@ float tf_brilinear_weight(float f, float band)
 #undef TFI_FAMILY
 
 #elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_BRILINEAR && TFI_MANUAL // per resource kind (access.glsl)
+#if TFI_FAMILY == TFI_FAMILY_BRILINEAR && TFI_MANUAL && !TFI_ENV // per resource kind (access.glsl)
 
 vec4 tf_brilinear(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band)
 {

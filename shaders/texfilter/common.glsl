@@ -31,7 +31,10 @@
 //                                  TF_RESOURCE_SAMPLER_2D 1 (sampler2D), TF_RESOURCE_TEXTURE_2D 2 (texture2D, and
 //                                  texture2D + sampler for _hw), TF_RESOURCE_SAMPLER_2D_ARRAY 4, TF_RESOURCE_
 //                                  TEXTURE_2D_ARRAY 8, TF_RESOURCE_INTEGER 16 (u/isampler2D, u/itexture2D),
-//                                  TF_RESOURCE_SHADOW 32 (percentage-closer filtering; sampler2DShadow for _hw).
+//                                  TF_RESOURCE_SHADOW 32 (percentage-closer filtering; sampler2DShadow for _hw),
+//                                  TF_RESOURCE_CUBE 64 (samplerCube, textureCube + sampler: cube.glsl),
+//                                  TF_RESOURCE_CUBE_ARRAY 128 (samplerCubeArray, textureCubeArray + sampler),
+//                                  TF_RESOURCE_LATLONG 256 (sampler2D lat-long maps: latlong.glsl).
 //                                  A family called with a kind left out fails to compile ("no matching function").
 // Needs:   nothing bound: every function takes the texture. Texel space (DESIGN.md §3): u = s·w_l with
 //          w_l = max(1, w >> l); wraps act on integer texel coordinates before texelFetch, so the sampler's
@@ -52,10 +55,13 @@
 #define TF_RESOURCE_TEXTURE_2D_ARRAY 8
 #define TF_RESOURCE_INTEGER 16
 #define TF_RESOURCE_SHADOW 32
+#define TF_RESOURCE_CUBE 64
+#define TF_RESOURCE_CUBE_ARRAY 128
+#define TF_RESOURCE_LATLONG 256
 #ifndef TF_RESOURCES
-#define TF_RESOURCES 63
+#define TF_RESOURCES 511
 #endif
-#if (TF_RESOURCES & 62) != 0
+#if (TF_RESOURCES & (2 | 4 | 8 | 16 | 32 | 64 | 128)) != 0
 #extension GL_EXT_samplerless_texture_functions : require
 #endif
 
@@ -74,6 +80,8 @@
 #define TFI_FAMILY_ANISO 7
 #define TFI_FAMILY_EWA 8
 #define TFI_FAMILY_SAT 9
+#define TFI_FAMILY_CUBE 10
+#define TFI_FAMILY_LATLONG 11
 
 // Cost hooks: define these before the first include to count work (the harness's `sample --stats`
 // does); by default they vanish. n texels read with texelFetch / n hardware filtered lookups.
@@ -175,6 +183,31 @@ vec2 tf_reduce_uv(vec2 uv, int wrapMode)
     return uv - 2.0 * roundEven(0.5 * uv);
 }
 
+// The lat-long kind's extra parameter (access.glsl kind 19): it only tells its overloads from sampler2D's.
+struct tfi_LatLong {
+    int unused;
+};
+
+// A cube face's frame (docs/ENVIRONMENT.md's table, Vulkan "Cube Map Face Selection"): sc = dot(S, d),
+// tc = dot(T, d), |ma| = dot(M, d) on face `face` (+X, -X, +Y, -Y, +Z, -Z).
+void tfi_cube_frame(int face, out vec3 S, out vec3 T, out vec3 M)
+{
+    int axis = face >> 1;
+    float sgn = (face & 1) == 0 ? 1.0 : -1.0;
+    M = vec3(axis == 0 ? sgn : 0.0, axis == 1 ? sgn : 0.0, axis == 2 ? sgn : 0.0);
+    S = axis == 0 ? vec3(0.0, 0.0, -sgn) : axis == 1 ? vec3(1.0, 0.0, 0.0) : vec3(sgn, 0.0, 0.0);
+    T = axis == 1 ? vec3(0.0, 0.0, sgn) : vec3(0.0, -1.0, 0.0);
+}
+
+// The direction through face coordinates st of `face` (|ma| = 1; st outside [0, 1] extends the face's plane).
+vec3 tfi_cube_direction(int face, vec2 st)
+{
+    vec3 S, T, M;
+    tfi_cube_frame(face, S, T, M);
+    vec2 c = 2.0 * st - 1.0;
+    return M + c.x * S + c.y * T;
+}
+
 #define TFI_FAMILY TFI_FAMILY_COMMON
 #include "instantiate.glsl"
 #undef TFI_FAMILY
@@ -188,12 +221,59 @@ vec2 tf_reduce_uv(vec2 uv, int wrapMode)
 ivec2 tf_level_size(TFI_T, int level) { return max(TFI_SIZE0 >> level, ivec2(1)); }
 #endif
 
+#if TFI_CUBE
+// Texel p of level `level` of the face, any p (docs/ENVIRONMENT.md, "Texels off the face"): the texel that the
+// direction through p's centre on the face's extended plane hits, read through the (NEAREST) sampler at that
+// direction, which selects the face itself; one texel past both edges of a corner, the mean of the three texels
+// that meet there. In the face the direction is the texel's own centre, half a texel from every boundary.
+vec4 tfi_cube_read(TFI_T TFI_X, ivec2 p, int level, float n)
+{
+    vec3 d = tfi_cube_direction(face, (vec2(p) + 0.5) / n);
+#if TFI_KIND == 15
+    return textureLod(TF_NONUNIFORM(tex), d, float(level));
+#elif TFI_KIND == 16
+    return textureLod(TF_NONUNIFORM(samplerCube(tex, smp)), d, float(level));
+#elif TFI_KIND == 17
+    return textureLod(TF_NONUNIFORM(tex), vec4(d, float(layer)), float(level));
+#else
+    return textureLod(TF_NONUNIFORM(samplerCubeArray(tex, smp)), vec4(d, float(layer)), float(level));
+#endif
+}
+
+vec4 tfi_cube_texel(TFI_T TFI_X, ivec2 p, int level)
+{
+    int n = max(TFI_SIZE0.x >> level, 1);
+    ivec2 c = clamp(p, ivec2(0), ivec2(n - 1));
+    if (abs(p.x - c.x) != 1 || abs(p.y - c.y) != 1)
+        return tfi_cube_read(TFI_A TFI_XA, p, level, float(n));
+    return (tfi_cube_read(TFI_A TFI_XA, c, level, float(n)) + tfi_cube_read(TFI_A TFI_XA, ivec2(p.x, c.y), level, float(n)) +
+            tfi_cube_read(TFI_A TFI_XA, ivec2(c.x, p.y), level, float(n))) / 3.0;
+}
+#endif
+
+#if TFI_LATLONG
+// Texel p of a lat-long level, any p (docs/ENVIRONMENT.md): columns repeat; a row past a pole is the row as
+// far from it on the other side, half a turn round (W/2 columns: exact for even widths). Rows repeat every
+// 2H (over both poles and back), so p.y is first reduced into [0, 2H).
+vec4 tfi_latlong_texel(TFI_T, ivec2 p, int level)
+{
+    ivec2 size = tf_level_size(TFI_A, level);
+    int j = tf_wrap(float(p.y), 2 * size.y, TF_WRAP_REPEAT);
+    float i = float(p.x);
+    if (j >= size.y) {
+        j = 2 * size.y - 1 - j;
+        i += float(size.x / 2);
+    }
+    return texelFetch(TF_NONUNIFORM(tex), ivec2(tf_wrap(i, size.x, TF_WRAP_REPEAT), j), level);
+}
+#endif
+
 #if TFI_CAN_FETCH
 vec4 tf_fetch(TFI_T, ivec2 texel TFI_X, int level, int wrapMode)
 {
     ivec2 size = tf_level_size(TFI_A, level);
     TF_COUNT_FETCHES(1);
-    return TFI_FETCH(ivec2(tf_wrap(float(texel.x), size.x, wrapMode), tf_wrap(float(texel.y), size.y, wrapMode)),
+    return TFI_FETCH(ivec2(TFI_WRAP(float(texel.x), size.x, wrapMode), TFI_WRAP(float(texel.y), size.y, wrapMode)),
                      level);
 }
 #endif

@@ -277,7 +277,7 @@ vec4 tfi_ewa_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape s
         float j = rowSpan.x + float(k), dy = j + 0.5 - frac.y, yy = r22 * dy, cx = r12 * dy;
         vec2 span = tfi_ewa_row_span(M, det, frac.x, dy);
         int cols = int(clamp(span.y - span.x + 1.0, 0.0, float(TF_EWA_MAX_TEXELS)));
-        int ty = tf_wrap(base.y + j, size.y, wrapMode);
+        int ty = TFI_WRAP(base.y + j, size.y, wrapMode);
         // One row: y.y is constant, so its sums need only the y.x moments.
         float rw = 0.0, rwx = 0.0, rwxx = 0.0;
         vec4 rt = vec4(0.0), rtx = vec4(0.0);
@@ -289,7 +289,7 @@ vec4 tfi_ewa_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape s
             if (r2 < 1.0) {
                 float w = tfi_ewa_weight(r2, alpha), yx = r11 * dx + cx, wx = w * yx;
                 TF_COUNT_FETCHES(1);
-                vec4 t = TFI_FETCH(ivec2(tf_wrap(base.x + i, size.x, wrapMode), ty), level);
+                vec4 t = TFI_FETCH(ivec2(TFI_WRAP(base.x + i, size.x, wrapMode), ty), level);
                 if (s.w + rw == 0.0) {
                     s.pivot = t; // the first texel (an earlier one of weight 0 added nothing)
                     s.lo = t;

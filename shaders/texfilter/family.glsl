@@ -22,6 +22,10 @@
 #include "ewa.glsl"
 #elif TFI_FAMILY == TFI_FAMILY_SAT
 #include "sat.glsl"
+#elif TFI_FAMILY == TFI_FAMILY_CUBE
+#include "cube.glsl"
+#elif TFI_FAMILY == TFI_FAMILY_LATLONG
+#include "latlong.glsl"
 #else
 #error "texfilter/family.glsl: unknown TFI_FAMILY"
 #endif

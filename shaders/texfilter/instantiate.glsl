@@ -110,3 +110,38 @@
 #include "family.glsl"
 #undef TFI_KIND
 #endif
+
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+#define TFI_KIND 15
+#include "access.glsl"
+#include "family.glsl"
+#undef TFI_KIND
+#endif
+
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+#define TFI_KIND 16
+#include "access.glsl"
+#include "family.glsl"
+#undef TFI_KIND
+#endif
+
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+#define TFI_KIND 17
+#include "access.glsl"
+#include "family.glsl"
+#undef TFI_KIND
+#endif
+
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+#define TFI_KIND 18
+#include "access.glsl"
+#include "family.glsl"
+#undef TFI_KIND
+#endif
+
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+#define TFI_KIND 19
+#include "access.glsl"
+#include "family.glsl"
+#undef TFI_KIND
+#endif

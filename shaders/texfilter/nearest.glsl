@@ -36,7 +36,7 @@ vec4 tf_nearest_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
     ivec2 size = tf_level_size(TFI_A, level);
     vec2 texel = floor(tf_reduce_uv(uv, wrapMode) * vec2(size)); // whole periods first: no overflow
     TF_COUNT_FETCHES(1);
-    return TFI_FETCH(ivec2(tf_wrap(texel.x, size.x, wrapMode), tf_wrap(texel.y, size.y, wrapMode)), level);
+    return TFI_FETCH(ivec2(TFI_WRAP(texel.x, size.x, wrapMode), TFI_WRAP(texel.y, size.y, wrapMode)), level);
 }
 
 #if TFI_MANUAL

@@ -1,5 +1,5 @@
 // texfilter/texfilter.glsl — umbrella include: every texfilter include at once (version, common,
-// derivatives, lod, nearest, bilinear, trilinear, brilinear, aniso, ewa, sat).
+// derivatives, lod, nearest, bilinear, trilinear, brilinear, aniso, ewa, sat, cube, latlong).
 //
 // Use:     #extension GL_GOOGLE_include_directive : require
 //          #include "texfilter/texfilter.glsl"   // compile with -I<dir holding texfilter/>
@@ -36,5 +36,7 @@
 #include "aniso.glsl"
 #include "ewa.glsl"
 #include "sat.glsl"
+#include "cube.glsl"
+#include "latlong.glsl"
 
 #endif

@@ -1,0 +1,148 @@
+// texfilter/cube.glsl — cube-map lookups by direction: nearest, bilinear, trilinear, aniso and EWA, seamless
+// across faces (Vulkan cube sampling is always seamless), with the footprint from the direction derivatives
+// projected onto the face (docs/ENVIRONMENT.md has the math; host/reference/environment.cpp is its CPU twin).
+//
+// Use:     vec4 tf_trilinear_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+//          vec4 tf_aniso_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes,
+//                             int shape);
+//          vec4 tf_ewa_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha,
+//                           float maxAniso);
+//          also tf_nearest_cube / tf_bilinear_cube (tex, dir, s: level 0), tf_nearest_mip_cube /
+//          tf_bilinear_mip_cube (tex, dir, dDirdx, dDirdy, s), and tf_aniso_cube_hw / tf_ewa_cube_hw (the same
+//          taps through the hardware's seamless bilinear/trilinear filter).
+//          Every cube kind (TF_RESOURCE_CUBE, TF_RESOURCE_CUBE_ARRAY): samplerCube; textureCube tex, sampler smp;
+//          samplerCubeArray and textureCubeArray + sampler with `int layer` right after dir; bindless with
+//          TF_NONUNIFORM (common.glsl), e.g. tf_ewa_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer,
+//          vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso).
+//          tf_CubeLookup tf_cube_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy): the face, its uv and uv gradients
+//          every form filters with (face -1 for a zero or non-finite dir).
+// Math:    the face of dir's major axis (ties x, y, z), uv = (sc/|ma| + 1)/2 per the spec's table, gradients by
+//          the quotient rule on that face; then the 2D family of the same name on that face (its LOD, probes,
+//          ellipse: trilinear.glsl, aniso.glsl, ewa.glsl), every texel past the face's edges read from the cube
+//          where the direction through its centre points (the adjacent face's edge texel one texel past an
+//          edge; the mean of the three corner texels one texel past a corner). s.wrap is ignored.
+// Needs:   a cube image with a full MIP chain per face. Manual forms read each texel with textureLod at its
+//          centre's direction: the sampler bound (or `smp`) must filter NEAREST (min, mag, mipmapMode) with no
+//          LOD bias and no LOD clamp narrower than the levels (textureSize and textureQueryLevels give the
+//          rest). _hw forms: a LINEAR sampler (min, mag, mipmapMode LINEAR for aniso, any for ewa), no bias.
+// Options: s.lodBias, s.lodMin, s.lodMax, and each family's own (aniso.glsl, ewa.glsl). No defines.
+// Cost:    the 2D family's texel reads, each a textureLod (3 at a bilinear corner); _hw: its hardware taps.
+// Degenerate input: a zero or non-finite dir gives vec4(0); non-finite derivatives the coarsest level, zero
+//          the finest (the 2D rules).
+// Example: vec3 d = reflect(viewDir, n);
+//          vec4 c = tf_ewa_cube(envNearest, d, dFdxFine(d), dFdyFine(d), tf_sampler(TF_WRAP_CLAMP), 2.0, 16.0);
+#ifndef TF_CUBE_GLSL
+#define TF_CUBE_GLSL
+
+#include "common.glsl"
+#include "nearest.glsl"
+#include "trilinear.glsl"
+#include "aniso.glsl"
+#include "ewa.glsl"
+
+// A direction lookup as the 2D lookup on one face: face -1 when dir is zero or not finite.
+struct tf_CubeLookup {
+    int face;
+    vec2 uv, dUVdx, dUVdy;
+};
+
+tf_CubeLookup tf_cube_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy)
+{
+    tf_CubeLookup c = tf_CubeLookup(-1, vec2(0.5), vec2(0.0), vec2(0.0));
+    vec3 a = abs(dir);
+    if (any(isnan(dir)) || any(isinf(dir)) || max(a.x, max(a.y, a.z)) == 0.0)
+        return c;
+    c.face = a.x >= a.y && a.x >= a.z ? (dir.x < 0.0 ? 1 : 0) : a.y >= a.z ? (dir.y < 0.0 ? 3 : 2) : (dir.z < 0.0 ? 5 : 4);
+    vec3 S, T, M;
+    tfi_cube_frame(c.face, S, T, M);
+    vec2 sctc = vec2(dot(S, dir), dot(T, dir));
+    float m = dot(M, dir);
+    c.uv = 0.5 * (sctc / m + 1.0);
+    // d(sc/m) = (d(sc)·m − sc·dm) / m²: the direction derivatives projected onto the face.
+    c.dUVdx = 0.5 * (vec2(dot(S, dDirdx), dot(T, dDirdx)) * m - sctc * dot(M, dDirdx)) / (m * m);
+    c.dUVdy = 0.5 * (vec2(dot(S, dDirdy), dot(T, dDirdy)) * m - sctc * dot(M, dDirdy)) / (m * m);
+    return c;
+}
+
+// The 2D families' sampler for a face: uv reduction as for clamp (a no-op on a face), the LOD options kept.
+tf_Sampler tfi_cube_sampler(tf_Sampler s) { return tf_Sampler(TF_WRAP_CLAMP, s.lodBias, s.lodMin, s.lodMax); }
+
+#define TFI_FAMILY TFI_FAMILY_CUBE
+#include "instantiate.glsl"
+#undef TFI_FAMILY
+
+#elif defined(TFI_FAMILY)
+#if TFI_FAMILY == TFI_FAMILY_CUBE && TFI_CUBE // per cube kind (access.glsl)
+
+// The public parameters after dir: the layer of an array (the face comes from dir).
+#if TFI_KIND == 17 || TFI_KIND == 18
+#define TFI_CUBE_X , int layer
+#else
+#define TFI_CUBE_X
+#endif
+// Each form: the face lookup, then the 2D family on the face (TFI_XA passes `face` and `layer`).
+#define TFI_CUBE_BEGIN(dDirdx, dDirdy) \
+    tf_CubeLookup c = tf_cube_lookup(dir, dDirdx, dDirdy); \
+    if (c.face < 0) \
+        return vec4(0.0); \
+    int face = c.face; \
+    tf_Sampler t = tfi_cube_sampler(s)
+
+vec4 tf_nearest_cube(TFI_T, vec3 dir TFI_CUBE_X, tf_Sampler s)
+{
+    TFI_CUBE_BEGIN(vec3(0.0), vec3(0.0));
+    return tf_nearest_level(TFI_A, c.uv TFI_XA, 0, t.wrap);
+}
+
+vec4 tf_bilinear_cube(TFI_T, vec3 dir TFI_CUBE_X, tf_Sampler s)
+{
+    TFI_CUBE_BEGIN(vec3(0.0), vec3(0.0));
+    return tf_bilinear_level(TFI_A, c.uv TFI_XA, 0, t.wrap);
+}
+
+vec4 tf_nearest_mip_cube(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tf_nearest_mip(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t);
+}
+
+vec4 tf_bilinear_mip_cube(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tf_bilinear_mip(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t);
+}
+
+vec4 tf_trilinear_cube(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tf_trilinear(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t);
+}
+
+vec4 tf_aniso_cube(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tfi_aniso_filter(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, maxProbes, shape, false);
+}
+
+vec4 tf_aniso_cube_hw(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tfi_aniso_filter(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, maxProbes, shape, true);
+}
+
+vec4 tf_ewa_cube(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tfi_ewa_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, alpha, maxAniso, false);
+}
+
+vec4 tf_ewa_cube_hw(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tfi_ewa_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, alpha, maxAniso, true);
+}
+
+#undef TFI_CUBE_BEGIN
+#undef TFI_CUBE_X
+#endif
+#endif

@@ -1,0 +1,354 @@
+// The environment filters on the device (shaders/texfilter/cube.glsl, latlong.glsl) through the harness's
+// environment renders (vulkan/environment.h), against the math (docs/ENVIRONMENT.md) and its CPU reference
+// (reference/environment.h). The reference's own facts (face table, edge and corner rules, seamlessness,
+// constants) are tests/test_environment_reference.cpp; the goldens (golden/manifest.txt, skybox-*, reflect-*)
+// compare whole images. Small maps (16..64 texels a face), 64x64 renders: each case a few seconds on lavapipe.
+//
+// Float bounds. A GPU lookup direction is the reference's up to the float ray cast: measured per pixel with
+// the `none` filter, which returns normalize(dir)/2 + 1/2, so δd = |gpu - ref| of the unit direction. A face
+// coordinate s = (sc/|ma| + 1)/2 moves by at most |∂s/∂d̂|·δd <= (1 + sqrt(2))/2·sqrt(3)·δd (|ma| >= 1/sqrt(3)
+// for a unit direction; |∂(sc/ma)| <= (1 + |sc/ma|)/|ma|), i.e. by N·2.1·δd texels on an N-texel face.
+#include "core/cube_textures.h"
+#include "core/environment.h"
+#include "reference/env_cast.h"
+#include "reference/env_render.h"
+#include "reference/environment.h"
+#include "scene/camera.h"
+#include "scene/scene.h"
+#include "support.h"
+#include "texture/mip.h"
+#include "vulkan/environment.h"
+#include <algorithm>
+#include <cmath>
+
+using namespace tf;
+
+namespace {
+
+struct Device {
+    VulkanContext context;
+    Device() : context(create_context(test::test_context_options())) {}
+    ~Device() { destroy_context(context); }
+};
+
+Device& device()
+{
+    static Device d;
+    return d;
+}
+
+Image render_gpu(const EnvironmentMap& env, const SceneParams& scene, const SamplerOptions& options,
+                 Gradients gradients = Gradients::fine)
+{
+    const VulkanContext& context = device().context;
+    GpuEnvironment gpu = env.map == EnvMap::cube ? upload_cube_environment(context, env.cube)
+                                                 : upload_latlong_environment(context, env.latlong);
+    Cleanup cleanup;
+    cleanup.add([&] { destroy_environment(context, gpu); });
+    RenderOptions render;
+    render.gradients = gradients;
+    return gpu_render_environment(context, gpu, scene, options, render);
+}
+
+Image render_reference(const EnvironmentMap& env, const SceneParams& scene, const SamplerOptions& options,
+                       Gradients gradients = Gradients::fine)
+{
+    RenderOptions render;
+    render.gradients = gradients;
+    return reference_render_environment(scene, env, options, render);
+}
+
+SamplerOptions with_filter(Filter filter)
+{
+    SamplerOptions o;
+    o.filter = filter;
+    o.wrap = Wrap::clamp;
+    return o;
+}
+
+EnvironmentMap cube_env(const std::string& name, int size)
+{
+    EnvironmentMap env;
+    env.map = EnvMap::cube;
+    env.cube = make_procedural_cube(name, size);
+    return env;
+}
+
+EnvironmentMap constant_env(EnvMap map, glm::vec4 value)
+{
+    EnvironmentMap env;
+    env.map = map;
+    if (map == EnvMap::cube) {
+        std::array<Image, cube_face_count> faces;
+        for (Image& f : faces)
+            f = make_image(16, 16, value);
+        env.cube = build_cube_map(std::move(faces));
+    } else {
+        env.latlong = build_mip_chain(make_image(32, 16, value));
+    }
+    return env;
+}
+
+// Per pixel, |gpu direction - reference direction| of the unit directions (see the top of the file).
+std::vector<double> direction_error(const EnvironmentMap& env, const SceneParams& scene)
+{
+    const Image gpu = render_gpu(env, scene, with_filter(Filter::none));
+    const int width = scene.kind_size.y;
+    std::vector<double> out(gpu.texels.size());
+    for (size_t i = 0; i < out.size(); ++i) {
+        const glm::dvec3 ref = glm::normalize(reference_env_direction(scene, double(i % width) + 0.5, double(i / width) + 0.5));
+        const glm::dvec3 got = 2.0 * glm::dvec3(gpu.texels[i]) - 1.0;
+        out[i] = glm::length(got - ref);
+    }
+    return out;
+}
+
+double largest_texel(const CubeMap& cube)
+{
+    double m = 0;
+    for (const MipChain& f : cube.faces)
+        for (const glm::vec4& t : f.levels[0].texels)
+            m = std::max({m, double(t.r), double(t.g), double(t.b), double(t.a)});
+    return m;
+}
+
+} // namespace
+
+TEST_SUITE_BEGIN("gpu");
+
+// A constant map gives its constant for every filter, on every pixel of both scenes and both maps: the weights
+// of every family sum to one (float: EWA divides by its total weight, K <= 2·95² terms, each rounding once).
+TEST_CASE("constant")
+{
+    const glm::vec4 value(0.25f, 0.5f, 0.75f, 1.0f);
+    const std::vector<Filter> filters = {Filter::nearest,   Filter::bilinear, Filter::nearest_mip, Filter::bilinear_mip,
+                                         Filter::trilinear, Filter::aniso,    Filter::ewa,         Filter::hw_trilinear,
+                                         Filter::ground_truth};
+    for (EnvMap map : {EnvMap::cube, EnvMap::latlong}) {
+        const EnvironmentMap env = constant_env(map, value);
+        for (SceneKind kind : {SceneKind::skybox, SceneKind::reflect})
+            for (Filter filter : filters)
+                for (Taps taps : {Taps::manual, Taps::hardware}) {
+                    if (taps == Taps::hardware && filter != Filter::aniso && filter != Filter::ewa)
+                        continue;
+                    SamplerOptions o = with_filter(filter);
+                    o.taps = taps;
+                    o.truth_side = 2;
+                    test::limit_failure_lines(4);
+                    const Image image = render_gpu(env, make_scene(kind, 32, 32, 16), o);
+                    const double eps = 2.0 * 95 * 95 * 2 * std::ldexp(1.0, -24);
+                    for (const glm::vec4& t : image.texels)
+                        CHECK(test::near(glm::dvec4(t), glm::dvec4(value), eps),
+                              to_string(map) + " " + to_string(kind) + " " + to_string(filter) + " taps " +
+                                  std::to_string(int(taps)) + ": " + test::show(glm::dvec4(t)));
+                }
+    }
+}
+
+// Every texel of every face its own colour (cube-hash): nearest on the device reads the texel the reference
+// reads, wherever the pixel's face coordinate is not within the float bound of a texel boundary, in both
+// scenes: a wrong face, a flipped or rotated face, or an off-by-one edge rule changes the colour.
+TEST_CASE("faces-and-orientation")
+{
+    const int n = 32;
+    const EnvironmentMap env = cube_env("cube-hash", n);
+    for (SceneKind kind : {SceneKind::skybox, SceneKind::reflect}) {
+        const SceneParams scene = make_scene(kind, 64, 64, n);
+        const std::vector<double> dir_error = direction_error(env, scene);
+        const Image gpu = render_gpu(env, scene, with_filter(Filter::nearest));
+        const Image ref = render_reference(env, scene, with_filter(Filter::nearest));
+        int compared = 0, faces_seen = 0;
+        std::array<bool, cube_face_count> seen{};
+        test::limit_failure_lines(8);
+        for (size_t i = 0; i < gpu.texels.size(); ++i) {
+            const double px = double(i % 64) + 0.5, py = double(i / 64) + 0.5;
+            EnvLookup l;
+            l.dir = reference_env_direction(scene, px, py);
+            int face = 0;
+            const Lookup uv = cube_face_lookup(l, face);
+            const double slack = 2.1 * n * dir_error[i] + 1e-6;
+            auto clear = [&](double x) { return std::abs(x * n - std::round(x * n)) > slack; };
+            if (!clear(uv.u) || !clear(uv.v))
+                continue;
+            ++compared;
+            seen[size_t(face)] = true;
+            CHECK(glm::dvec4(gpu.texels[i]) == glm::dvec4(ref.texels[i]),
+                  to_string(kind) + " pixel " + std::to_string(i) + " face " + std::to_string(face) + ": gpu " +
+                      test::show(glm::dvec4(gpu.texels[i])) + " reference " + test::show(glm::dvec4(ref.texels[i])));
+        }
+        for (bool s : seen)
+            faces_seen += s;
+        CHECK(compared > 64 * 64 * 9 / 10, std::to_string(compared) + " pixels compared");
+        CHECK(faces_seen >= 3, to_string(kind) + ": " + std::to_string(faces_seen) + " faces seen");
+    }
+}
+
+// Bilinear at level 0 across the seams: every tap that falls off a face reads the neighbour's texel (and the
+// corner's mean of three). On cube-hash a wrong neighbour is off by the hash's contrast (~0.5); the device may
+// differ from the reference only through the direction's float error: the weights move by N·2.1·δd, each
+// texel contrast at most the largest texel value, plus a float rounding of the blend.
+TEST_CASE("seamless-bilinear")
+{
+    const int n = 16;
+    const EnvironmentMap env = cube_env("cube-hash", n);
+    const double contrast = largest_texel(env.cube);
+    for (SceneKind kind : {SceneKind::skybox, SceneKind::reflect}) {
+        const SceneParams scene = make_scene(kind, 64, 64, n);
+        const std::vector<double> dir_error = direction_error(env, scene);
+        const Image gpu = render_gpu(env, scene, with_filter(Filter::bilinear));
+        const Image ref = render_reference(env, scene, with_filter(Filter::bilinear));
+        test::limit_failure_lines(8);
+        for (size_t i = 0; i < gpu.texels.size(); ++i) {
+            const double tol = 2.0 * 2.1 * n * dir_error[i] * contrast + 8 * std::ldexp(1.0, -24) * contrast;
+            CHECK(test::max_channel_diff(glm::dvec4(gpu.texels[i]), glm::dvec4(ref.texels[i])) <= tol,
+                  to_string(kind) + " pixel " + std::to_string(i) + ": gpu " + test::show(glm::dvec4(gpu.texels[i])) +
+                      " reference " + test::show(glm::dvec4(ref.texels[i])) + " tolerance " + test::show(tol));
+        }
+    }
+}
+
+// Manual cube trilinear against the device's own seamless cube trilinear (textureGrad on the samplerCube), on
+// every pixel of both scenes, across the edges and the corner the skybox looks into. The device may round
+// what Vulkan lets it round, with this device's precision bits: each bilinear weight to subTexelPrecisionBits
+// (one step on each axis, times the texels' contrast on that level), the LOD to mipmapPrecisionBits and the
+// level blend to as many (two steps, times the difference of the two levels' values: lod_error), plus the
+// direction's float error as above. cube-smooth keeps contrasts small, so a wrong texel or LOD is not hidden.
+// The corner texel's weight is the one thing left to the device (the spec recommends the mean of three; lavapipe
+// does it): a device that does otherwise fails here near the corner, as it should be reported.
+TEST_CASE("manual-vs-hardware-trilinear")
+{
+    const int n = 32;
+    const EnvironmentMap env = cube_env("cube-smooth", n);
+    const DeviceInfo& info = test::test_device_info();
+    const double step = std::ldexp(1.0, -int(info.sub_texel_precision_bits));
+    const double lod_error = 2.0 * std::ldexp(1.0, -int(info.mipmap_precision_bits));
+    // The largest difference between neighbouring texels (also across face edges) on any level: the contrast.
+    double texel_contrast = 0;
+    for (int level = 0; level < int(env.cube.faces[0].levels.size()); ++level) {
+        const int size = env.cube.faces[0].levels[size_t(level)].width;
+        for (int f = 0; f < cube_face_count; ++f)
+            for (int j = -1; j <= size; ++j)
+                for (int i = -1; i <= size; ++i) {
+                    const glm::dvec4 t = cube_texel(env.cube, f, level, i, j);
+                    texel_contrast = std::max({texel_contrast, test::max_channel_diff(t, cube_texel(env.cube, f, level, i + 1, j)),
+                                               test::max_channel_diff(t, cube_texel(env.cube, f, level, i, j + 1))});
+                }
+    }
+    for (SceneKind kind : {SceneKind::skybox, SceneKind::reflect}) {
+        const SceneParams scene = make_scene(kind, 64, 64, n);
+        const std::vector<double> dir_error = direction_error(env, scene);
+        const Image manual = render_gpu(env, scene, with_filter(Filter::trilinear));
+        const Image hardware = render_gpu(env, scene, with_filter(Filter::hw_trilinear));
+        const std::vector<EnvLookup> lookups = reference_env_lookups(scene, Gradients::fine);
+        test::limit_failure_lines(8);
+        double worst = 0;
+        for (size_t i = 0; i < manual.texels.size(); ++i) {
+            // The two levels' values at the reference LOD's level pair: what a blend weight moves.
+            SamplerOptions level = with_filter(Filter::bilinear_mip);
+            int face = 0;
+            const Lookup l = cube_face_lookup(lookups[i], face);
+            (void)l;
+            double level_gap = 0;
+            for (int k = 0; k + 1 < int(env.cube.faces[0].levels.size()); ++k) {
+                level.lod_min = level.lod_max = float(k);
+                SamplerOptions next = level;
+                next.lod_min = next.lod_max = float(k + 1);
+                level_gap = std::max(level_gap, test::max_channel_diff(reference_cube_sample(env.cube, level, lookups[i]),
+                                                                        reference_cube_sample(env.cube, next, lookups[i])));
+            }
+            const double tol = 2.0 * step * texel_contrast + lod_error * level_gap + 2.0 * 2.1 * n * dir_error[i] * texel_contrast +
+                               1e-6;
+            const double diff = test::max_channel_diff(glm::dvec4(manual.texels[i]), glm::dvec4(hardware.texels[i]));
+            worst = std::max(worst, diff / tol);
+            CHECK(diff <= tol, to_string(kind) + " pixel " + std::to_string(i) + ": manual " +
+                                   test::show(glm::dvec4(manual.texels[i])) + " hardware " +
+                                   test::show(glm::dvec4(hardware.texels[i])) + " tolerance " + test::show(tol));
+        }
+        MESSAGE(to_string(kind) << ": worst |manual - hardware| / tolerance " << worst);
+    }
+}
+
+// EWA on the mirror sphere against the ground truth through the same reflection (Gaussian pixel, 64 samples a
+// pixel): closer than trilinear, whose isotropic footprint blurs the curved, anisotropic ones (the family
+// that models the Gaussian pixel must beat the one that does not, as it does on every 2D scene).
+TEST_CASE("ewa-reflect-vs-truth")
+{
+    const EnvironmentMap env = cube_env("checker", 64);
+    const SceneParams scene = make_scene(SceneKind::reflect, 64, 64, 64);
+    SamplerOptions truth = with_filter(Filter::ground_truth);
+    truth.pixel_filter = PixelFilter::gaussian;
+    truth.truth_side = 8;
+    const Image ideal = render_gpu(env, scene, truth);
+    auto rmse = [&](const Image& image) {
+        double sum = 0;
+        for (size_t i = 0; i < image.texels.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+                sum += std::pow(double(image.texels[i][c]) - double(ideal.texels[i][c]), 2.0);
+        return std::sqrt(sum / (3.0 * double(image.texels.size())));
+    };
+    const double ewa = rmse(render_gpu(env, scene, with_filter(Filter::ewa)));
+    const double trilinear = rmse(render_gpu(env, scene, with_filter(Filter::trilinear)));
+    MESSAGE("reflect, Gaussian truth: ewa rmse " << ewa << ", trilinear " << trilinear);
+    CHECK(ewa < trilinear, "ewa " + test::show(ewa) + " trilinear " + test::show(trilinear));
+}
+
+// The lat-long map on the device across its seam (u = 0/1, the camera turned to look along +z) and towards the
+// +y pole, against the reference, bilinear and trilinear: the float bound as above with the mapping's own
+// Jacobian (|∂u/∂d̂| = 1/(2πρ), |∂v/∂d̂| = 1/(πρ), ρ = sqrt(d.x² + d.z²) of the unit direction) in texels.
+TEST_CASE("latlong-seam-and-pole")
+{
+    EnvironmentMap env;
+    env.map = EnvMap::latlong;
+    env.latlong = build_mip_chain(latlong_from_cube(make_procedural_cube("cube-hash", 16), 64));
+    const double contrast = 1.0;
+    bool seam = false, pole = false;
+    for (double yaw : {-48.0, 48.0})
+        for (double pitch : {0.0, 55.0}) {
+            SceneParams scene = make_scene(SceneKind::skybox, 64, 64, 64);
+            Camera turn = camera_of(scene);
+            turn.yaw = yaw;
+            turn.pitch = pitch;
+            scene = with_camera(scene, turn);
+            const std::vector<double> dir_error = direction_error(env, scene);
+            double umin = 1, umax = 0, rho_min = 1;
+            for (int i = 0; i < 64 * 64; ++i) {
+                EnvLookup l;
+                l.dir = reference_env_direction(scene, double(i % 64) + 0.5, double(i / 64) + 0.5);
+                const Lookup uv = latlong_lookup(l);
+                umin = std::min(umin, uv.u);
+                umax = std::max(umax, uv.u);
+                rho_min = std::min(rho_min, std::hypot(l.dir.x, l.dir.z) / glm::length(l.dir));
+            }
+            seam = seam || (umin < 0.05 && umax > 0.95);
+            pole = pole || rho_min < 0.2;
+            for (Filter filter : {Filter::bilinear, Filter::trilinear}) {
+                const Image gpu = render_gpu(env, scene, with_filter(filter));
+                const Image ref = render_reference(env, scene, with_filter(filter));
+                test::limit_failure_lines(8);
+                for (size_t i = 0; i < gpu.texels.size(); ++i) {
+                    const glm::dvec3 d = glm::normalize(reference_env_direction(scene, double(i % 64) + 0.5, double(i / 64) + 0.5));
+                    const double rho = std::max(std::hypot(d.x, d.z), 1e-3);
+                    const double texels = (64.0 / (2.0 * M_PI) + 32.0 / M_PI) / rho * dir_error[i];
+                    const double tol = (filter == Filter::trilinear ? 4.0 : 2.0) * texels * contrast + 1e-5;
+                    CHECK(test::max_channel_diff(glm::dvec4(gpu.texels[i]), glm::dvec4(ref.texels[i])) <= tol,
+                          to_string(filter) + " yaw " + test::show(yaw) + " pitch " + test::show(pitch) + " pixel " +
+                              std::to_string(i) + ": gpu " + test::show(glm::dvec4(gpu.texels[i])) + " reference " +
+                              test::show(glm::dvec4(ref.texels[i])));
+                }
+            }
+        }
+    CHECK(seam, "no view crossed the u = 0/1 seam");
+    CHECK(pole, "no view came near the +y pole");
+}
+
+// What the environment scenes refuse, before any work.
+TEST_CASE("refusals")
+{
+    const EnvironmentMap env = constant_env(EnvMap::cube, glm::vec4(1.0f));
+    const SceneParams scene = make_scene(SceneKind::skybox, 8, 8, 16);
+    CHECK_THROWS_WITH(render_gpu(env, scene, with_filter(Filter::sat)), "no environment-map form");
+    CHECK_THROWS_WITH(render_gpu(env, scene, with_filter(Filter::brilinear)), "no environment-map form");
+    CHECK_THROWS_WITH(render_reference(env, scene, with_filter(Filter::sat_assembly)), "no environment-map form");
+}
+
+TEST_SUITE_END();
