@@ -140,8 +140,10 @@ int run_bench(const std::vector<std::string>& argv)
     config.frames = args.get_int("--frames", config.quick ? 5 : 20, 1, 1000);
     config.flicker_frames = args.get_int("--flicker-frames", config.quick ? 3 : 8, 2, 64);
     std::string scenes = args.get("--scenes", config.quick ? "plane,tunnel,slanted,mesh" : "");
-    if (scenes.empty())
-        config.scenes = all_scenes();
+    if (scenes.empty()) // the 2D scenes (skybox and reflect look up directions, not uv)
+        for (SceneKind kind : all_scenes())
+            if (!is_environment_scene(kind))
+                config.scenes.push_back(kind);
     for (const std::string& name : split_list(scenes)) {
         try {
             config.scenes.push_back(parse_scene(name));

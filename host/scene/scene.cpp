@@ -144,9 +144,11 @@ const std::vector<SceneKind>& all_scenes()
 {
     static const std::vector<SceneKind> kinds = {SceneKind::plane,   SceneKind::tunnel,    SceneKind::zoom,
                                                  SceneKind::minify,  SceneKind::slanted,   SceneKind::triangles,
-                                                 SceneKind::mesh};
+                                                 SceneKind::mesh,    SceneKind::skybox,    SceneKind::reflect};
     return kinds;
 }
+
+bool is_environment_scene(SceneKind kind) { return kind == SceneKind::skybox || kind == SceneKind::reflect; }
 
 std::string to_string(SceneKind kind)
 {
@@ -158,6 +160,8 @@ std::string to_string(SceneKind kind)
     case SceneKind::slanted: return "slanted";
     case SceneKind::triangles: return "triangles";
     case SceneKind::mesh: return "mesh";
+    case SceneKind::skybox: return "skybox";
+    case SceneKind::reflect: return "reflect";
     }
     return "?";
 }
@@ -234,6 +238,21 @@ SceneParams make_scene(SceneKind kind, int width, int height, int texture_width)
             }
         break;
     }
+    case SceneKind::skybox: { // across the edges of +X, +Y and +Z and into their corner (1, 1, 1)
+        double fov_y = 2.0 * std::atan(double(height) / double(width)) * 180.0 / pi; // tan(fov_x / 2) = 1
+        set_camera(scene, {{0.0, 0.0, 0.0}, {1.0, 0.75, 0.9}, {0.0, 1.0, 0.0}, fov_y}, width, height);
+        scene.kind_size.x = HARNESS_SCENE_SKYBOX;
+        scene.extent = glm::vec4(0.0f);
+        break;
+    }
+    case SceneKind::reflect: { // a mirror ball of radius 1, three units ahead, seen a little from above
+        glm::dvec3 forward = glm::normalize(glm::dvec3(0.25, -0.3, 1.0));
+        set_camera(scene, {{0.0, 0.0, 0.0}, forward, {0.0, 1.0, 0.0}, 60.0}, width, height);
+        scene.kind_size.x = HARNESS_SCENE_REFLECT;
+        scene.p0 = glm::vec4(glm::vec3(3.0 * forward), 1.0f);
+        scene.extent = glm::vec4(0.0f);
+        break;
+    }
     }
     return scene;
 }
@@ -245,8 +264,42 @@ SceneParams make_minified_scene(int width, int height, int texture_width, double
     return scene;
 }
 
+namespace {
+
+// v turned by `radians` about the unit axis (Rodrigues).
+glm::dvec3 rotated(glm::dvec3 v, glm::dvec3 axis, double radians)
+{
+    return v * std::cos(radians) + glm::cross(axis, v) * std::sin(radians) +
+           axis * glm::dot(axis, v) * (1.0 - std::cos(radians));
+}
+
+// The environment scenes' camera path: the view and the camera's offset from the pivot turned together.
+SceneParams turned_view(const SceneParams& scene, glm::dvec3 pivot, double yaw, double pitch)
+{
+    auto turn = [&](glm::vec4 v, bool point) {
+        glm::dvec3 x = glm::dvec3(v) - (point ? pivot : glm::dvec3(0.0));
+        x = rotated(rotated(x, {0.0, 1.0, 0.0}, yaw), {1.0, 0.0, 0.0}, pitch);
+        return glm::vec4(glm::vec3(x + (point ? pivot : glm::dvec3(0.0))), v.w);
+    };
+    SceneParams moved = scene;
+    moved.origin = turn(scene.origin, true);
+    moved.forward = turn(scene.forward, false);
+    moved.right = turn(scene.right, false);
+    moved.up = turn(scene.up, false);
+    return moved;
+}
+
+} // namespace
+
 SceneParams scene_at_frame(const SceneParams& scene, int frame, int texture_width)
 {
+    if (scene.kind_size.x == HARNESS_SCENE_SKYBOX || scene.kind_size.x == HARNESS_SCENE_REFLECT) {
+        if (frame == 0)
+            return scene;
+        const double texel = 0.5 * pi / texture_width; // a face's 90 degrees over its texels
+        const glm::dvec3 pivot = scene.kind_size.x == HARNESS_SCENE_REFLECT ? glm::dvec3(scene.p0) : glm::dvec3(0.0);
+        return turned_view(scene, pivot, frame * camera_step_texels.x * texel, frame * camera_step_texels.y * texel);
+    }
     SceneParams moved = scene;
     moved.extent.z += float(frame * camera_step_texels.x / texture_width);
     moved.extent.w += float(frame * camera_step_texels.y / texture_width);

@@ -12,7 +12,13 @@
 
 namespace tf {
 
-enum class SceneKind { plane, tunnel, zoom, minify, slanted, triangles, mesh };
+// The 2D scenes (a surface with uv) first, then the environment scenes (a direction a pixel, a cube or
+// lat-long map: docs/ENVIRONMENT.md): skybox (the camera at the origin looking across the +X/+Y/+Z faces'
+// edges into their corner) and reflect (a mirror sphere, SceneParams::p0 = centre xyz and radius w).
+enum class SceneKind { plane, tunnel, zoom, minify, slanted, triangles, mesh, skybox, reflect };
+// skybox and reflect: their lookups are EnvLookups (reference/env_cast.h, shaders/harness/env_scene.glsl),
+// not uv; code that renders a 2D texture on every scene of all_scenes() skips them.
+bool is_environment_scene(SceneKind kind);
 
 // How uv gradients are made: fine or coarse 2x2 quad differences, or ray differentials (ray-cast scenes).
 enum class Gradients { fine = HARNESS_GRADIENTS_FINE, coarse = HARNESS_GRADIENTS_COARSE, ray = HARNESS_GRADIENTS_RAY };
@@ -63,7 +69,8 @@ struct SceneParams {
     glm::vec4 forward;
     glm::vec4 right;      // scaled by tan(fov_x / 2)
     glm::vec4 up;         // scaled by tan(fov_y / 2)
-    glm::vec4 p0;         // plane point, or cylinder (radius, length, u repeats, v per world unit)
+    glm::vec4 p0;         // plane point, or cylinder (radius, length, u repeats, v per world unit), or the
+                          // reflect scene's mirror sphere (centre xyz, radius w)
     glm::vec4 axis_u;
     glm::vec4 axis_v;
     glm::vec4 extent;     // xy half extents in uv (hit test), zw uv offset
@@ -74,7 +81,9 @@ struct SceneParams {
 };
 
 // zoom and minify scale the quad so that one texel of a texture_width-wide texture spans 8 pixels
-// (zoom) or 1/8 pixel (minify) at the image centre.
+// (zoom) or 1/8 pixel (minify) at the image centre. skybox: a 90-degree horizontal field of view, forward
+// towards (1, 0.75, 0.9); reflect: a sphere of radius 1 three units ahead, 60 degrees vertical field of view,
+// so that it fills about two thirds of the image's height with sky around it (texture_width unused by both).
 SceneParams make_scene(SceneKind kind, int width, int height, int texture_width);
 // The minify scene at another scale: texels_per_pixel level-0 texels across each pixel (the benchmark's
 // footprint-size sweep).
@@ -83,7 +92,10 @@ SceneParams make_minified_scene(int width, int height, int texture_width, double
 // The benchmark's camera path: frame f of a glide across the surface, which slides the scene's uv by
 // f * camera_step_texels level-0 texels (planes: the camera moves parallel to the plane; tunnel: along
 // and around the axis; triangles and mesh: the texture slides across them). Sub-texel steps in both
-// axes, so a filter that snaps to texels or levels shows it as flicker.
+// axes, so a filter that snaps to texels or levels shows it as flicker. skybox and reflect: the view turns
+// (skybox: about the camera; reflect: the camera orbits the sphere's centre, which stays in view) by those
+// fractions of a texel's mean angle (pi/2 / texture_width: texture_width is the cube face's side), about
+// the world's y axis, then its x axis.
 constexpr glm::dvec2 camera_step_texels{0.37, 0.23};
 SceneParams scene_at_frame(const SceneParams& scene, int frame, int texture_width);
 

@@ -44,6 +44,8 @@
 #define HARNESS_SCENE_PLANE 0
 #define HARNESS_SCENE_CYLINDER 1
 #define HARNESS_SCENE_TRIANGLES 2 // ray-cast triangle list (triangles, and the mesh scene's CPU twin)
+#define HARNESS_SCENE_SKYBOX 3    // environment: the camera ray is the lookup direction (env_scene.glsl)
+#define HARNESS_SCENE_REFLECT 4   // environment: a mirror sphere (p0: centre, radius), reflected directions
 #define HARNESS_MAX_TRIANGLES 16
 #define HARNESS_EDGE_SLACK 1e-5 // triangles: barycentric slack at edges (watertight ray casts; see scene.glsl)
 
