@@ -748,11 +748,39 @@ gpu_builds() {
         "$TEXFILTER" build --texture checker --texture-size 64 --build cpu --sat --out build-cpu
 }
 
+environment_maps() {
+    local env=("$TEXFILTER" render --scene skybox --size 16x16)
+    expect_error "render --env sphere" "unknown environment map 'sphere' (cube, latlong)" out.png -- \
+        "${env[@]}" --texture checker --filter trilinear --env sphere -o out.png
+    expect_error "render --scene skybox --filter sat" "--filter sat has no environment-map form" out.png -- \
+        "${env[@]}" --texture checker --filter sat -o out.png
+    expect_error "render --scene reflect --stage compute" "fragment stage only" out.png -- \
+        "$TEXFILTER" render --scene reflect --size 16x16 --texture checker --filter ewa --stage compute -o out.png
+    expect_error "render --scene skybox --view lod" "--view lod is not available on the environment scenes" out.png -- \
+        "${env[@]}" --texture checker --filter trilinear --view lod -o out.png
+    expect_error "render --scene skybox --format rgba8-srgb" "environment maps are uploaded as rgba32f only" out.png -- \
+        "${env[@]}" --texture checker --filter trilinear --format rgba8-srgb --backend reference -o out.png
+    expect_error "render --scene skybox --texture dynamic" "has no environment form" out.png -- \
+        "${env[@]}" --texture dynamic --filter trilinear --backend reference -o out.png
+    write_constant_png square.png 24 24
+    expect_error "render --env cube --texture a square image" "square.png" out.png -- \
+        "${env[@]}" --texture square.png --filter trilinear --backend reference -o out.png
+    expect_error "render --scene skybox --texture-size 16384 (six faces over the budget)" "over the memory budget" out.png -- \
+        "${env[@]}" --texture checker --texture-size 16384 --memory-budget 1G --filter trilinear --backend reference -o out.png
+    expect_error "view --scene skybox" "the viewer shows the 2D scenes" - -- \
+        "$TEXFILTER" view --scene skybox --texture checker --filter trilinear
+    write_constant_png cross.png 32 24
+    expect_success "render --env cube --texture a 4:3 cross" ok_cross.png -- \
+        "${env[@]}" --texture cross.png --filter trilinear --backend reference -o ok_cross.png
+    expect_success "render --env latlong --scene reflect" ok_latlong.png -- \
+        "$TEXFILTER" render --scene reflect --size 16x16 --texture checker --texture-size 16 --env latlong --filter trilinear -o ok_latlong.png
+}
+
 # The groups, in order; ctest runs each as its own entry (bad_inputs.GROUP), listed by --list.
 CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_resources diff_contract ground_truth_and_bench_errors
     golden_errors vulkan_errors golden_output_directory outputs_and_inputs unwritable_outputs
     signals_remove_temporaries truncated_images memory_budgets lookups_and_texels reproducible_outputs
-    bad_formats gpu_builds)
+    bad_formats gpu_builds environment_maps)
 if [[ ${#SELECTED[@]} -eq 0 ]]; then
     SELECTED=("${CASE_GROUPS[@]}")
 fi

@@ -1,4 +1,5 @@
 #include "bench/bench.h"
+#include "bench/env_bench.h"
 #include "texture/error.h"
 #include "vulkan/render.h"
 #include "io/pfm.h"
@@ -137,6 +138,10 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
     const int texture_width = run.texture_width;
     with_texture(context, chain, true, config.texture.format, config.texture.build, [&](const GpuTexture& texture) {
         for (SceneKind kind : config.scenes) {
+            if (is_environment_scene(kind)) { // directions, not uv: their own map and renderers
+                bench_environment_scene(context, config, kind, directory, run);
+                continue;
+            }
             SceneParams scene = make_scene(kind, config.width, config.height, texture_width);
             RenderOptions render = render_options_for(kind, config.stage);
             fs::create_directories(fs::path(directory) / "images" / to_string(kind));

@@ -2,6 +2,7 @@
 #include "bench/gpu_build_bench.h"
 #include "bench/mip_build_bench.h"
 #include "flags/cli_common.h"
+#include "core/environment.h"
 #include "cli/commands.h"
 #include "vulkan/device_memory_check.h"
 #include "texture/error.h"
@@ -74,6 +75,7 @@ int run_bench(const std::vector<std::string>& argv)
           {"--format", "F", "what the texture is uploaded as: " + texture_format_names() +
                                 " (default rgba32f; integer formats need --filters without hardware filtering)"},
           {"--build", "B", "cpu (default: the host builds the MIP chain and SAT) or gpu (the device builds them from level 0)"},
+          {"--env", "E", "skybox, reflect: the environment map made of --texture, cube (default) or latlong"},
           {"--spp", "N", "ground truth samples a pixel, a square number (default 256)"},
           {"--truth-backend", "B", "vulkan (default: the device) or reference (the CPU, in double)"},
           {"--warmup", "N", "untimed frames before timing (default 5)"},
@@ -129,6 +131,7 @@ int run_bench(const std::vector<std::string>& argv)
         config.texture.memory_budget = parse_flag(args, "--memory-budget", "", parse_byte_size);
     config.texture.format = parse_flag(args, "--format", "rgba32f", parse_texture_format);
     config.texture.build = parse_flag(args, "--build", "cpu", parse_texture_build);
+    config.texture.env = parse_flag(args, "--env", "cube", parse_env_map);
     if (config.texture.build == TextureBuild::gpu)
         check_gpu_build(config.texture.format, config.texture.name_or_path);
     config.truth_side = parse_flag(args, "--spp", config.quick ? "64" : "256", parse_spp_side);

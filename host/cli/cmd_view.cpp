@@ -58,7 +58,7 @@ int run_view(const std::vector<std::string>& argv)
     if (args.has("--state"))
         s = read_state_file(args.get("--state", ""));
     if (args.has("--scene") || !args.has("--state"))
-        s.scene = parse_flag(args, "--scene", "plane", parse_scene);
+        s.scene = parse_flag(args, "--scene", "plane", parse_viewer_scene);
     if (args.has("--texture") || !args.has("--state")) {
         std::vector<std::string> texture_argv = {"--texture", args.get("--texture", "checker")};
         s.texture = texture_source_from(args.has("--texture") ? args : parse_args("view", texture_argv, texture_flags(), 0));

@@ -137,6 +137,8 @@ RenderOptions make_render_options(SceneKind kind, Stage stage, Gradients gradien
                     "(the same triangles, ray-cast)");
     if (mesh && gradients == Gradients::ray)
         throw Error("ray differentials need a ray-cast scene; the mesh scene is rasterized (use fine or coarse)");
+    if (is_environment_scene(kind) && stage == Stage::compute)
+        throw Error("the environment scenes (skybox, reflect) render in the fragment stage only: use --stage fragment");
     return {stage, gradients, mesh};
 }
 

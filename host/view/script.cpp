@@ -83,7 +83,7 @@ std::vector<FlagSpec> script_sampler_flags()
 SceneKind scene(const ScriptAction& a)
 {
     expect_words(a, 1, "scene S");
-    return parse_scene(a.words[0]);
+    return parse_viewer_scene(a.words[0]);
 }
 
 std::string view_name(const ScriptAction& a)

@@ -14,6 +14,15 @@
 
 namespace tf {
 
+SceneKind parse_viewer_scene(const std::string& name)
+{
+    const SceneKind kind = parse_scene(name);
+    if (is_environment_scene(kind))
+        throw Error("scene " + name + ": the viewer shows the 2D scenes; render the environment scenes with texfilter "
+                    "render --scene " + name);
+    return kind;
+}
+
 namespace {
 
 using nlohmann::json;
@@ -350,7 +359,7 @@ ViewState state_from_json(const std::string& text, const std::string& name)
     r.only(j, "", {"scene", "texture", "render", "width", "height", "a", "b", "divider", "camera", "frame", "view"});
 
     ViewState s;
-    s.scene = r.parsed("scene", [&] { return parse_scene(r.string(r.member(j, "scene", "scene"), "scene")); });
+    s.scene = r.parsed("scene", [&] { return parse_viewer_scene(r.string(r.member(j, "scene", "scene"), "scene")); });
 
     const json& texture = r.member(j, "texture", "texture");
     r.only(texture, "texture", {"name", "size", "linear", "memory-budget", "build", "frame"});

@@ -60,6 +60,10 @@ std::string shell_quote(const std::string& word);
 
 // The debug views by name (color, lod, anisotropy, fetches, error); check_debug_view returns `name` or
 // throws tf::Error listing them.
+// parse_scene for the viewer: the 2D scenes only (the environment scenes, skybox and reflect, render with
+// `texfilter render`); throws tf::Error naming the scene.
+SceneKind parse_viewer_scene(const std::string& name);
+
 const std::vector<std::string>& debug_view_names();
 std::string check_debug_view(const std::string& name);
 
