@@ -154,6 +154,10 @@ int run_bench(const std::vector<std::string>& argv)
             throw Error(std::string("bad value for --scenes: ") + e.what());
         }
     }
+    for (SceneKind kind : config.scenes) // before any work: the environment maps' own limits
+        if (is_environment_scene(kind) && (config.texture.format != TextureFormat::rgba32f || config.texture.build != TextureBuild::cpu))
+            throw Error("--scenes " + to_string(kind) + ": environment maps are uploaded as rgba32f and built on the host "
+                        "(drop --format and --build, or bench them in another run)");
     config.filters = select_filters(args.get("--filters", ""));
     for (const BenchFilter& f : config.filters) // integer data and hardware filtering, before any work
         check_format_filter(config.texture.format, f.options);

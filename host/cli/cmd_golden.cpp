@@ -69,7 +69,8 @@ void update_goldens(const GoldenRun& run)
 }
 
 // An environment case (skybox, reflect) on the device: its map uploaded, rendered, destroyed.
-Image render_environment_case(const VulkanContext& context, const GoldenCase& c, const DeviceLimits& limits)
+Image render_environment_case(const VulkanContext& context, const GoldenCase& c, const DeviceLimits& limits,
+                              EnvironmentPipelineCache& pipelines)
 {
     const EnvironmentMap env = load_environment(c.texture, {false, &limits});
     SceneParams scene = make_scene(c.scene, c.width, c.height, environment_size(env));
@@ -77,7 +78,7 @@ Image render_environment_case(const VulkanContext& context, const GoldenCase& c,
                                                  : upload_latlong_environment(context, env.latlong);
     Cleanup cleanup;
     cleanup.add([&] { destroy_environment(context, gpu); });
-    return gpu_render_environment(context, gpu, scene, c.sampler, c.render);
+    return gpu_render_environment(context, gpu, scene, c.sampler, c.render, &pipelines);
 }
 
 // "cpu", "gpu" or "cpu,gpu".
@@ -100,6 +101,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
     // The cases share ~30 pipelines: each compiled once (most of a case's time on lavapipe). Declared after
     // the session, so destroyed before it; every render has completed by then (gpu_render waits).
     auto pipelines = std::make_unique<RenderPipelineCache>();
+    auto environment_pipelines = std::make_unique<EnvironmentPipelineCache>();
     // --build cpu,gpu renders every case once a build in this one process: the second build's pipelines are
     // the first's. Its lines and images are named gpu-build/NAME.
     for (TextureBuild build : run.builds)
@@ -120,7 +122,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
         }
         Image actual;
         if (is_environment_scene(c.scene)) {
-            actual = render_environment_case(gpu.context, c, limits);
+            actual = render_environment_case(gpu.context, c, limits, *environment_pipelines);
         } else {
             check_format_support(gpu.context, c.texture.format, c.sampler);
             TextureUse use{needs_sat(c.sampler.filter), &limits};
@@ -161,6 +163,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
     }
     std::string device_name = gpu.context.info.name;
     pipelines.reset(); // before the device goes
+    environment_pipelines.reset();
     gpu.finish();
     record_file(out, "report.html");
     std::string report_path = run.out_dir + "/report.html";

@@ -79,7 +79,7 @@ void destroy_environment(const VulkanContext& context, GpuEnvironment& environme
 
 std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& context, const GpuEnvironment& environment,
                                                          const SceneParams& scene, const SamplerOptions& options,
-                                                         const RenderOptions& render)
+                                                         const RenderOptions& render, EnvironmentPipelineCache* cache)
 {
     check_environment_filter(options.filter);
     if (render.view != DebugView::color)
@@ -125,6 +125,12 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
         {HARNESS_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, r.uniforms.buffer, sizeof(SceneParams)}};
     r.pass = create_pass_with_images(context, images, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                                      VK_SHADER_STAGE_FRAGMENT_BIT, buffers, cleanup);
+    if (cache)
+        for (const EnvironmentPipelineCache::Entry& e : cache->entries)
+            if (e.map == environment.map && e.filter == options.filter && e.width == r.width && e.height == r.height) {
+                r.pipeline = e.pipeline;
+                return renderer;
+            }
     GraphicsPipelineDesc desc;
     desc.color_format = render_color_format;
     desc.width = r.width;
@@ -132,14 +138,17 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
     desc.vertex = harness_shader(HarnessShader::render_vert, TextureFormat::rgba32f);
     const SpirvWords fragment = environment.map == EnvMap::cube ? env_spirv_cube() : env_spirv_latlong();
     desc.fragment = {fragment.words, fragment.bytes};
-    r.pipeline = create_graphics_pipeline(context, desc, r.pass.pipeline_layout, options.filter, cleanup);
+    r.pipeline = create_graphics_pipeline(context, desc, r.pass.pipeline_layout, options.filter,
+                                          cache ? cache->cleanup : cleanup);
+    if (cache)
+        cache->entries.push_back({environment.map, options.filter, r.width, r.height, r.pipeline});
     return renderer;
 }
 
 Image gpu_render_environment(const VulkanContext& context, const GpuEnvironment& environment, const SceneParams& scene,
-                             const SamplerOptions& options, const RenderOptions& render)
+                             const SamplerOptions& options, const RenderOptions& render, EnvironmentPipelineCache* cache)
 {
-    std::unique_ptr<GpuRenderer> renderer = create_environment_renderer(context, environment, scene, options, render);
+    std::unique_ptr<GpuRenderer> renderer = create_environment_renderer(context, environment, scene, options, render, cache);
     return render_frame(*renderer, scene);
 }
 
