@@ -88,7 +88,8 @@ AnisoProbes reference_aniso_probes(const MipChain& chain, const SamplerOptions& 
                                                      : gpu_probes(chain, options, lookup, max_n);
 }
 
-glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
+glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                           const TexelSource& texels) {
     const AnisoProbes p = reference_aniso_probes(chain, options, lookup);
     glm::dvec4 sum(0.0);
     double weights = 0;
@@ -96,7 +97,7 @@ glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options,
         const double t = (k + 0.5) / p.count - 0.5;
         const double weight = p.gaussian ? std::exp(-2 * (2 * t) * (2 * t)) : 1.0;
         sum += weight * reference_trilinear_at(chain, p.lod, lookup.u + t * p.axis.x, lookup.v + t * p.axis.y,
-                                               options.wrap);
+                                               options.wrap, texels);
         weights += weight;
     }
     return sum / weights;

@@ -166,8 +166,10 @@ void box_range(long long base, double f, double h, long long& first, long long& 
 long long floor_div2(long long i) { return i >= 0 ? i / 2 : -((1 - i) / 2); }
 
 glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, const Lookup& l, double alpha,
-                     Wrap wrap, bool hardware) {
+                     Wrap wrap, bool hardware, const TexelSource& texels) {
     const Image& img = chain.levels[size_t(level)];
+    // ewa.glsl reads a 1x1 level once; the 2D wrap makes every texel that one, an environment rule would not.
+    if (texels.read && img.width == 1 && img.height == 1) return texels.read(texels.map, level, 0, 0);
     const LevelEllipse e = level_ellipse(chain, level, fp, l, wrap);
     long long i0, i1, j0, j1;
     box_range(e.bx, e.fx, std::sqrt(kSupport * e.m.xx), i0, i1); // the support's bounding box
@@ -180,7 +182,9 @@ glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, cons
                     double dx, dy;
                     offset(e, double(i), double(j), dx, dy);
                     fit.add(w, dx, dy,
-                            glm::dvec4(img.at(wrap_texel(i, img.width, wrap), wrap_texel(j, img.height, wrap))));
+                            texels.read ? texels.read(texels.map, level, i, j)
+                                        : glm::dvec4(img.at(wrap_texel(i, img.width, wrap),
+                                                            wrap_texel(j, img.height, wrap))));
                 }
     } else {
         struct Tap {
@@ -205,7 +209,8 @@ glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, cons
         const double sx = x_sum / w_sum - (double(e.bx) + e.fx), sy = y_sum / w_sum - (double(e.by) + e.fy);
         glm::dvec4 sum(0.0);
         for (const Tap& t : taps)
-            sum += t.w * reference_bilinear(img, (t.x - sx) / img.width, (t.y - sy) / img.height, wrap);
+            sum += t.w * reference_bilinear(chain, level, (t.x - sx) / img.width, (t.y - sy) / img.height, wrap,
+                                            texels);
         return sum / w_sum;
     }
     if (!(fit.w > 0.0)) throw Error("ewa: no texel weighs anything (cannot happen: the nearest has r² <= 1/2)");
@@ -214,7 +219,8 @@ glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, cons
 
 } // namespace
 
-glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
+glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                         const TexelSource& texels) {
     if (chain.levels.empty()) throw Error("reference_ewa: empty MIP chain");
     const double alpha = options.alpha >= 0.0f ? std::min(double(options.alpha), kMaxAlpha) : 0.0;
     const bool hardware = options.taps == Taps::hardware;
@@ -222,7 +228,9 @@ glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, c
     const double lambda = clamp_lod(chain, fp.lambda, options);
     const int lo = int(std::floor(lambda));
     return blend_levels(lo, lambda - lo,
-                        [&](int level) { return ewa_level(chain, level, fp, lookup, alpha, options.wrap, hardware); });
+                        [&](int level) {
+                            return ewa_level(chain, level, fp, lookup, alpha, options.wrap, hardware, texels);
+                        });
 }
 
 } // namespace tf

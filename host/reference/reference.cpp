@@ -21,9 +21,32 @@ glm::dvec4 fetch(const Image& level, long long i, long long j, Wrap wrap) {
     return glm::dvec4(level.at(wrap_texel(i, level.width, wrap), wrap_texel(j, level.height, wrap)));
 }
 
-const Image& level_at(const MipChain& chain, int l) {
-    const int last = int(chain.levels.size()) - 1;
-    return chain.levels[size_t(std::clamp(l, 0, last))];
+int clamp_level(const MipChain& chain, int l) { return std::clamp(l, 0, int(chain.levels.size()) - 1); }
+
+// Texel (i, j) of level `l` (`image`): through the texel source when there is one, else wrapped.
+glm::dvec4 read_texel(const Image& image, int l, long long i, long long j, Wrap wrap, const TexelSource& texels) {
+    return texels.read ? texels.read(texels.map, l, i, j) : fetch(image, i, j, wrap);
+}
+
+glm::dvec4 nearest_on(const Image& level, int l, double u, double v, Wrap wrap, const TexelSource& texels) {
+    if (!finite_uv({u, v})) return glm::dvec4(0.0);
+    u = reduce_uv(u, wrap), v = reduce_uv(v, wrap);
+    const auto i = (long long)std::floor(clamp_texel(u * level.width));
+    const auto j = (long long)std::floor(clamp_texel(v * level.height));
+    return read_texel(level, l, i, j, wrap, texels);
+}
+
+glm::dvec4 bilinear_on(const Image& level, int l, double u, double v, Wrap wrap, const TexelSource& texels) {
+    if (!finite_uv({u, v})) return glm::dvec4(0.0);
+    u = reduce_uv(u, wrap), v = reduce_uv(v, wrap);
+    const double x = clamp_texel(u * level.width - 0.5), y = clamp_texel(v * level.height - 0.5);
+    const double fx = std::floor(x), fy = std::floor(y);
+    const double a = x - fx, b = y - fy;
+    const auto i0 = (long long)fx, j0 = (long long)fy;
+    return (1 - a) * (1 - b) * read_texel(level, l, i0, j0, wrap, texels) +
+           a * (1 - b) * read_texel(level, l, i0 + 1, j0, wrap, texels) +
+           (1 - a) * b * read_texel(level, l, i0, j0 + 1, wrap, texels) +
+           a * b * read_texel(level, l, i0 + 1, j0 + 1, wrap, texels);
 }
 
 } // namespace
@@ -86,29 +109,73 @@ double reference_lod(const MipChain& chain, const Lookup& lookup, const SamplerO
 }
 
 glm::dvec4 reference_nearest(const Image& level, double u, double v, Wrap wrap) {
-    if (!finite_uv({u, v})) return glm::dvec4(0.0);
-    u = reduce_uv(u, wrap), v = reduce_uv(v, wrap);
-    const auto i = (long long)std::floor(clamp_texel(u * level.width));
-    const auto j = (long long)std::floor(clamp_texel(v * level.height));
-    return fetch(level, i, j, wrap);
+    return nearest_on(level, 0, u, v, wrap, TexelSource{});
 }
 
 glm::dvec4 reference_bilinear(const Image& level, double u, double v, Wrap wrap) {
-    if (!finite_uv({u, v})) return glm::dvec4(0.0);
-    u = reduce_uv(u, wrap), v = reduce_uv(v, wrap);
-    const double x = clamp_texel(u * level.width - 0.5), y = clamp_texel(v * level.height - 0.5);
-    const double fx = std::floor(x), fy = std::floor(y);
-    const double a = x - fx, b = y - fy;
-    const auto i0 = (long long)fx, j0 = (long long)fy;
-    return (1 - a) * (1 - b) * fetch(level, i0, j0, wrap) + a * (1 - b) * fetch(level, i0 + 1, j0, wrap) +
-           (1 - a) * b * fetch(level, i0, j0 + 1, wrap) + a * b * fetch(level, i0 + 1, j0 + 1, wrap);
+    return bilinear_on(level, 0, u, v, wrap, TexelSource{});
 }
 
-glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap) {
+glm::dvec4 reference_nearest(const MipChain& chain, int level, double u, double v, Wrap wrap,
+                             const TexelSource& texels) {
+    const int l = clamp_level(chain, level);
+    return nearest_on(chain.levels[size_t(l)], l, u, v, wrap, texels);
+}
+
+glm::dvec4 reference_bilinear(const MipChain& chain, int level, double u, double v, Wrap wrap,
+                              const TexelSource& texels) {
+    const int l = clamp_level(chain, level);
+    return bilinear_on(chain.levels[size_t(l)], l, u, v, wrap, texels);
+}
+
+glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap,
+                                  const TexelSource& texels) {
     const double d = std::clamp(lod, 0.0, double(chain.levels.size() - 1));
     const int lo = int(std::floor(d));
     const double f = d - lo; // 0 on the last level: level lo + 1 is never read
-    return blend_levels(lo, f, [&](int level) { return reference_bilinear(level_at(chain, level), u, v, wrap); });
+    return blend_levels(lo, f, [&](int level) { return reference_bilinear(chain, level, u, v, wrap, texels); });
+}
+
+glm::dvec4 reference_sample_texels(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                                   const TexelSource& texels) {
+    if (chain.levels.empty()) throw Error("reference_sample: empty MIP chain");
+    if (!finite_uv(lookup)) return glm::dvec4(0.0);
+    Lookup reduced = lookup; // whole periods first (the probes of aniso are reduced again, per probe)
+    reduced.u = reduce_uv(lookup.u, options.wrap), reduced.v = reduce_uv(lookup.v, options.wrap);
+
+    switch (options.filter) {
+    case Filter::nearest:
+    case Filter::hw_nearest:
+        return reference_nearest(chain, 0, reduced.u, reduced.v, options.wrap, texels);
+    case Filter::bilinear:
+    case Filter::hw_bilinear:
+        return reference_bilinear(chain, 0, reduced.u, reduced.v, options.wrap, texels);
+    case Filter::nearest_mip:
+    case Filter::bilinear_mip: {
+        // Vulkan mipmapMode NEAREST: level = ceil(d + 1/2) - 1, so d = 0.5 still picks level 0.
+        const double d = clamp_lod(chain, reference_lod(chain, reduced, options), options);
+        const int level = int(std::ceil(d + 0.5)) - 1;
+        return options.filter == Filter::nearest_mip
+                   ? reference_nearest(chain, level, reduced.u, reduced.v, options.wrap, texels)
+                   : reference_bilinear(chain, level, reduced.u, reduced.v, options.wrap, texels);
+    }
+    case Filter::trilinear:
+    case Filter::hw_trilinear:
+        return reference_trilinear_at(chain, clamp_lod(chain, reference_lod(chain, reduced, options), options),
+                                      reduced.u, reduced.v, options.wrap, texels);
+    case Filter::aniso:
+        return reference_aniso(chain, options, reduced, texels);
+    case Filter::ewa:
+        return reference_ewa(chain, options, reduced, texels);
+    case Filter::brilinear:
+    case Filter::sat:
+    case Filter::sat_assembly:
+    case Filter::hw_aniso:
+    case Filter::ground_truth:
+    case Filter::none:
+        break;
+    }
+    throw Error("reference_sample: " + to_string(options.filter) + " does not read through a texel source");
 }
 
 glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
@@ -119,40 +186,28 @@ glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options
     if (options.filter == Filter::ground_truth)
         throw Error("ground-truth integrates over a pixel of a scene, not around one lookup: render it");
     if (!finite_uv(lookup)) return glm::dvec4(0.0);
-    Lookup reduced = lookup; // whole periods first (the probes of aniso are reduced again, per probe)
-    reduced.u = reduce_uv(lookup.u, options.wrap), reduced.v = reduce_uv(lookup.v, options.wrap);
-
-    const Image& base = chain.levels[0];
     switch (options.filter) {
-    case Filter::nearest:
-    case Filter::hw_nearest:
-        return reference_nearest(base, reduced.u, reduced.v, options.wrap);
-    case Filter::bilinear:
-    case Filter::hw_bilinear:
-        return reference_bilinear(base, reduced.u, reduced.v, options.wrap);
-    case Filter::nearest_mip:
-    case Filter::bilinear_mip: {
-        // Vulkan mipmapMode NEAREST: level = ceil(d + 1/2) - 1, so d = 0.5 still picks level 0.
-        const double d = clamp_lod(chain, reference_lod(chain, reduced, options), options);
-        const Image& level = level_at(chain, int(std::ceil(d + 0.5)) - 1);
-        return options.filter == Filter::nearest_mip ? reference_nearest(level, reduced.u, reduced.v, options.wrap)
-                                                     : reference_bilinear(level, reduced.u, reduced.v, options.wrap);
-    }
-    case Filter::trilinear:
-    case Filter::hw_trilinear:
-        return reference_trilinear_at(chain, clamp_lod(chain, reference_lod(chain, reduced, options), options),
-                                      reduced.u, reduced.v, options.wrap);
-    case Filter::brilinear:
+    case Filter::brilinear: {
+        Lookup reduced = lookup; // whole periods first, as every family
+        reduced.u = reduce_uv(lookup.u, options.wrap), reduced.v = reduce_uv(lookup.v, options.wrap);
         return reference_brilinear(chain, options, reduced);
-    case Filter::aniso:
-        return reference_aniso(chain, options, reduced);
-    case Filter::ewa:
-        return reference_ewa(chain, options, reduced);
+    }
     case Filter::sat:
     case Filter::sat_assembly:
         return reference_sat(chain, options, lookup, sat ? *sat : reference_sat_levels(chain.levels[0]));
     case Filter::none: // the baseline: the scene's uv as colour, no texture
         return glm::dvec4(lookup.u - std::floor(lookup.u), lookup.v - std::floor(lookup.v), 0.5, 1.0);
+    case Filter::nearest:
+    case Filter::hw_nearest:
+    case Filter::bilinear:
+    case Filter::hw_bilinear:
+    case Filter::nearest_mip:
+    case Filter::bilinear_mip:
+    case Filter::trilinear:
+    case Filter::hw_trilinear:
+    case Filter::aniso:
+    case Filter::ewa:
+        return reference_sample_texels(chain, options, lookup, TexelSource{});
     case Filter::hw_aniso:
     case Filter::ground_truth:
         break;

@@ -24,6 +24,16 @@ double reduce_uv(double u, Wrap wrap);
 // Integer texel coordinate wrapped into [0, size) (Vulkan repeat, clamp-to-edge, mirrored repeat).
 int wrap_texel(long long i, int size, Wrap wrap);
 
+// Where a family reads texel (i, j) of level `level` of its chain, i and j any integers (outside the level
+// too). The default (read null) is the 2D rule: the level's texel at wrap_texel of each coordinate by the
+// sampler's wrap mode. Environment maps pass their own seamless rule (reference/environment.h,
+// docs/ENVIRONMENT.md): the same families then run on a face or a lat-long texture. A plain function
+// pointer: the 2D default costs one predictable branch a texel, no indirect call.
+struct TexelSource {
+    glm::dvec4 (*read)(const void* map, int level, long long i, long long j) = nullptr;
+    const void* map = nullptr; // what `read` reads (a cube face, a lat-long chain)
+};
+
 // Unclamped LOD: log2(rho) + bias, rho = max(|J e_x|, |J e_y|) with J in level-0 texels.
 // Zero gradients give -inf; non-finite gradients give +inf (the coarsest level: safe, never a hang).
 double reference_lod(const MipChain& chain, const Lookup& lookup, const SamplerOptions& options);
@@ -31,6 +41,11 @@ double reference_lod(const MipChain& chain, const Lookup& lookup, const SamplerO
 // Nearest / bilinear on one level (u_l = u * w_l; linear uses i0 = floor(u_l - 0.5), alpha = frac).
 glm::dvec4 reference_nearest(const Image& level, double u, double v, Wrap wrap);
 glm::dvec4 reference_bilinear(const Image& level, double u, double v, Wrap wrap);
+// The same on level `level` (clamped to the chain's levels) of `chain`, its texels read through `texels`.
+glm::dvec4 reference_nearest(const MipChain& chain, int level, double u, double v, Wrap wrap,
+                             const TexelSource& texels);
+glm::dvec4 reference_bilinear(const MipChain& chain, int level, double u, double v, Wrap wrap,
+                              const TexelSource& texels);
 
 // The LOD clamps every family shares: lambda to [lod_min, lod_max], then to the levels [0, levels-1]. NaN
 // follows the shaders' rule (tfi_clamp_lod in shaders/texfilter/lod.glsl; docs/API.md, "Degenerate
@@ -49,12 +64,14 @@ glm::dvec4 blend_levels(int lo, double w, LevelValue level_value) {
 }
 
 // Trilinear at a given LOD (clamped to [0, levels-1]): the building block of probes and hardware taps.
-glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap);
+glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap,
+                                  const TexelSource& texels = {});
 
 // The filter families of reference/aniso.cpp, reference/ewa.cpp and reference/sat.cpp (see those files
 // and the matching shaders/texfilter/*.glsl headers for the math). uv is finite when these are called.
 glm::dvec4 reference_brilinear(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
-glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                           const TexelSource& texels = {});
 
 // aniso's probes (reference/aniso.cpp): probe k at uv + ((k + 1/2)/count - 1/2) * axis, all on `lod`
 // (biased and clamped), weighted equally or (feline) by exp(-2 (2 t_k)^2). The debug views and the
@@ -74,7 +91,10 @@ struct EwaFootprint {
     double lod = 0;
 };
 EwaFootprint reference_ewa_footprint(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
-glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+// With a texel source (environment maps) a 1x1 level is its one texel (0, 0), whatever the ellipse, as
+// ewa.glsl reads it; under the 2D wrap every texel of a 1x1 level is that texel anyway.
+glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                         const TexelSource& texels = {});
 
 // sat averages each channel quantised to 16 bits over the whole texture's range (reference/sat.cpp): that
 // range is found once a batch (reference_render, reference_sample_all), not once a lookup. Throws tf::Error
@@ -92,5 +112,11 @@ glm::dvec4 reference_sat(const MipChain& chain, const SamplerOptions& options, c
 // `sat`: the texture's SatLevels when the caller has them (null: found here, for this one lookup).
 glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
                             const SatLevels* sat = nullptr);
+// The families that read through any texel source: nearest, bilinear, nearest-mip, bilinear-mip,
+// trilinear, aniso, ewa, and hw-nearest/hw-bilinear/hw-trilinear as their manual formula. The lookup as
+// reference_sample takes it (non-finite uv: (0,0,0,0); uv reduced by options.wrap here). Any other filter
+// throws tf::Error. reference_sample runs these with the 2D default; environment maps with their rule.
+glm::dvec4 reference_sample_texels(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                                   const TexelSource& texels);
 
 } // namespace tf

@@ -1,0 +1,190 @@
+// Environment lookups in double, from docs/ENVIRONMENT.md (not from cube.glsl / latlong.glsl): the
+// direction becomes a 2D lookup (face + projected derivatives, or lat-long uv + the mapping's Jacobian),
+// and the 2D family runs on it with a TexelSource that reads the map's seamless rule.
+#include "reference/environment.h"
+
+#include "reference/reference.h"
+#include "texture/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+namespace tf {
+
+namespace {
+
+// The face table (Vulkan "Cube Map Face Selection") as linear forms of d: sc = dot(sc_of[f], d),
+// tc = dot(tc_of[f], d), |ma| = dot(ma_of[f], d) on the face the direction selects.
+const glm::dvec3 sc_of[cube_face_count] = {{0, 0, -1}, {0, 0, 1}, {1, 0, 0}, {1, 0, 0}, {1, 0, 0}, {-1, 0, 0}};
+const glm::dvec3 tc_of[cube_face_count] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+const glm::dvec3 ma_of[cube_face_count] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+
+bool usable_direction(const glm::dvec3& d) {
+    return std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z) && (d.x != 0 || d.y != 0 || d.z != 0);
+}
+
+const MipChain& face_chain(const CubeMap& cube, int face, const char* who) {
+    if (face < 0 || face >= cube_face_count)
+        throw Error(std::string(who) + ": cube face " + std::to_string(face) + " is not 0..5");
+    const MipChain& chain = cube.faces[size_t(face)];
+    if (chain.levels.empty()) throw Error(std::string(who) + ": cube face " + std::to_string(face) + " has no levels");
+    return chain;
+}
+
+const Image& level_of(const MipChain& chain, int level, const char* who) {
+    if (level < 0 || level >= int(chain.levels.size()))
+        throw Error(std::string(who) + ": level " + std::to_string(level) + " is not 0.." +
+                    std::to_string(int(chain.levels.size()) - 1));
+    return chain.levels[size_t(level)];
+}
+
+// The texel the direction through texel (i, j)'s centre on `face`'s (extended) plane hits.
+glm::dvec4 cube_texel_through_centre(const CubeMap& cube, int face, int level, long long i, long long j) {
+    const double n = cube.faces[size_t(face)].levels[size_t(level)].width;
+    const CubeFacePoint hit = cube_face_point(cube_face_direction(face, (double(i) + 0.5) / n, (double(j) + 0.5) / n));
+    const Image& image = level_of(face_chain(cube, hit.face, "cube_texel"), level, "cube_texel");
+    const int x = int(std::clamp(std::floor(hit.s * n), 0.0, n - 1));
+    const int y = int(std::clamp(std::floor(hit.t * n), 0.0, n - 1));
+    return glm::dvec4(image.at(x, y));
+}
+
+struct CubeFace {
+    const CubeMap* cube;
+    int face;
+};
+
+glm::dvec4 read_cube_face(const void* map, int level, long long i, long long j) {
+    const auto& f = *static_cast<const CubeFace*>(map);
+    return cube_texel(*f.cube, f.face, level, i, j);
+}
+
+glm::dvec4 read_latlong(const void* map, int level, long long i, long long j) {
+    return latlong_texel(*static_cast<const MipChain*>(map), level, i, j);
+}
+
+// The filters with an environment form; the others throw, naming the filter.
+void check_environment_filter(Filter filter) {
+    switch (filter) {
+    case Filter::brilinear:
+    case Filter::sat:
+    case Filter::sat_assembly:
+    case Filter::hw_aniso:
+    case Filter::ground_truth:
+        throw Error("filter " + to_string(filter) +
+                    " has no environment form (cube and lat-long maps take nearest, bilinear, nearest-mip, "
+                    "bilinear-mip, trilinear, aniso, ewa, hw-nearest, hw-bilinear, hw-trilinear)");
+    default:
+        return;
+    }
+}
+
+// The 2D lookup under the map's uv reduction, through its texel source.
+glm::dvec4 sample_2d(const MipChain& chain, const SamplerOptions& options, Wrap reduction, const Lookup& lookup,
+                     const TexelSource& texels) {
+    SamplerOptions two_d = options;
+    two_d.wrap = reduction; // the sampler's wrap mode is ignored; only the uv reduction uses this
+    if (options.filter == Filter::none) return reference_sample(chain, two_d, lookup);
+    return reference_sample_texels(chain, two_d, lookup, texels);
+}
+
+} // namespace
+
+glm::dvec4 cube_texel(const CubeMap& cube, int face, int level, long long i, long long j) {
+    const Image& image = level_of(face_chain(cube, face, "cube_texel"), level, "cube_texel");
+    const long long n = image.width;
+    const bool i_in = i >= 0 && i < n, j_in = j >= 0 && j < n;
+    if (i_in && j_in) return glm::dvec4(image.at(int(i), int(j)));
+    if (!i_in && !j_in && (i == -1 || i == n) && (j == -1 || j == n)) { // a bilinear corner: three faces meet
+        const long long ic = std::clamp(i, 0LL, n - 1), jc = std::clamp(j, 0LL, n - 1);
+        return (glm::dvec4(image.at(int(ic), int(jc))) + cube_texel_through_centre(cube, face, level, i, jc) +
+                cube_texel_through_centre(cube, face, level, ic, j)) /
+               3.0;
+    }
+    return cube_texel_through_centre(cube, face, level, i, j);
+}
+
+glm::dvec4 latlong_texel(const MipChain& chain, int level, long long i, long long j) {
+    const Image& image = level_of(chain, level, "latlong_texel");
+    const long long w = image.width, h = image.height;
+    long long row = ((j % (2 * h)) + 2 * h) % (2 * h); // rows repeat every 2H: over both poles and back
+    long long column = ((i % w) + w) % w;
+    if (row >= h) { // past a pole: the row mirrored, the column on the other side (exact for even widths)
+        row = 2 * h - 1 - row;
+        column = (column + w / 2) % w;
+    }
+    return glm::dvec4(image.at(int(column), int(row)));
+}
+
+Lookup cube_face_lookup(const EnvLookup& lookup, int& face) {
+    const CubeFacePoint p = cube_face_point(lookup.dir);
+    face = p.face;
+    const glm::dvec3 &a = sc_of[face], &b = tc_of[face], &c = ma_of[face];
+    const double sc = glm::dot(a, lookup.dir), tc = glm::dot(b, lookup.dir), m = glm::dot(c, lookup.dir);
+    Lookup l;
+    l.u = p.s, l.v = p.t;
+    // d(s) = (d(sc) m - sc d(m)) / (2 m^2), the same for t: the derivatives projected onto the face.
+    const auto project = [&](const glm::dvec3& dd, double& ds, double& dt) {
+        const double dm = glm::dot(c, dd);
+        ds = 0.5 * (glm::dot(a, dd) * m - sc * dm) / (m * m);
+        dt = 0.5 * (glm::dot(b, dd) * m - tc * dm) / (m * m);
+    };
+    project(lookup.ddx, l.dudx, l.dvdx);
+    project(lookup.ddy, l.dudy, l.dvdy);
+    return l;
+}
+
+Lookup latlong_lookup(const EnvLookup& lookup) {
+    const glm::dvec3& d = lookup.dir;
+    const double pi = std::numbers::pi;
+    const double rho2 = d.x * d.x + d.z * d.z, rho = std::sqrt(rho2);
+    const double r2 = rho2 + d.y * d.y, r = std::sqrt(r2);
+    Lookup l;
+    l.u = 0.5 + std::atan2(d.x, -d.z) / (2 * pi);
+    l.v = std::acos(std::clamp(d.y / r, -1.0, 1.0)) / pi;
+    const auto jacobian = [&](const glm::dvec3& dd, double& du, double& dv) {
+        du = (-d.z * dd.x + d.x * dd.z) / (2 * pi * rho2);
+        dv = -(dd.y - d.y * glm::dot(d, dd) / r2) / (pi * rho);
+    };
+    jacobian(lookup.ddx, l.dudx, l.dvdx);
+    jacobian(lookup.ddy, l.dudy, l.dvdy);
+    return l;
+}
+
+glm::dvec4 reference_cube_sample(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup) {
+    check_environment_filter(options.filter);
+    for (int f = 0; f < cube_face_count; ++f) face_chain(cube, f, "reference_cube_sample");
+    if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
+    int face = 0;
+    const Lookup l = cube_face_lookup(lookup, face);
+    const CubeFace map{&cube, face};
+    // Face uv is in [0, 1]: the clamp reduction is a no-op there and keeps far probes bounded.
+    return sample_2d(cube.faces[size_t(face)], options, Wrap::clamp, l, {read_cube_face, &map});
+}
+
+glm::dvec4 reference_latlong_sample(const MipChain& chain, const SamplerOptions& options, const EnvLookup& lookup) {
+    check_environment_filter(options.filter);
+    if (chain.levels.empty()) throw Error("reference_latlong_sample: empty MIP chain");
+    if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
+    return sample_2d(chain, options, Wrap::repeat, latlong_lookup(lookup), {read_latlong, &chain});
+}
+
+glm::dvec4 reference_cube_bilinear0(const CubeMap& cube, const glm::dvec3& dir) {
+    for (int f = 0; f < cube_face_count; ++f) face_chain(cube, f, "reference_cube_bilinear0");
+    if (!usable_direction(dir)) return glm::dvec4(0.0);
+    const CubeFacePoint p = cube_face_point(dir);
+    const CubeFace map{&cube, p.face};
+    return reference_bilinear(cube.faces[size_t(p.face)], 0, p.s, p.t, Wrap::clamp, {read_cube_face, &map});
+}
+
+glm::dvec4 reference_latlong_bilinear0(const MipChain& chain, const glm::dvec3& dir) {
+    if (chain.levels.empty()) throw Error("reference_latlong_bilinear0: empty MIP chain");
+    if (!usable_direction(dir)) return glm::dvec4(0.0);
+    const Lookup l = latlong_lookup({dir, glm::dvec3(0.0), glm::dvec3(0.0)});
+    return reference_bilinear(chain, 0, l.u, l.v, Wrap::repeat, {read_latlong, &chain});
+}
+
+} // namespace tf
