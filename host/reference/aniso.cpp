@@ -96,8 +96,16 @@ glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options,
     for (int k = 0; k < p.count; ++k) {
         const double t = (k + 0.5) / p.count - 0.5;
         const double weight = p.gaussian ? std::exp(-2 * (2 * t) * (2 * t)) : 1.0;
-        sum += weight * reference_trilinear_at(chain, p.lod, lookup.u + t * p.axis.x, lookup.v + t * p.axis.y,
-                                               options.wrap, texels);
+        const double u = lookup.u + t * p.axis.x, v = lookup.v + t * p.axis.y;
+        if (options.taps == Taps::hardware && texels.tap) { // the device's trilinear: two of its taps
+            const double d = std::clamp(p.lod, 0.0, double(chain.levels.size() - 1));
+            const int lo = int(std::floor(d));
+            sum += weight * blend_levels(lo, d - lo, [&](int level) {
+                       return reference_hardware_tap(chain, level, u, v, options.wrap, texels);
+                   });
+        } else {
+            sum += weight * reference_trilinear_at(chain, p.lod, u, v, options.wrap, texels);
+        }
         weights += weight;
     }
     return sum / weights;

@@ -66,8 +66,29 @@ glm::dvec4 read_latlong(const void* map, int level, long long i, long long j) {
     return latlong_texel(*static_cast<const MipChain*>(map), level, i, j);
 }
 
-// The filters with an environment form; the others throw, naming the filter.
-void check_environment_filter(Filter filter) {
+// A cube's hardware tap at face coordinates (u, v) of `level`: the device's seamless bilinear at the direction
+// through that point (docs/ENVIRONMENT.md, "Hardware taps"): re-projected onto the face it hits, filtered there.
+glm::dvec4 tap_cube_face(const void* map, int level, double u, double v) {
+    const auto& f = *static_cast<const CubeFace*>(map);
+    const CubeFacePoint p = cube_face_point(cube_face_direction(f.face, u, v));
+    const CubeFace hit{f.cube, p.face};
+    return reference_bilinear(f.cube->faces[size_t(p.face)], level, p.s, p.t, Wrap::clamp, {read_cube_face, &hit});
+}
+
+// A lat-long map's hardware tap: the device's sampler repeats in u and clamps in v (no pole crossing).
+glm::dvec4 read_latlong_sampler(const void* map, int level, long long i, long long j) {
+    const Image& image = static_cast<const MipChain*>(map)->levels.at(size_t(level));
+    const long long w = image.width, h = image.height;
+    return glm::dvec4(image.at(int(((i % w) + w) % w), int(std::clamp(j, 0LL, h - 1))));
+}
+
+glm::dvec4 tap_latlong(const void* map, int level, double u, double v) {
+    const MipChain& chain = *static_cast<const MipChain*>(map);
+    return reference_bilinear(chain, level, u, v, Wrap::repeat, {read_latlong_sampler, &chain});
+}
+
+// The filters a lookup has on an environment map; the others throw, naming the filter.
+void check_lookup_filter(Filter filter) {
     switch (filter) {
     case Filter::brilinear:
     case Filter::sat:
@@ -82,12 +103,14 @@ void check_environment_filter(Filter filter) {
     }
 }
 
+// `none` (the benchmark's baseline, no texture): the unit direction as a colour, as render_env.frag.glsl shows it.
+glm::dvec4 none_color(const glm::dvec3& dir) { return glm::dvec4(0.5 * glm::normalize(dir) + 0.5, 1.0); }
+
 // The 2D lookup under the map's uv reduction, through its texel source.
 glm::dvec4 sample_2d(const MipChain& chain, const SamplerOptions& options, Wrap reduction, const Lookup& lookup,
                      const TexelSource& texels) {
     SamplerOptions two_d = options;
     two_d.wrap = reduction; // the sampler's wrap mode is ignored; only the uv reduction uses this
-    if (options.filter == Filter::none) return reference_sample(chain, two_d, lookup);
     return reference_sample_texels(chain, two_d, lookup, texels);
 }
 
@@ -155,21 +178,23 @@ Lookup latlong_lookup(const EnvLookup& lookup) {
 }
 
 glm::dvec4 reference_cube_sample(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup) {
-    check_environment_filter(options.filter);
+    check_lookup_filter(options.filter);
     for (int f = 0; f < cube_face_count; ++f) face_chain(cube, f, "reference_cube_sample");
     if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
+    if (options.filter == Filter::none) return none_color(lookup.dir);
     int face = 0;
     const Lookup l = cube_face_lookup(lookup, face);
     const CubeFace map{&cube, face};
     // Face uv is in [0, 1]: the clamp reduction is a no-op there and keeps far probes bounded.
-    return sample_2d(cube.faces[size_t(face)], options, Wrap::clamp, l, {read_cube_face, &map});
+    return sample_2d(cube.faces[size_t(face)], options, Wrap::clamp, l, {read_cube_face, &map, tap_cube_face});
 }
 
 glm::dvec4 reference_latlong_sample(const MipChain& chain, const SamplerOptions& options, const EnvLookup& lookup) {
-    check_environment_filter(options.filter);
+    check_lookup_filter(options.filter);
     if (chain.levels.empty()) throw Error("reference_latlong_sample: empty MIP chain");
     if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
-    return sample_2d(chain, options, Wrap::repeat, latlong_lookup(lookup), {read_latlong, &chain});
+    if (options.filter == Filter::none) return none_color(lookup.dir);
+    return sample_2d(chain, options, Wrap::repeat, latlong_lookup(lookup), {read_latlong, &chain, tap_latlong});
 }
 
 glm::dvec4 reference_cube_bilinear0(const CubeMap& cube, const glm::dvec3& dir) {

@@ -15,7 +15,7 @@ namespace tf {
 // The full filter on a cube map / lat-long map for one lookup. Filters: nearest, bilinear (level 0),
 // nearest-mip, bilinear-mip, trilinear, aniso (gpu and feline; either taps: one reference), ewa (manual
 // taps, or the 2D hardware-tap form on the face/texture), hw-nearest/hw-bilinear/hw-trilinear as the
-// manual formula of the same mode; none: the 2D lookup's uv as colour (the baseline, as in 2D). brilinear,
+// manual formula of the same mode; none: the unit direction as colour, 0.5·d/|d| + 0.5 (the baseline). brilinear,
 // sat, sat-assembly, hw-aniso and ground-truth throw tf::Error (no environment form). A zero or non-finite
 // direction returns (0,0,0,0); non-finite derivatives are the 2D families' non-finite footprint.
 glm::dvec4 reference_cube_sample(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup);

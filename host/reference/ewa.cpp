@@ -209,8 +209,8 @@ glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, cons
         const double sx = x_sum / w_sum - (double(e.bx) + e.fx), sy = y_sum / w_sum - (double(e.by) + e.fy);
         glm::dvec4 sum(0.0);
         for (const Tap& t : taps)
-            sum += t.w * reference_bilinear(chain, level, (t.x - sx) / img.width, (t.y - sy) / img.height, wrap,
-                                            texels);
+            sum += t.w * reference_hardware_tap(chain, level, (t.x - sx) / img.width, (t.y - sy) / img.height, wrap,
+                                                texels);
         return sum / w_sum;
     }
     if (!(fit.w > 0.0)) throw Error("ewa: no texel weighs anything (cannot happen: the nearest has r² <= 1/2)");

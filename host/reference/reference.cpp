@@ -128,6 +128,11 @@ glm::dvec4 reference_bilinear(const MipChain& chain, int level, double u, double
     return bilinear_on(chain.levels[size_t(l)], l, u, v, wrap, texels);
 }
 
+glm::dvec4 reference_hardware_tap(const MipChain& chain, int level, double u, double v, Wrap wrap,
+                                  const TexelSource& texels) {
+    return texels.tap ? texels.tap(texels.map, level, u, v) : reference_bilinear(chain, level, u, v, wrap, texels);
+}
+
 glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap,
                                   const TexelSource& texels) {
     const double d = std::clamp(lod, 0.0, double(chain.levels.size() - 1));

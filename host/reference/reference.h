@@ -32,6 +32,10 @@ int wrap_texel(long long i, int size, Wrap wrap);
 struct TexelSource {
     glm::dvec4 (*read)(const void* map, int level, long long i, long long j) = nullptr;
     const void* map = nullptr; // what `read` reads (a cube face, a lat-long chain)
+    // A hardware tap (the _hw forms' textureLod, `--taps hardware`): the device's bilinear filter at uv of
+    // `level`. Null: bilinear through `read`, which is what a 2D sampler does; a cube's device instead
+    // re-projects a tap past a face edge onto the adjacent face and filters there (environment.cpp).
+    glm::dvec4 (*tap)(const void* map, int level, double u, double v) = nullptr;
 };
 
 // Unclamped LOD: log2(rho) + bias, rho = max(|J e_x|, |J e_y|) with J in level-0 texels.
@@ -62,6 +66,10 @@ glm::dvec4 blend_levels(int lo, double w, LevelValue level_value) {
     if (w == 1.0) return level_value(lo + 1);
     return (1.0 - w) * level_value(lo) + w * level_value(lo + 1);
 }
+
+// One hardware tap (texels.tap, else reference_bilinear through texels) on level `level`.
+glm::dvec4 reference_hardware_tap(const MipChain& chain, int level, double u, double v, Wrap wrap,
+                                  const TexelSource& texels);
 
 // Trilinear at a given LOD (clamped to [0, levels-1]): the building block of probes and hardware taps.
 glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap,

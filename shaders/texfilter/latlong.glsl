@@ -11,7 +11,7 @@
 //          tf_bilinear_mip_latlong (tex, dir, dDirdx, dDirdy, s), tf_aniso_latlong_hw / tf_ewa_latlong_hw
 //          (hardware taps: the sampler repeats in u and clamps in v, so these do not cross a pole).
 //          tf_LatLongLookup tf_latlong_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy): the uv and uv gradients.
-// Math:    +y up: u = ½ + atan(d.x, −d.z)/2π, v = acos(d.y/|d|)/π; the gradients are the mapping's Jacobian
+// Math:    +y up: u = ½ + atan(d.x, −d.z)/2π, v = acos(d.y/|d|)/π (computed as atan(ρ, d.y)/π); the gradients are the mapping's Jacobian
 //          times the direction derivatives (never a difference of uv, so no seam at u = 0/1); then the 2D
 //          family of the same name, its texels read with columns repeating and rows past a pole taken from
 //          the other side, half a turn round. s.wrap is ignored.
@@ -44,7 +44,9 @@ tf_LatLongLookup tf_latlong_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy)
         return l;
     l.valid = true;
     float rho2 = dir.x * dir.x + dir.z * dir.z, rho = sqrt(rho2);
-    l.uv = vec2(0.5 + atan(dir.x, -dir.z) / (2.0 * pi), acos(clamp(dir.y * inversesqrt(r2), -1.0, 1.0)) / pi);
+    // θ = atan(ρ, y), not acos(y/|d|): acos is ill-conditioned near the poles, and GPUs approximate it more
+    // loosely than atan (with acos, lavapipe missed the lat-long goldens by up to 0.0126 on 5 % of the pixels).
+    l.uv = vec2(0.5 + atan(dir.x, -dir.z) / (2.0 * pi), atan(rho, dir.y) / pi);
     // du = (−z dx + x dz) / (2π ρ²), dv = −(dy − y (d·dd)/r²) / (π ρ).
     l.dUVdx = vec2((dir.x * dDirdx.z - dir.z * dDirdx.x) / (2.0 * pi * rho2),
                    -(dDirdx.y - dir.y * dot(dir, dDirdx) / r2) / (pi * rho));
