@@ -68,6 +68,14 @@ KINDS = {
                    textures=[("sampler2D", "depth"), ("texture2D", "depth2")],
                    forms=[dict(T="depth", X=", cmp", manual=True, queries=False, hw=False),
                           dict(T="depth2", X=", cmp", manual=True, queries=False, hw=False)]),
+    # Cube maps (cube.glsl, issue 15): the combined and the separate-sampler form in one shader, every family's
+    # manual and _hw entry points; fragment only (compile_includes compiles cube.glsl in every stage).
+    "cube": dict(bit="TF_RESOURCE_CUBE", stages=("frag",),
+                 textures=[("samplerCube", "tex"), ("textureCube", "tex2"), ("sampler", "smp")],
+                 forms=[], cube=[dict(T="tex", X=""), dict(T="tex2, smp", X="")]),
+    "cube-array": dict(bit="TF_RESOURCE_CUBE_ARRAY", stages=("frag",),
+                       textures=[("samplerCubeArray", "tex"), ("textureCubeArray", "tex2"), ("sampler", "smp")],
+                       forms=[], cube=[dict(T="tex", X=", layer"), dict(T="tex2, smp", X=", layer")]),
     "shadow-hw": dict(bit="TF_RESOURCE_SHADOW",
                       textures=[("sampler2DShadow", "shadowTex"), ("texture2D", "depth"), ("samplerShadow", "smp")],
                       forms=[dict(T="shadowTex", X=", dref", manual=False, queries=False, hw=True),
@@ -75,7 +83,9 @@ KINDS = {
 }
 SAMPLER_TYPES = ("sampler", "samplerShadow")
 BITS = {"TF_RESOURCE_SAMPLER_2D": 1, "TF_RESOURCE_TEXTURE_2D": 2, "TF_RESOURCE_SAMPLER_2D_ARRAY": 4,
-        "TF_RESOURCE_TEXTURE_2D_ARRAY": 8, "TF_RESOURCE_INTEGER": 16, "TF_RESOURCE_SHADOW": 32}
+        "TF_RESOURCE_TEXTURE_2D_ARRAY": 8, "TF_RESOURCE_INTEGER": 16, "TF_RESOURCE_SHADOW": 32,
+        "TF_RESOURCE_CUBE": 64, "TF_RESOURCE_CUBE_ARRAY": 128, "TF_RESOURCE_LATLONG": 256}
+ALL_BITS = 511
 
 
 def calls(kind):
@@ -96,6 +106,14 @@ def calls(kind):
         if f["hw"]:
             out += [f"tf_aniso_hw({T}, uv{X}, dx, dy, s, 8, TF_ANISO_FELINE)",
                     f"tf_ewa_hw({T}, uv{X}, dx, dy, s, 2.0, 16.0)"]
+    for c in KINDS[kind].get("cube", []):
+        T, X = c["T"], c["X"]
+        d, dd = f"vec3(uv, 1.0 - uv.x){X}", "vec3(dx, 0.0), vec3(dy, 0.0)"
+        out += [f"tf_nearest_cube({T}, {d}, s)", f"tf_bilinear_cube({T}, {d}, s)",
+                f"tf_nearest_mip_cube({T}, {d}, {dd}, s)", f"tf_bilinear_mip_cube({T}, {d}, {dd}, s)",
+                f"tf_trilinear_cube({T}, {d}, {dd}, s)", f"tf_aniso_cube({T}, {d}, {dd}, s, 8, TF_ANISO_GPU)",
+                f"tf_aniso_cube_hw({T}, {d}, {dd}, s, 8, TF_ANISO_FELINE)", f"tf_ewa_cube({T}, {d}, {dd}, s, 2.0, 16.0)",
+                f"tf_ewa_cube_hw({T}, {d}, {dd}, s, 2.0, 16.0)"]
     sat = KINDS[kind].get("sat")
     if sat:
         out += [f"tf_sat({sat['T']}, uv{sat['X']}, dx, dy, s, vec4(0.0), vec4(1.0))",
@@ -212,7 +230,7 @@ ERROR_LINE = re.compile(r"^(ERROR: |.*: error: )(?!.*compilation (errors|termina
 def run_resources(tools, kind):
     ok = True
     bit = BITS[KINDS[kind]["bit"]]
-    others = 63 & ~bit
+    others = ALL_BITS & ~bit
     for compiler in COMPILERS:
         only = shader(kind, "frag", f"#define TF_RESOURCES {bit}")
         good, log, _ = tools.compile(compiler, only, "frag")
@@ -327,7 +345,7 @@ def run_nonuniform(tools, kind):
 
 
 def groups():
-    out = [f"compile.{k}.{s}.{c}" for k in KINDS for s in STAGES for c in COMPILERS]
+    out = [f"compile.{k}.{s}.{c}" for k in KINDS for s in KINDS[k].get("stages", STAGES) for c in COMPILERS]
     out += [f"resources.{k}" for k in KINDS]
     out += [f"nonuniform.{k}" for k in KINDS]
     return out

@@ -134,7 +134,10 @@ TEST_CASE("constant")
     for (EnvMap map : {EnvMap::cube, EnvMap::latlong}) {
         const EnvironmentMap env = constant_env(map, value);
         for (SceneKind kind : {SceneKind::reflect}) // the sky behind and the mirror: both kinds of pixel
-            for (Filter filter : filters)
+            for (Filter filter : filters) {
+                // Lat-long: the families with their own weights (the others are the 2D code on a sampler2D).
+                if (map == EnvMap::latlong && filter != Filter::trilinear && filter != Filter::ewa && filter != Filter::aniso)
+                    continue;
                 for (Taps taps : {Taps::manual, Taps::hardware}) {
                     if (taps == Taps::hardware && filter != Filter::aniso && filter != Filter::ewa)
                         continue;
@@ -149,6 +152,7 @@ TEST_CASE("constant")
                               to_string(map) + " " + to_string(kind) + " " + to_string(filter) + " taps " +
                                   std::to_string(int(taps)) + ": " + test::show(glm::dvec4(t)));
                 }
+            }
     }
 }
 

@@ -2,7 +2,8 @@
 # Quick start, part 1: set up, build, and render the demo scenes on lavapipe into demo/.
 # Each scene is rendered unfiltered (nearest, level 0: the aliasing the seed slides show), with the
 # manual trilinear include and the hardware trilinear sampler for comparison; then the filter suite
-# (brilinear, aniso, ewa, sat) on the plane and the rasterized mesh, and the plane's ground truth.
+# (brilinear, aniso, ewa, sat) on the plane and the rasterized mesh, and the plane's ground truth; then the
+# environment scenes (skybox, reflect) from cube and lat-long maps.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./tools/build.sh
@@ -31,4 +32,11 @@ render triangles checker trilinear
 render triangles checker trilinear --derivatives ray
 render mesh zoneplate aniso
 render mesh mipcolors trilinear
+# Environment maps (docs/ENVIRONMENT.md): the cube's corner from inside, and a mirror ball (cube and lat-long).
+render skybox cube-labels trilinear --texture-size 128
+render skybox checker ewa --texture-size 512
+for filter in trilinear aniso ewa hw-trilinear; do
+  render reflect checker "$filter" --texture-size 512
+done
+render reflect checker ewa --texture-size 256 --env latlong
 echo "demo images are in $(pwd)/demo/"

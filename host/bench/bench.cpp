@@ -100,6 +100,16 @@ void print_result(const BenchResult& r)
 
 } // namespace
 
+void set_vs_hw_trilinear(BenchRun& run, size_t first)
+{
+    double hw_trilinear = NAN; // NaN if it was left out
+    for (size_t i = first; i < run.results.size(); ++i)
+        if (run.results[i].filter.label == "hw-trilinear")
+            hw_trilinear = run.results[i].time.median;
+    for (size_t i = first; i < run.results.size(); ++i)
+        run.results[i].vs_hw_trilinear = run.results[i].time.median / hw_trilinear;
+}
+
 std::vector<BenchFilter> bench_filters()
 {
     std::vector<BenchFilter> filters = {
@@ -183,13 +193,7 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
                 run.results.push_back(r);
                 print_result(r);
             }
-            // Relative to hw-trilinear on the same scene, once it has been measured (NaN if it was left out).
-            double hw_trilinear = NAN;
-            for (size_t i = first; i < run.results.size(); ++i)
-                if (run.results[i].filter.label == "hw-trilinear")
-                    hw_trilinear = run.results[i].time.median;
-            for (size_t i = first; i < run.results.size(); ++i)
-                run.results[i].vs_hw_trilinear = run.results[i].time.median / hw_trilinear;
+            set_vs_hw_trilinear(run, first);
         }
         // sat's cost against footprint size: the same four corners per box whatever the footprint.
         for (const BenchFilter& filter : config.filters) {

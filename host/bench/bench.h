@@ -82,6 +82,9 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
 // not-applicable on a CPU device, with the measured figure still given).
 std::vector<BenchGoal> judge_goals(const BenchRun& run);
 
+// One scene's results (run.results[first..]): each time relative to that scene's hw-trilinear.
+void set_vs_hw_trilinear(BenchRun& run, size_t first);
+
 std::string bench_json(const BenchRun& run);
 std::string bench_csv(const BenchRun& run);
 

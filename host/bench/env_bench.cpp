@@ -96,12 +96,7 @@ void bench_environment_scene(const VulkanContext& context, const BenchConfig& co
                     psnr_from_rmse(r.rmse_box), psnr_from_rmse(r.rmse_gaussian), r.flicker_gaussian);
         std::fflush(stdout);
     }
-    double hw_trilinear = NAN;
-    for (size_t i = first; i < run.results.size(); ++i)
-        if (run.results[i].filter.label == "hw-trilinear")
-            hw_trilinear = run.results[i].time.median;
-    for (size_t i = first; i < run.results.size(); ++i)
-        run.results[i].vs_hw_trilinear = run.results[i].time.median / hw_trilinear;
+    set_vs_hw_trilinear(run, first);
 }
 
 } // namespace tf
