@@ -255,12 +255,21 @@ TEST_CASE("manual-vs-hardware-trilinear")
         const std::vector<EnvLookup> lookups = reference_env_lookups(scene, Gradients::fine);
         test::limit_failure_lines(8);
         double worst = 0;
-        for (size_t i = 0; i < manual.texels.size(); ++i) {
-            // The two levels' values at the reference LOD's level pair: what a blend weight moves.
-            SamplerOptions level = with_filter(Filter::bilinear_mip);
+        int near_edge = 0, near_corner = 0; // pixels within one level-0 texel of a face edge / of a corner
+        for (const EnvLookup& lookup : lookups) {
             int face = 0;
-            const Lookup l = cube_face_lookup(lookups[i], face);
-            (void)l;
+            const Lookup l = cube_face_lookup(lookup, face);
+            const double dx = std::min(l.u, 1.0 - l.u) * n, dy = std::min(l.v, 1.0 - l.v) * n;
+            near_edge += std::min(dx, dy) < 1.0;
+            near_corner += std::max(dx, dy) < 1.0;
+        }
+        CHECK(near_edge > 0 && (kind != SceneKind::skybox || near_corner > 0),
+              to_string(kind) + ": " + std::to_string(near_edge) + " pixels within a texel of an edge, " +
+                  std::to_string(near_corner) + " of a corner");
+        for (size_t i = 0; i < manual.texels.size(); ++i) {
+            // What a blend weight can move: the largest difference of two neighbouring levels' values at the
+            // lookup (every pair, not only the reference LOD's: the device's LOD may sit in the next pair).
+            SamplerOptions level = with_filter(Filter::bilinear_mip);
             double level_gap = 0;
             for (int k = 0; k + 1 < int(env.cube.faces[0].levels.size()); ++k) {
                 level.lod_min = level.lod_max = float(k);
