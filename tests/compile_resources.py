@@ -68,14 +68,12 @@ KINDS = {
                    textures=[("sampler2D", "depth"), ("texture2D", "depth2")],
                    forms=[dict(T="depth", X=", cmp", manual=True, queries=False, hw=False),
                           dict(T="depth2", X=", cmp", manual=True, queries=False, hw=False)]),
-    # Cube maps (cube.glsl, issue 15): the combined and the separate-sampler form in one shader, every family's
-    # manual and _hw entry points; fragment only (compile_includes compiles cube.glsl in every stage).
-    "cube": dict(bit="TF_RESOURCE_CUBE", stages=("frag",),
-                 textures=[("samplerCube", "tex"), ("textureCube", "tex2"), ("sampler", "smp")],
-                 forms=[], cube=[dict(T="tex", X=""), dict(T="tex2, smp", X="")]),
-    "cube-array": dict(bit="TF_RESOURCE_CUBE_ARRAY", stages=("frag",),
-                       textures=[("samplerCubeArray", "tex"), ("textureCubeArray", "tex2"), ("sampler", "smp")],
-                       forms=[], cube=[dict(T="tex", X=", layer"), dict(T="tex2, smp", X=", layer")]),
+    # Cube maps (cube.glsl, issue 15): one kind with both cube bits, fragment only (compile_includes compiles
+    # cube.glsl with a samplerCube in every stage). Its two forms take both remaining paths: a separate sampler
+    # (the sampled-image constructor) and an array (the layer), every family's manual and _hw entry points.
+    "cube": dict(bit="TF_RESOURCE_CUBE | TF_RESOURCE_CUBE_ARRAY", stages=("frag",),
+                 textures=[("textureCube", "tex"), ("sampler", "smp"), ("samplerCubeArray", "tex2")],
+                 forms=[], cube=[dict(T="tex, smp", X=""), dict(T="tex2", X=", layer")]),
     "shadow-hw": dict(bit="TF_RESOURCE_SHADOW",
                       textures=[("sampler2DShadow", "shadowTex"), ("texture2D", "depth"), ("samplerShadow", "smp")],
                       forms=[dict(T="shadowTex", X=", dref", manual=False, queries=False, hw=True),
@@ -84,7 +82,8 @@ KINDS = {
 SAMPLER_TYPES = ("sampler", "samplerShadow")
 BITS = {"TF_RESOURCE_SAMPLER_2D": 1, "TF_RESOURCE_TEXTURE_2D": 2, "TF_RESOURCE_SAMPLER_2D_ARRAY": 4,
         "TF_RESOURCE_TEXTURE_2D_ARRAY": 8, "TF_RESOURCE_INTEGER": 16, "TF_RESOURCE_SHADOW": 32,
-        "TF_RESOURCE_CUBE": 64, "TF_RESOURCE_CUBE_ARRAY": 128, "TF_RESOURCE_LATLONG": 256}
+        "TF_RESOURCE_CUBE": 64, "TF_RESOURCE_CUBE_ARRAY": 128, "TF_RESOURCE_LATLONG": 256,
+        "TF_RESOURCE_CUBE | TF_RESOURCE_CUBE_ARRAY": 192}
 ALL_BITS = 511
 
 
@@ -109,8 +108,8 @@ def calls(kind):
     for c in KINDS[kind].get("cube", []):
         T, X = c["T"], c["X"]
         d, dd = f"vec3(uv, 1.0 - uv.x){X}", "vec3(dx, 0.0), vec3(dy, 0.0)"
+        # (the _mip forms are trilinear's two halves: compile_includes calls them)
         out += [f"tf_nearest_cube({T}, {d}, s)", f"tf_bilinear_cube({T}, {d}, s)",
-                f"tf_nearest_mip_cube({T}, {d}, {dd}, s)", f"tf_bilinear_mip_cube({T}, {d}, {dd}, s)",
                 f"tf_trilinear_cube({T}, {d}, {dd}, s)", f"tf_aniso_cube({T}, {d}, {dd}, s, 8, TF_ANISO_GPU)",
                 f"tf_aniso_cube_hw({T}, {d}, {dd}, s, 8, TF_ANISO_FELINE)", f"tf_ewa_cube({T}, {d}, {dd}, s, 2.0, 16.0)",
                 f"tf_ewa_cube_hw({T}, {d}, {dd}, s, 2.0, 16.0)"]

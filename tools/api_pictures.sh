@@ -43,5 +43,14 @@ picture hw-trilinear plane checker hw-trilinear # the hardware sampler (textureG
 picture lod-tunnel-quads tunnel mipcolors nearest-mip
 picture lod-tunnel-ray tunnel mipcolors nearest-mip --derivatives ray
 picture lod-plane-trilinear plane mipcolors trilinear
+# Environment maps (cube.glsl, latlong.glsl): a mirror ball in a cube of six tinted 512² checker faces, and the
+# cube's corner from inside (cube-labels: each face's hue, a bar along its t = 0 edge, its orientation marks).
+picture reflect-ground-truth reflect checker ground-truth --pixel-filter gaussian
+picture reflect-trilinear reflect checker trilinear
+picture reflect-aniso reflect checker aniso --probes 16
+picture reflect-ewa reflect checker ewa
+picture reflect-hw-aniso reflect checker hw-aniso
+picture reflect-latlong-ewa reflect checker ewa --env latlong
+picture skybox-labels skybox cube-labels trilinear
 
 du -ch "$out"/*.png | tail -n 1
