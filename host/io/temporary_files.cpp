@@ -1,5 +1,6 @@
 #include "io/temporary_files.h"
 #include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <mutex>
@@ -37,9 +38,20 @@ sigset_t cleanup_signals()
     }
     {
         std::lock_guard<std::mutex> lock(registry_mutex); // held until the process ends: no new temporaries
-        for (const std::string& path : registry()) {
-            std::error_code ignored;
-            std::filesystem::remove_all(path, ignored);
+        // The other threads still run while this one removes: a command writing into a staging directory
+        // (bench: create_directories of images/SCENE, then its files) can put back what was just removed, and
+        // remove_all of a directory that gains an entry meanwhile fails. So remove until nothing is left, a
+        // bounded number of rounds a millisecond apart (the writer is between two files after the first).
+        for (int round = 0; round < 100; ++round) {
+            bool left = false;
+            for (const std::string& path : registry()) {
+                std::error_code ignored;
+                std::filesystem::remove_all(path, ignored);
+                left = left || std::filesystem::exists(path, ignored);
+            }
+            if (!left)
+                break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
         // End as the signal would have: its default action, delivered to this thread.
         std::signal(signal_number, SIG_DFL);
