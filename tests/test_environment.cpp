@@ -48,8 +48,7 @@ Image render_gpu(const EnvironmentMap& env, const SceneParams& scene, const Samp
                  Gradients gradients = Gradients::fine)
 {
     const VulkanContext& context = device().context;
-    GpuEnvironment gpu = env.map == EnvMap::cube ? upload_cube_environment(context, env.cube)
-                                                 : upload_latlong_environment(context, env.latlong);
+    GpuEnvironment gpu = upload_environment(context, env);
     Cleanup cleanup;
     cleanup.add([&] { destroy_environment(context, gpu); });
     RenderOptions render;

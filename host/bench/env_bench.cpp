@@ -39,8 +39,7 @@ void bench_environment_scene(const VulkanContext& context, const BenchConfig& co
     const DeviceLimits limits = device_limits(context.info);
     const EnvironmentMap env = load_environment(config.texture, {false, &limits});
     const int size = environment_size(env);
-    GpuEnvironment gpu = env.map == EnvMap::cube ? upload_cube_environment(context, env.cube)
-                                                 : upload_latlong_environment(context, env.latlong);
+    GpuEnvironment gpu = upload_environment(context, env);
     Cleanup cleanup;
     cleanup.add([&] { destroy_environment(context, gpu); });
     const SceneParams scene = make_scene(kind, config.width, config.height, size);

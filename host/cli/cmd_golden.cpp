@@ -74,8 +74,7 @@ Image render_environment_case(const VulkanContext& context, const GoldenCase& c,
 {
     const EnvironmentMap env = load_environment(c.texture, {false, &limits});
     SceneParams scene = make_scene(c.scene, c.width, c.height, environment_size(env));
-    GpuEnvironment gpu = env.map == EnvMap::cube ? upload_cube_environment(context, env.cube)
-                                                 : upload_latlong_environment(context, env.latlong);
+    GpuEnvironment gpu = upload_environment(context, env);
     Cleanup cleanup;
     cleanup.add([&] { destroy_environment(context, gpu); });
     return gpu_render_environment(context, gpu, scene, c.sampler, c.render, &pipelines);

@@ -35,8 +35,7 @@ Image render_environment_scene(SceneKind kind, int width, int height, int frame,
     const VulkanContext& context = device.gpu->context;
     Image image;
     {
-        GpuEnvironment gpu = env.map == EnvMap::cube ? upload_cube_environment(context, env.cube)
-                                                     : upload_latlong_environment(context, env.latlong);
+        GpuEnvironment gpu = upload_environment(context, env);
         Cleanup cleanup;
         cleanup.add([&] { destroy_environment(context, gpu); });
         image = gpu_render_environment(context, gpu, scene, options, render);

@@ -13,11 +13,12 @@
 namespace tf {
 
 // The full filter on a cube map / lat-long map for one lookup. Filters: nearest, bilinear (level 0),
-// nearest-mip, bilinear-mip, trilinear, aniso (gpu and feline; either taps: one reference), ewa (manual
-// taps, or the 2D hardware-tap form on the face/texture), hw-nearest/hw-bilinear/hw-trilinear as the
-// manual formula of the same mode; none: the unit direction as colour, 0.5·d/|d| + 0.5 (the baseline). brilinear,
-// sat, sat-assembly, hw-aniso and ground-truth throw tf::Error (no environment form). A zero or non-finite
-// direction returns (0,0,0,0); non-finite derivatives are the 2D families' non-finite footprint.
+// nearest-mip, bilinear-mip, trilinear, aniso (gpu and feline), ewa; with --taps hardware, aniso's probes and
+// ewa's blocks are the device's taps (a cube's re-projected onto the face they hit, docs/ENVIRONMENT.md);
+// hw-nearest/hw-bilinear/hw-trilinear as the manual formula of the same mode; none: the unit direction as
+// colour, 0.5·d/|d| + 0.5 (the baseline). brilinear, sat, sat-assembly (no environment form), hw-aniso
+// (implementation-defined) and ground-truth throw tf::Error. A zero or non-finite direction returns
+// (0,0,0,0); non-finite derivatives are the 2D families' non-finite footprint.
 glm::dvec4 reference_cube_sample(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup);
 glm::dvec4 reference_latlong_sample(const MipChain& chain, const SamplerOptions& options, const EnvLookup& lookup);
 

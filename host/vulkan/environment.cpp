@@ -71,6 +71,12 @@ GpuEnvironment upload_latlong_environment(const VulkanContext& context, const Mi
     return e;
 }
 
+GpuEnvironment upload_environment(const VulkanContext& context, const EnvironmentMap& env)
+{
+    return env.map == EnvMap::cube ? upload_cube_environment(context, env.cube)
+                                   : upload_latlong_environment(context, env.latlong);
+}
+
 void destroy_environment(const VulkanContext& context, GpuEnvironment& environment)
 {
     destroy_image(context, environment.image);

@@ -17,6 +17,8 @@ struct GpuEnvironment {
 // Throws tf::Error when the device cannot hold the image (its size against maxImageDimensionCube / 2D).
 GpuEnvironment upload_cube_environment(const VulkanContext& context, const CubeMap& cube);
 GpuEnvironment upload_latlong_environment(const VulkanContext& context, const MipChain& chain);
+// Whichever of the two `env` holds.
+GpuEnvironment upload_environment(const VulkanContext& context, const EnvironmentMap& env);
 void destroy_environment(const VulkanContext& context, GpuEnvironment& environment);
 
 // Environment pipelines kept for reuse by later renderers of one command or test (lavapipe spends most of a
