@@ -234,6 +234,10 @@ bad_flag_values() {
     expect_error "--alpha inf" --alpha out.png -- "${RENDER[@]}" --alpha inf -o out.png
     expect_error "--max-aniso 0.5" --max-aniso out.png -- "${RENDER[@]}" --max-aniso 0.5 -o out.png
     expect_error "--boxes 17" --boxes out.png -- "${RENDER[@]}" --boxes 17 -o out.png
+    expect_error "--magnify bogus" "unknown reconstruction 'bogus' (expected one of: bilinear, bspline, catmull-rom)" \
+        out.png -- "${RENDER[@]}" --magnify bogus -o out.png
+    expect_error "--magnify on bilinear" "--magnify bspline applies to trilinear, aniso and ewa" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter bilinear --magnify bspline "${REF[@]}" -o out.png
     # Quad derivatives: bad values, and combinations the mesh scene cannot do.
     expect_error "--stage bogus" --stage out.png -- "${RENDER[@]}" --stage bogus -o out.png
     expect_error "--derivatives bogus" --derivatives out.png -- "${RENDER[@]}" --derivatives bogus -o out.png
@@ -695,6 +699,8 @@ bad_formats() {
         "$TEXFILTER" render --scene zoom --texture checker --filter hw-bilinear --format r16ui "${REF[@]}" -o out.png
     expect_error "sample --format r32ui --filter ewa --taps hardware" "--taps hardware needs a float format" out.csv -- \
         "$TEXFILTER" sample --texture checker --filter ewa --taps hardware --format r32ui --lookups formats.csv -o out.csv
+    expect_error "sample --format r16ui --filter catmull-rom --taps hardware" "--taps hardware needs a float format" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter catmull-rom --taps hardware --format r16ui --lookups formats.csv -o out.csv
     expect_error "bench --format RGBA8 (names are lower case)" "unknown texture format 'RGBA8'" bench-out -- \
         "$TEXFILTER" bench --quick --format RGBA8 --out bench-out
     mkdir -p format-golden
@@ -754,6 +760,10 @@ environment_maps() {
         "${env[@]}" --texture checker --filter trilinear --env sphere -o out.png
     expect_error "render --scene skybox --filter sat" "--filter sat has no environment-map form" out.png -- \
         "${env[@]}" --texture checker --filter sat -o out.png
+    expect_error "render --scene skybox --filter bspline" "--filter bspline has no environment-map form" out.png -- \
+        "${env[@]}" --texture checker --filter bspline -o out.png
+    expect_error "render --scene reflect --magnify catmull-rom" "--magnify catmull-rom has no environment-map form" out.png -- \
+        "${env[@]}" --texture checker --filter trilinear --magnify catmull-rom -o out.png
     expect_error "render --scene reflect --stage compute" "fragment stage only" out.png -- \
         "$TEXFILTER" render --scene reflect --size 16x16 --texture checker --filter ewa --stage compute -o out.png
     expect_error "render --scene skybox --view lod" "--view lod is not available on the environment scenes" out.png -- \

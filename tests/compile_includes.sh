@@ -17,7 +17,7 @@
 #   - each include twice (450 fragment): its include guard;
 #   - derivatives.glsl with TF_COMPUTE_QUADS and GL_KHR_shader_subgroup_quad (compute, 450 and 460);
 #   - texfilter.glsl with every overridable define set before including (TF_COUNT_FETCHES,
-#     TF_COUNT_HW_LOOKUPS, TF_EWA_MAX_TEXELS, TF_ANISO_RATIO_SLACK; TF_COMPUTE_QUADS in compute), 460,
+#     TF_COUNT_HW_LOOKUPS, TF_EWA_MAX_TEXELS, TF_ANISO_RATIO_SLACK, TF_MAGNIFY; TF_COMPUTE_QUADS in compute), 460,
 #     all three stages.
 # Prints one line per compile; exits non-zero if any fails.
 set -euo pipefail
@@ -50,6 +50,7 @@ call_for() {
     nearest) echo "tf_nearest_mip(tex, uv, dx, dy, s) + tf_nearest(tex, uv, s)" ;;
     bilinear) echo "tf_bilinear_mip(tex, uv, dx, dy, s) + tf_bilinear(tex, uv, s) + tf_bilinear_level(tex, uv, 1, s.wrap)" ;;
     trilinear) echo "tf_trilinear(tex, uv, dx, dy, s)" ;;
+    bicubic) echo "tf_bspline(tex, uv, s) + tf_catmull_rom(tex, uv, s) + tf_bspline_hw(tex, uv, s) + tf_catmull_rom_hw(tex, uv, s) + tf_cubic_level(tex, uv, 1, s.wrap, TF_RECONSTRUCT_BSPLINE) + tf_cubic_level_hw(tex, uv, 0, s.wrap, TF_RECONSTRUCT_CATMULL_ROM)" ;;
     derivatives)
         local rd="tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0))"
         if [[ $stage == frag ]]; then # the quad macros exist only where dFdx does
@@ -66,7 +67,7 @@ call_for() {
     cube) echo "tf_trilinear_cube(cube, vec3(uv, 1.0), vec3(dx, 0.0), vec3(dy, 0.0), s) + tf_aniso_cube(cube, vec3(uv, -1.0), vec3(dx, 0.0), vec3(dy, 0.0), s, 8, TF_ANISO_GPU) + tf_ewa_cube_hw(cube, vec3(1.0, uv), vec3(0.0, dx), vec3(0.0, dy), s, 2.0, 16.0) + tf_nearest_cube(cube, vec3(uv, 0.5), s) + tf_nearest_mip_cube(cube, vec3(0.5, uv), vec3(dx, 0.0), vec3(dy, 0.0), s) + tf_bilinear_mip_cube(cube, vec3(uv.x, 1.0, uv.y), vec3(dx, 0.0), vec3(dy, 0.0), s)" ;;
     latlong) echo "tf_trilinear_latlong(tex, vec3(uv, 1.0), vec3(dx, 0.0), vec3(dy, 0.0), s) + tf_ewa_latlong(tex, vec3(uv, -1.0), vec3(dx, 0.0), vec3(dy, 0.0), s, 2.0, 16.0) + tf_aniso_latlong_hw(tex, vec3(1.0, uv), vec3(0.0, dx), vec3(0.0, dy), s, 8, TF_ANISO_FELINE) + tf_bilinear_latlong(tex, vec3(uv, 0.5), s)" ;;
     encode) echo "vec4(float(tf_mip_srgb8(uv.x)), float(tf_mip_unorm8(uv.y)), float(tf_mip_half(dx.x)), 0.0)" ;;
-    texfilter) echo "tf_trilinear(tex, uv, dx, dy, s) + tf_nearest_mip(tex, uv, dx, dy, s) + tf_brilinear(tex, uv, dx, dy, s, 0.25) + tf_aniso(tex, uv, dx, dy, s, 16, TF_ANISO_GPU) + tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_sat(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0)) + vec4(tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).dUVdy, 0.0, 0.0) + tf_ewa_cube(cube, vec3(uv, 1.0), vec3(dx, 0.0), vec3(dy, 0.0), s, 2.0, 16.0) + tf_trilinear_latlong(tex, vec3(uv, 1.0), vec3(dx, 0.0), vec3(dy, 0.0), s)" ;;
+    texfilter) echo "tf_trilinear(tex, uv, dx, dy, s) + tf_catmull_rom(tex, uv, s) + tf_nearest_mip(tex, uv, dx, dy, s) + tf_brilinear(tex, uv, dx, dy, s, 0.25) + tf_aniso(tex, uv, dx, dy, s, 16, TF_ANISO_GPU) + tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_sat(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0)) + vec4(tf_ray_differential_gradients(vec3(uv, 1.0), vec3(0.01, 0.0, 0.0), vec3(0.0, 0.01, 0.0), 2.0, vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0)).dUVdy, 0.0, 0.0) + tf_ewa_cube(cube, vec3(uv, 1.0), vec3(dx, 0.0), vec3(dy, 0.0), s, 2.0, 16.0) + tf_trilinear_latlong(tex, vec3(uv, 1.0), vec3(dx, 0.0), vec3(dy, 0.0), s)" ;;
     *) return 1 ;;
     esac
 }
@@ -351,7 +352,8 @@ options="uint fetchCount = 0u, hwLookupCount = 0u;
 #define TF_COUNT_FETCHES(n) fetchCount += uint(n)
 #define TF_COUNT_HW_LOOKUPS(n) hwLookupCount += uint(n)
 #define TF_EWA_MAX_TEXELS 15
-#define TF_ANISO_RATIO_SLACK (1.0 / 16.0)"
+#define TF_ANISO_RATIO_SLACK (1.0 / 16.0)
+#define TF_MAGNIFY TF_RECONSTRUCT_CATMULL_ROM"
 optionsCall="$(call_for texfilter comp) + tf_ewa_hw(tex, uv, dx, dy, s, 2.0, 16.0) + tf_aniso_hw(tex, uv, dx, dy, s, 4, TF_ANISO_GPU) + vec4(float(fetchCount), float(hwLookupCount), 0.0, 0.0)"
 check 460 frag texfilter "$optionsCall" 1 "$options" "texfilter.glsl with every option overridden"
 check 460 comp texfilter "$optionsCall + vec4(tf_compute_quad_gradients(uv, TF_DERIVATIVES_FINE).dUVdx, 0.0, 0.0)" 1 \

@@ -20,9 +20,11 @@ import os
 import sys
 
 TRUTHS = ("box", "gaussian")
-# The environment scenes (cube and lat-long maps) have no brilinear or SAT form: no result is expected there.
+# The environment scenes (cube and lat-long maps) have no brilinear, SAT or bicubic form (nor --magnify): no
+# result is expected there.
 ENVIRONMENT_SCENES = {"skybox", "reflect"}
-NO_ENVIRONMENT_FORM = {"brilinear", "sat", "sat-assembly"}
+NO_ENVIRONMENT_FORM = {"brilinear", "sat", "sat-assembly", "bspline", "bspline-hw", "catmull-rom", "catmull-rom-hw",
+                       "trilinear-catmull-rom", "ewa-bspline"}
 
 
 def expected(scene, label):

@@ -129,10 +129,21 @@ std::vector<BenchFilter> bench_filters()
         make_filter("hw-bilinear", Filter::hw_bilinear),
         make_filter("hw-trilinear", Filter::hw_trilinear),
         make_filter("hw-aniso16", Filter::hw_aniso, "--aniso 16"),
+        make_filter("bspline", Filter::bspline),
+        make_filter("bspline-hw", Filter::bspline, "--taps hardware"),
+        make_filter("catmull-rom", Filter::catmull_rom),
+        make_filter("catmull-rom-hw", Filter::catmull_rom, "--taps hardware"),
+        make_filter("trilinear-catmull-rom", Filter::trilinear, "--magnify catmull-rom"),
+        make_filter("ewa-bspline", Filter::ewa, "--magnify bspline"),
     };
-    for (BenchFilter& f : filters)
+    for (BenchFilter& f : filters) {
         if (f.label.ends_with("-hw"))
             f.options.taps = Taps::hardware;
+        if (f.label.ends_with("-catmull-rom"))
+            f.options.magnify = Reconstruction::catmull_rom;
+        if (f.label.ends_with("-bspline"))
+            f.options.magnify = Reconstruction::bspline;
+    }
     return filters;
 }
 

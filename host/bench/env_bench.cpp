@@ -18,10 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool has_environment_form(Filter filter)
-{
-    return filter != Filter::brilinear && filter != Filter::sat && filter != Filter::sat_assembly;
-}
 
 std::vector<Image> environment_path(GpuRenderer& renderer, const SceneParams& scene, int count, int size)
 {
@@ -73,7 +69,7 @@ void bench_environment_scene(const VulkanContext& context, const BenchConfig& co
                                                      config.warmup, config.frames, config.timer));
     const size_t first = run.results.size();
     for (const BenchFilter& filter : config.filters) {
-        if (!has_environment_form(filter.options.filter))
+        if (!has_environment_form(filter.options))
             continue;
         BenchResult r;
         r.scene = kind;

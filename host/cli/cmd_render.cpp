@@ -90,7 +90,7 @@ int run_render(const std::vector<std::string>& argv)
     TextureSource source = texture_source_from(args);
     const bool environment = is_environment_scene(kind);
     if (environment) { // before any work
-        check_environment_filter(options.filter);
+        check_environment_filter(options);
         if (render.view != DebugView::color)
             throw Error("--view " + to_string(render.view) + " is not available on the environment scenes (skybox, "
                         "reflect): use --view color");

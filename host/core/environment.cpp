@@ -21,11 +21,22 @@ EnvMap parse_env_map(const std::string& name)
 
 std::string to_string(EnvMap map) { return map == EnvMap::cube ? "cube" : "latlong"; }
 
-void check_environment_filter(Filter filter)
+bool has_environment_form(const SamplerOptions& options)
 {
-    if (filter == Filter::brilinear || filter == Filter::sat || filter == Filter::sat_assembly)
+    const Filter filter = options.filter;
+    return filter != Filter::brilinear && filter != Filter::sat && filter != Filter::sat_assembly &&
+           filter != Filter::bspline && filter != Filter::catmull_rom && options.magnify == Reconstruction::bilinear;
+}
+
+void check_environment_filter(const SamplerOptions& options)
+{
+    const Filter filter = options.filter;
+    if (options.magnify == Reconstruction::bilinear && !has_environment_form(options))
         throw Error("--filter " + to_string(filter) + " has no environment-map form (cube.glsl and latlong.glsl: "
                     "nearest, bilinear, nearest-mip, bilinear-mip, trilinear, aniso, ewa, hw-*, ground-truth, none)");
+    if (options.magnify != Reconstruction::bilinear)
+        throw Error("--magnify " + to_string(options.magnify) + " has no environment-map form: the cube and lat-long "
+                    "filters reconstruct every level bilinearly");
 }
 
 Image latlong_from_cube(const CubeMap& cube, int width)

@@ -20,8 +20,10 @@ EnvMap parse_env_map(const std::string& name); // "cube", "latlong"; throws tf::
 std::string to_string(EnvMap map);
 
 // The filters the environment maps have (every family of cube.glsl / latlong.glsl, the hw-* modes, the
-// ground truth, none): brilinear and the SAT filters throw tf::Error naming the filter.
-void check_environment_filter(Filter filter);
+// ground truth, none): brilinear, the SAT filters, bspline and catmull-rom throw tf::Error naming the filter,
+// and so does a --magnify other than bilinear.
+void check_environment_filter(const SamplerOptions& options);
+bool has_environment_form(const SamplerOptions& options); // check_environment_filter would not throw
 
 // The lat-long image (width x width/2) of a cube map's level 0: texel (i, j) takes the cube texel its centre's
 // direction hits (nearest, no filtering), so that --env latlong renders the same procedural environment as

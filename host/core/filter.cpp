@@ -24,12 +24,19 @@ const std::pair<Filter, const char*> kFilterNames[] = {
     {Filter::ewa, "ewa"},
     {Filter::sat, "sat"},
     {Filter::sat_assembly, "sat-assembly"},
+    {Filter::bspline, "bspline"},
+    {Filter::catmull_rom, "catmull-rom"},
     {Filter::ground_truth, "ground-truth"},
     {Filter::none, "none"},
 };
 
 const std::pair<AnisoShape, const char*> kShapeNames[] = {{AnisoShape::gpu, "gpu"}, {AnisoShape::feline, "feline"}};
 const std::pair<Taps, const char*> kTapsNames[] = {{Taps::manual, "manual"}, {Taps::hardware, "hardware"}};
+const std::pair<Reconstruction, const char*> kReconstructionNames[] = {
+    {Reconstruction::bilinear, "bilinear"},
+    {Reconstruction::bspline, "bspline"},
+    {Reconstruction::catmull_rom, "catmull-rom"},
+};
 
 const std::pair<PixelFilter, const char*> kPixelFilterNames[] = {{PixelFilter::box, "box"},
                                                                  {PixelFilter::gaussian, "gaussian"}};
@@ -74,6 +81,10 @@ AnisoShape parse_aniso_shape(const std::string& name) { return parse_name(kShape
 std::string to_string(AnisoShape shape) { return name_of(kShapeNames, shape, "aniso shape"); }
 Taps parse_taps(const std::string& name) { return parse_name(kTapsNames, name, "taps form"); }
 std::string to_string(Taps taps) { return name_of(kTapsNames, taps, "taps form"); }
+Reconstruction parse_reconstruction(const std::string& name) {
+    return parse_name(kReconstructionNames, name, "reconstruction");
+}
+std::string to_string(Reconstruction r) { return name_of(kReconstructionNames, r, "reconstruction"); }
 PixelFilter parse_pixel_filter(const std::string& name) { return parse_name(kPixelFilterNames, name, "pixel filter"); }
 std::string to_string(PixelFilter filter) { return name_of(kPixelFilterNames, filter, "pixel filter"); }
 
@@ -100,6 +111,19 @@ bool is_hardware(Filter filter) {
 }
 
 bool is_scene_level(Filter filter) { return filter == Filter::ground_truth || filter == Filter::none; }
+
+bool takes_taps(Filter filter) {
+    return filter == Filter::aniso || filter == Filter::ewa || filter == Filter::bspline || filter == Filter::catmull_rom;
+}
+
+bool takes_magnify(Filter filter) { return filter == Filter::trilinear || filter == Filter::aniso || filter == Filter::ewa; }
+
+void check_magnify(const SamplerOptions& options) {
+    if (options.magnify != Reconstruction::bilinear && !takes_magnify(options.filter))
+        throw Error("--magnify " + to_string(options.magnify) + " applies to trilinear, aniso and ewa (level 0's "
+                    "reconstruction), not to --filter " + to_string(options.filter) +
+                    (options.filter == Filter::bilinear ? " (--filter " + to_string(options.magnify) + " is that cubic alone)" : ""));
+}
 
 TruthRange truth_range(const SamplerOptions& options)
 {

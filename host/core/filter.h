@@ -23,6 +23,8 @@ enum class Filter {
     ewa = HARNESS_FILTER_EWA,             // elliptical weighted average, Gaussian (--alpha, --max-aniso, --taps)
     sat = HARNESS_FILTER_SAT,             // summed-area table: box over the footprint's bounding box
     sat_assembly = HARNESS_FILTER_SAT_ASSEMBLY, // summed-area table: K boxes along the major axis (--boxes)
+    bspline = HARNESS_FILTER_BSPLINE,         // level 0, cubic B-spline (--taps: 16 fetches or 4 bilinear taps)
+    catmull_rom = HARNESS_FILTER_CATMULL_ROM, // level 0, Catmull-Rom (--taps: 16 fetches or 9 bilinear taps)
     // Scene-level, not lookup filters (render only):
     ground_truth = HARNESS_FILTER_GROUND_TRUTH, // the pixel's integral of the level-0 bilinear texture (--spp)
     none = HARNESS_FILTER_NONE, // no texture at all: fract(uv) as colour, the benchmark's baseline cost
@@ -37,12 +39,21 @@ enum class PixelFilter { box = HARNESS_PIXEL_FILTER_BOX, gaussian = HARNESS_PIXE
 enum class AnisoShape { gpu = HARNESS_ANISO_GPU, feline = HARNESS_ANISO_FELINE };
 // Multi-tap filters: taps from texelFetch (exact everywhere) or hardware bilinear/trilinear lookups.
 enum class Taps { manual = HARNESS_TAPS_MANUAL, hardware = HARNESS_TAPS_HARDWARE };
+// How one level is reconstructed from its texels (shaders/texfilter/bicubic.glsl): trilinear, aniso and ewa
+// use it on level 0 (--magnify), where they magnify; bspline and catmull-rom are the cubics alone.
+enum class Reconstruction {
+    bilinear = HARNESS_RECONSTRUCT_BILINEAR,
+    bspline = HARNESS_RECONSTRUCT_BSPLINE,
+    catmull_rom = HARNESS_RECONSTRUCT_CATMULL_ROM
+};
 
 Filter parse_filter(const std::string& name); // throws tf::Error listing the valid names
 std::string to_string(Filter filter);
 const std::vector<Filter>& all_filters(); // the lookup filters: every filter but ground-truth and none
 bool is_hardware(Filter filter);
 bool is_scene_level(Filter filter); // ground-truth, none: they need a scene, not one uv lookup
+bool takes_taps(Filter filter);      // --taps applies: aniso, ewa, bspline, catmull-rom
+bool takes_magnify(Filter filter);   // --magnify applies: trilinear, aniso, ewa
 
 Wrap parse_wrap(const std::string& name);
 std::string to_string(Wrap wrap);
@@ -50,6 +61,8 @@ AnisoShape parse_aniso_shape(const std::string& name);
 std::string to_string(AnisoShape shape);
 Taps parse_taps(const std::string& name);
 std::string to_string(Taps taps);
+Reconstruction parse_reconstruction(const std::string& name);
+std::string to_string(Reconstruction reconstruction);
 PixelFilter parse_pixel_filter(const std::string& name);
 std::string to_string(PixelFilter filter);
 
@@ -69,7 +82,8 @@ struct SamplerOptions {
     float band = 0.25f;    // brilinear: width of the trilinear band around each transition, 0..1
     int probes = 16;       // aniso: maximum number of probes, 1..16
     AnisoShape aniso_shape = AnisoShape::gpu;
-    Taps taps = Taps::manual; // aniso, ewa
+    Taps taps = Taps::manual; // aniso, ewa, bspline, catmull-rom
+    Reconstruction magnify = Reconstruction::bilinear; // trilinear, aniso, ewa: level 0's reconstruction
     float alpha = 2.0f;    // ewa: Gaussian exp(-alpha r^2)
     float max_aniso = 16.0f; // ewa: eccentricity clamp (minor axis grown to major / max_aniso)
     int boxes = 4;         // sat-assembly: boxes along the major axis, 1..16
@@ -88,5 +102,8 @@ struct TruthRange {
     int count = 0;
 };
 TruthRange truth_range(const SamplerOptions& options);
+
+// Throws tf::Error naming the filter when options.magnify is not bilinear on a filter that does not take it.
+void check_magnify(const SamplerOptions& options);
 
 } // namespace tf

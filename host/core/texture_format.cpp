@@ -245,6 +245,8 @@ bool needs_hardware_filtering(const SamplerOptions& options)
         return true;
     case Filter::aniso:
     case Filter::ewa:
+    case Filter::bspline:
+    case Filter::catmull_rom:
         return options.taps == Taps::hardware;
     default:
         return false;

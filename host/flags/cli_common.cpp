@@ -30,15 +30,17 @@ std::vector<FlagSpec> sampler_flags(SamplerFlags which)
     const bool scenes = which == SamplerFlags::scenes;
     std::vector<FlagSpec> flags = {
         {"--filter", "F",
-         std::string("nearest, bilinear, trilinear, nearest-mip, bilinear-mip, brilinear, aniso, ewa, sat, sat-assembly, "
-                     "hw-nearest, hw-bilinear, hw-trilinear, hw-aniso") +
+         std::string("nearest, bilinear, bspline, catmull-rom, trilinear, nearest-mip, bilinear-mip, brilinear, aniso, "
+                     "ewa, sat, sat-assembly, hw-nearest, hw-bilinear, hw-trilinear, hw-aniso") +
              (scenes ? ", ground-truth (supersampled) or none (no texture: the benchmark's baseline)" : "")},
         {"--wrap", "W", "repeat (default), clamp or mirror"},
         {"--aniso", "N", "hw-aniso: maximum anisotropy, 1..16 (default 16)"},
         {"--band", "B", "brilinear: trilinear band around each level transition, 0..1 (default 0.25)"},
         {"--probes", "N", "aniso: most probes along the major axis, 1..16 (default 16)"},
         {"--aniso-shape", "S", "aniso: gpu (Vulkan's model, default) or feline (ellipse axis, Gaussian weights)"},
-        {"--taps", "T", "aniso, ewa: manual (texelFetch, default) or hardware (bilinear/trilinear lookups)"},
+        {"--taps", "T", "aniso, ewa, bspline, catmull-rom: manual (texelFetch, default) or hardware (bilinear/trilinear "
+                        "lookups)"},
+        {"--magnify", "R", "trilinear, aniso, ewa: level 0's reconstruction, bilinear (default), bspline or catmull-rom"},
         {"--alpha", "A", "ewa: Gaussian exp(-A r^2), 0.05..16 (default 2)"},
         {"--max-aniso", "E", "ewa: largest major/minor axis ratio, 1..64 (default 16)"},
         {"--boxes", "K", "sat-assembly: boxes along the major axis, 1..16 (default 4)"}};
@@ -112,6 +114,8 @@ SamplerOptions sampler_options_from(const Args& args)
     options.probes = args.get_int("--probes", options.probes, 1, 16);
     options.aniso_shape = parse_flag(args, "--aniso-shape", "gpu", parse_aniso_shape);
     options.taps = parse_flag(args, "--taps", "manual", parse_taps);
+    options.magnify = parse_flag(args, "--magnify", "bilinear", parse_reconstruction);
+    check_magnify(options);
     options.alpha = float(args.get_double("--alpha", options.alpha, 0.05, 16.0));
     options.max_aniso = float(args.get_double("--max-aniso", options.max_aniso, 1.0, 64.0));
     options.boxes = args.get_int("--boxes", options.boxes, 1, 16);

@@ -104,7 +104,7 @@ glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options,
                        return reference_hardware_tap(chain, level, u, v, options.wrap, texels);
                    });
         } else {
-            sum += weight * reference_trilinear_at(chain, p.lod, u, v, options.wrap, texels);
+            sum += weight * reference_trilinear_at(chain, p.lod, u, v, options.wrap, texels, options.magnify);
         }
         weights += weight;
     }

@@ -26,7 +26,7 @@ glm::dvec4 reference_environment_sample(const EnvironmentMap& env, const Sampler
 Image reference_render_environment(const SceneParams& scene, const EnvironmentMap& env, const SamplerOptions& options,
                                    const RenderOptions& render)
 {
-    check_environment_filter(options.filter);
+    check_environment_filter(options);
     if (render.view != DebugView::color)
         throw Error("--view " + to_string(render.view) + " is not available on the environment scenes: use --view color");
     const int width = scene.kind_size.y, height = scene.kind_size.z;

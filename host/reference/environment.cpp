@@ -90,8 +90,9 @@ glm::dvec4 tap_latlong(const void* map, int level, double u, double v) {
 }
 
 // The filters a lookup has on an environment map; the others throw, naming the filter.
-void check_lookup_filter(Filter filter) {
-    check_environment_filter(filter); // brilinear and the SAT filters: no environment form at all
+void check_lookup_filter(const SamplerOptions& options) {
+    const Filter filter = options.filter;
+    check_environment_filter(options); // brilinear, the SAT filters, the cubics, --magnify: no environment form
     if (filter == Filter::hw_aniso)
         throw Error("hw-aniso has no CPU reference: anisotropic filtering is implementation-defined in Vulkan");
     if (filter == Filter::ground_truth)
@@ -173,7 +174,7 @@ Lookup latlong_lookup(const EnvLookup& lookup) {
 }
 
 glm::dvec4 reference_cube_sample(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup) {
-    check_lookup_filter(options.filter);
+    check_lookup_filter(options);
     for (int f = 0; f < cube_face_count; ++f) face_chain(cube, f, "reference_cube_sample");
     if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
     if (options.filter == Filter::none) return none_color(lookup.dir);
@@ -185,7 +186,7 @@ glm::dvec4 reference_cube_sample(const CubeMap& cube, const SamplerOptions& opti
 }
 
 glm::dvec4 reference_latlong_sample(const MipChain& chain, const SamplerOptions& options, const EnvLookup& lookup) {
-    check_lookup_filter(options.filter);
+    check_lookup_filter(options);
     if (chain.levels.empty()) throw Error("reference_latlong_sample: empty MIP chain");
     if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
     if (options.filter == Filter::none) return none_color(lookup.dir);

@@ -134,11 +134,14 @@ glm::dvec4 reference_hardware_tap(const MipChain& chain, int level, double u, do
 }
 
 glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap,
-                                  const TexelSource& texels) {
+                                  const TexelSource& texels, Reconstruction finest) {
     const double d = std::clamp(lod, 0.0, double(chain.levels.size() - 1));
     const int lo = int(std::floor(d));
     const double f = d - lo; // 0 on the last level: level lo + 1 is never read
-    return blend_levels(lo, f, [&](int level) { return reference_bilinear(chain, level, u, v, wrap, texels); });
+    return blend_levels(lo, f, [&](int level) {
+        return level == 0 ? reference_cubic(chain, 0, u, v, wrap, finest, texels)
+                          : reference_bilinear(chain, level, u, v, wrap, texels);
+    });
 }
 
 glm::dvec4 reference_sample_texels(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
@@ -167,11 +170,20 @@ glm::dvec4 reference_sample_texels(const MipChain& chain, const SamplerOptions& 
     case Filter::trilinear:
     case Filter::hw_trilinear:
         return reference_trilinear_at(chain, clamp_lod(chain, reference_lod(chain, reduced, options), options),
-                                      reduced.u, reduced.v, options.wrap, texels);
+                                      reduced.u, reduced.v, options.wrap, texels,
+                                      options.filter == Filter::trilinear ? options.magnify : Reconstruction::bilinear);
     case Filter::aniso:
         return reference_aniso(chain, options, reduced, texels);
-    case Filter::ewa:
-        return reference_ewa(chain, options, reduced, texels);
+    case Filter::ewa: {
+        const double share = magnified_share(chain, options, reduced); // --magnify: towards level 0's cubic
+        if (share == 0.0) return reference_ewa(chain, options, reduced, texels);
+        const glm::dvec4 cubic = reference_cubic(chain, 0, reduced.u, reduced.v, options.wrap, options.magnify, texels);
+        return share == 1.0 ? cubic : (1.0 - share) * reference_ewa(chain, options, reduced, texels) + share * cubic;
+    }
+    case Filter::bspline:
+        return reference_cubic(chain, 0, reduced.u, reduced.v, options.wrap, Reconstruction::bspline, texels);
+    case Filter::catmull_rom:
+        return reference_cubic(chain, 0, reduced.u, reduced.v, options.wrap, Reconstruction::catmull_rom, texels);
     case Filter::brilinear:
     case Filter::sat:
     case Filter::sat_assembly:
@@ -212,6 +224,8 @@ glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options
     case Filter::hw_trilinear:
     case Filter::aniso:
     case Filter::ewa:
+    case Filter::bspline:
+    case Filter::catmull_rom:
         return reference_sample_texels(chain, options, lookup, TexelSource{});
     case Filter::hw_aniso:
     case Filter::ground_truth:

@@ -71,9 +71,22 @@ glm::dvec4 blend_levels(int lo, double w, LevelValue level_value) {
 glm::dvec4 reference_hardware_tap(const MipChain& chain, int level, double u, double v, Wrap wrap,
                                   const TexelSource& texels);
 
-// Trilinear at a given LOD (clamped to [0, levels-1]): the building block of probes and hardware taps.
+// Cubic reconstruction of level `level` (reference/bicubic.cpp): sum over the texels i, j within the kernel's
+// support of k(x - (i + 1/2)) k(y - (j + 1/2)) texel(i, j), x = u·w_l. cubic_kernel is k: the B-spline, Catmull-Rom
+// (Mitchell-Netravali B = 1, C = 0 and B = 0, C = 1/2) or, for bilinear, the tent (then reference_cubic is
+// reference_bilinear). The hardware-tap forms compute the same sum (their only difference is the device's
+// sub-texel rounding).
+double cubic_kernel(double d, Reconstruction kernel);
+glm::dvec4 reference_cubic(const MipChain& chain, int level, double u, double v, Wrap wrap, Reconstruction kernel,
+                           const TexelSource& texels = {});
+// --magnify: the share of level 0 in trilinear at this lookup's LOD, 1 - clamp(lambda, 0, 1) (0 for bilinear):
+// how far ewa moves towards the cubic of level 0 (shaders/texfilter/ewa.glsl).
+double magnified_share(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+
+// Trilinear at a given LOD (clamped to [0, levels-1]): the building block of probes and hardware taps. Level 0
+// reconstructed by `finest` (--magnify), the others bilinearly.
 glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap,
-                                  const TexelSource& texels = {});
+                                  const TexelSource& texels = {}, Reconstruction finest = Reconstruction::bilinear);
 
 // The filter families of reference/aniso.cpp, reference/ewa.cpp and reference/sat.cpp (see those files
 // and the matching shaders/texfilter/*.glsl headers for the math). uv is finite when these are called.

@@ -32,6 +32,7 @@ std::string filter_name(Filter f) { return to_string(f); }
 std::string wrap_name(Wrap w) { return to_string(w); }
 std::string shape_name(AnisoShape s) { return to_string(s); }
 std::string taps_name(Taps t) { return to_string(t); }
+std::string reconstruction_name(Reconstruction r) { return to_string(r); }
 std::string pixel_filter_name(PixelFilter p) { return to_string(p); }
 std::string scene_name(SceneKind s) { return to_string(s); }
 std::string stage_name(Stage s) { return to_string(s); }
@@ -41,7 +42,7 @@ std::string gradients_name(Gradients g) { return to_string(g); }
 bool filter_widgets(const char* id, SamplerOptions& o)
 {
     ImGui::PushID(id);
-    bool c = enum_combo("filter", o.filter, HARNESS_FILTER_NEAREST, HARNESS_FILTER_NONE, filter_name);
+    bool c = enum_combo("filter", o.filter, HARNESS_FILTER_NEAREST, HARNESS_FILTER_CATMULL_ROM, filter_name);
     c |= enum_combo("wrap", o.wrap, HARNESS_WRAP_REPEAT, HARNESS_WRAP_MIRROR, wrap_name);
     const Filter f = o.filter;
     if (f != Filter::ground_truth && f != Filter::none) {
@@ -59,7 +60,10 @@ bool filter_widgets(const char* id, SamplerOptions& o)
         c |= ImGui::SliderInt("probes", &o.probes, 1, 16);
         c |= enum_combo("shape", o.aniso_shape, HARNESS_ANISO_GPU, HARNESS_ANISO_FELINE, shape_name);
     }
-    if (f == Filter::aniso || f == Filter::ewa)
+    if (takes_magnify(f))
+        c |= enum_combo("magnify", o.magnify, HARNESS_RECONSTRUCT_BILINEAR, HARNESS_RECONSTRUCT_CATMULL_ROM,
+                        reconstruction_name);
+    if (takes_taps(f))
         c |= enum_combo("taps", o.taps, HARNESS_TAPS_MANUAL, HARNESS_TAPS_HARDWARE, taps_name);
     if (f == Filter::ewa) {
         c |= ImGui::SliderFloat("alpha", &o.alpha, 0.05f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic);

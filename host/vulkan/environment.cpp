@@ -87,7 +87,7 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
                                                          const SceneParams& scene, const SamplerOptions& options,
                                                          const RenderOptions& render, EnvironmentPipelineCache* cache)
 {
-    check_environment_filter(options.filter);
+    check_environment_filter(options);
     if (render.view != DebugView::color)
         throw Error("--view " + to_string(render.view) + " is not available on the environment scenes: use --view color");
     if (render.stage != Stage::fragment)

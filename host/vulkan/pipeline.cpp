@@ -6,15 +6,17 @@ namespace tf {
 
 namespace {
 
-// The filter as HARNESS_SPEC_FILTER; info points into the struct, so keep it alive until the pipeline is made.
+// The filter as HARNESS_SPEC_FILTER, the reconstruction as HARNESS_SPEC_MAGNIFY (shaders that declare only the
+// first ignore the second); info points into the struct, so keep it alive until the pipeline is made.
 struct FilterSpecialization {
-    int32_t filter_id;
-    VkSpecializationMapEntry entry;
+    int32_t ids[2];
+    VkSpecializationMapEntry entries[2];
     VkSpecializationInfo info;
 
-    explicit FilterSpecialization(Filter filter)
-        : filter_id(int32_t(filter)), entry{HARNESS_SPEC_FILTER, 0, sizeof(int32_t)},
-          info{1, &entry, sizeof(int32_t), &filter_id}
+    explicit FilterSpecialization(FilterVariant variant)
+        : ids{int32_t(variant.filter), int32_t(variant.magnify)},
+          entries{{HARNESS_SPEC_FILTER, 0, sizeof(int32_t)}, {HARNESS_SPEC_MAGNIFY, sizeof(int32_t), sizeof(int32_t)}},
+          info{2, entries, sizeof(ids), ids}
     {
     }
     FilterSpecialization(const FilterSpecialization&) = delete;
@@ -34,7 +36,7 @@ VkPipelineShaderStageCreateInfo shader_stage(VkShaderStageFlagBits stage, VkShad
 } // namespace
 
 VkPipeline create_compute_pipeline(const VulkanContext& context, ShaderCode code, VkPipelineLayout layout,
-                                   Filter filter, Cleanup& cleanup)
+                                   FilterVariant filter, Cleanup& cleanup)
 {
     VkDevice device = context.device;
     Cleanup modules; // a pipeline keeps what it needs of its modules: they go once it is made
@@ -51,7 +53,7 @@ VkPipeline create_compute_pipeline(const VulkanContext& context, ShaderCode code
 }
 
 VkPipeline create_graphics_pipeline(const VulkanContext& context, const GraphicsPipelineDesc& desc,
-                                    VkPipelineLayout layout, Filter filter, Cleanup& cleanup)
+                                    VkPipelineLayout layout, FilterVariant filter, Cleanup& cleanup)
 {
     VkDevice device = context.device;
     Cleanup modules;

@@ -1,6 +1,6 @@
 #pragma once
 // Pipelines from embedded SPIR-V, each specialised to one filter (the harness shaders' specialization
-// constant HARNESS_SPEC_FILTER), so that a pipeline holds the code of one filter only.
+// constants HARNESS_SPEC_FILTER and HARNESS_SPEC_MAGNIFY), so that a pipeline holds the code of one filter only.
 #include "core/filter.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
@@ -9,6 +9,17 @@
 
 namespace tf {
 
+// What a harness pipeline is specialised to: the filter and level 0's reconstruction (trilinear, aniso, ewa:
+// --magnify). Made from a Filter alone where the reconstruction is bilinear.
+struct FilterVariant {
+    Filter filter = Filter::nearest;
+    Reconstruction magnify = Reconstruction::bilinear;
+    FilterVariant(Filter f) : filter(f) {} // NOLINT: implicit, most pipelines vary by filter alone
+    FilterVariant(Filter f, Reconstruction m) : filter(f), magnify(m) {}
+    bool operator==(const FilterVariant&) const = default;
+};
+inline FilterVariant filter_variant(const SamplerOptions& options) { return {options.filter, options.magnify}; }
+
 struct ShaderCode {
     const uint32_t* words;
     size_t bytes;
@@ -16,7 +27,7 @@ struct ShaderCode {
 
 // Destroyed by `cleanup`.
 VkPipeline create_compute_pipeline(const VulkanContext& context, ShaderCode code, VkPipelineLayout layout,
-                                   Filter filter, Cleanup& cleanup);
+                                   FilterVariant filter, Cleanup& cleanup);
 
 // A triangle-list pipeline for dynamic rendering into one colour attachment of `color_format`, with a
 // fixed viewport; the filter specialises the fragment stage.
@@ -30,6 +41,6 @@ struct GraphicsPipelineDesc {
 };
 // Destroyed by `cleanup`.
 VkPipeline create_graphics_pipeline(const VulkanContext& context, const GraphicsPipelineDesc& desc,
-                                    VkPipelineLayout layout, Filter filter, Cleanup& cleanup);
+                                    VkPipelineLayout layout, FilterVariant filter, Cleanup& cleanup);
 
 } // namespace tf

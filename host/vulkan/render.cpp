@@ -69,9 +69,9 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
         r.vertices = create_mesh_vertices(context, scene, cleanup);
     }
     r.pass = create_pass(context, texture, options, stages, push_stages, buffers, cleanup);
-    r.pipeline = cache ? cached_render_pipeline(context, *cache, r.kind, r.pass.pipeline_layout, options.filter, r.width,
+    r.pipeline = cache ? cached_render_pipeline(context, *cache, r.kind, r.pass.pipeline_layout, filter_variant(options), r.width,
                                                 r.height, texture.format)
-                       : create_render_pipeline(context, r.kind, r.pass.pipeline_layout, options.filter, r.width,
+                       : create_render_pipeline(context, r.kind, r.pass.pipeline_layout, filter_variant(options), r.width,
                                                 r.height, cleanup, texture.format);
     return renderer;
 }

@@ -22,7 +22,7 @@ void check_render_kind(const VulkanContext& context, RenderKind kind)
 }
 
 VkPipeline create_render_pipeline(const VulkanContext& context, RenderKind kind, VkPipelineLayout layout,
-                                  Filter filter, uint32_t width, uint32_t height, Cleanup& cleanup,
+                                  FilterVariant filter, uint32_t width, uint32_t height, Cleanup& cleanup,
                                   TextureFormat format)
 {
     if (kind == RenderKind::compute)
@@ -55,7 +55,7 @@ VkPipeline create_render_pipeline(const VulkanContext& context, RenderKind kind,
 }
 
 VkPipeline cached_render_pipeline(const VulkanContext& context, RenderPipelineCache& cache, RenderKind kind,
-                                  VkPipelineLayout layout, Filter filter, uint32_t width, uint32_t height,
+                                  VkPipelineLayout layout, FilterVariant filter, uint32_t width, uint32_t height,
                                   TextureFormat format)
 {
     const bool integer = format_info(format).integer;

@@ -2,6 +2,7 @@
 // The three ways the harness draws a scene, each its own pipeline over the same pass (vulkan/pass.h).
 #include "core/filter.h"
 #include "core/texture_format.h"
+#include "vulkan/pipeline.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
 #include <vector>
@@ -20,7 +21,7 @@ void check_render_kind(const VulkanContext& context, RenderKind kind);
 // The pipeline for `kind` drawing width x height pixels, specialised to `filter`, built for a texture of
 // `format` (integer formats: the HARNESS_RESOURCE_UINT shaders); destroyed by `cleanup`.
 VkPipeline create_render_pipeline(const VulkanContext& context, RenderKind kind, VkPipelineLayout layout,
-                                  Filter filter, uint32_t width, uint32_t height, Cleanup& cleanup,
+                                  FilterVariant filter, uint32_t width, uint32_t height, Cleanup& cleanup,
                                   TextureFormat format = TextureFormat::rgba32f);
 
 // Render pipelines kept for reuse by later renderers of one command (golden renders ~120 cases with ~30
@@ -31,7 +32,7 @@ VkPipeline create_render_pipeline(const VulkanContext& context, RenderKind kind,
 struct RenderPipelineCache {
     struct Entry {
         RenderKind kind;
-        Filter filter;
+        FilterVariant filter;
         uint32_t width, height;
         bool integer; // the HARNESS_RESOURCE_UINT shaders
         VkPipeline pipeline;
@@ -41,7 +42,7 @@ struct RenderPipelineCache {
 };
 // create_render_pipeline through `cache`: an entry made earlier for the same key, else a new one kept there.
 VkPipeline cached_render_pipeline(const VulkanContext& context, RenderPipelineCache& cache, RenderKind kind,
-                                  VkPipelineLayout layout, Filter filter, uint32_t width, uint32_t height,
+                                  VkPipelineLayout layout, FilterVariant filter, uint32_t width, uint32_t height,
                                   TextureFormat format);
 
 } // namespace tf

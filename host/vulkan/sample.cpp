@@ -76,7 +76,7 @@ std::vector<glm::vec4> run_sample_pass(const VulkanContext& context, const std::
                                  {HARNESS_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, output.buffer},
                                  {HARNESS_BINDING_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counts.buffer}},
                                 cleanup);
-    const VkPipeline pipeline = create_compute_pipeline(context, code, pass.pipeline_layout, options.filter, cleanup);
+    const VkPipeline pipeline = create_compute_pipeline(context, code, pass.pipeline_layout, filter_variant(options), cleanup);
     PushConstants push = make_push_constants(options, count, glm::vec4(0.0f), glm::vec4(0.0f), HARNESS_GRADIENTS_FINE);
     adjust_push(push);
     submit_and_wait(context, [&](VkCommandBuffer cb) {

@@ -29,7 +29,7 @@ void check_resource_options(const SamplerOptions& options, const ResourceOptions
 bool uses_hardware_lookups(const SamplerOptions& options)
 {
     return is_hardware(options.filter) ||
-           (options.taps == Taps::hardware && (options.filter == Filter::aniso || options.filter == Filter::ewa));
+           (options.taps == Taps::hardware && takes_taps(options.filter));
 }
 
 void check_resource_device(const VulkanContext& context, const SamplerOptions& options,

@@ -23,6 +23,8 @@
 #define HARNESS_FILTER_SAT_ASSEMBLY 13
 #define HARNESS_FILTER_GROUND_TRUTH 14 // render only: supersampled integral of the level-0 texture
 #define HARNESS_FILTER_NONE 15         // render only: no texture (the benchmark's baseline)
+#define HARNESS_FILTER_BSPLINE 16      // level 0, cubic B-spline (bicubic.glsl; --taps manual|hardware)
+#define HARNESS_FILTER_CATMULL_ROM 17  // level 0, Catmull-Rom
 
 // Sampler options passed straight to the includes: tf::Wrap, tf::AnisoShape, tf::Taps. They must equal
 // the includes' TF_WRAP_*, TF_ANISO_*, TF_TAPS_* (filter_select.glsl stops the build if not).
@@ -33,6 +35,11 @@
 #define HARNESS_ANISO_FELINE 1
 #define HARNESS_TAPS_MANUAL 0
 #define HARNESS_TAPS_HARDWARE 1
+// trilinear, aniso, ewa: level 0's reconstruction (tf::Reconstruction, --magnify; the includes' TF_MAGNIFY,
+// a specialization constant here: HARNESS_SPEC_MAGNIFY), equal to TF_RECONSTRUCT_*.
+#define HARNESS_RECONSTRUCT_BILINEAR 0
+#define HARNESS_RECONSTRUCT_BSPLINE 1
+#define HARNESS_RECONSTRUCT_CATMULL_ROM 2
 
 // Ground truth's pixel filters (tf::PixelFilter) and its stratified grid's largest side.
 #define HARNESS_PIXEL_FILTER_BOX 0
@@ -148,6 +155,7 @@
 #define HARNESS_SAMPLE_IN_QUADS(filter) ((filter) >= HARNESS_FILTER_HW_NEAREST && (filter) <= HARNESS_FILTER_HW_ANISO)
 
 #define HARNESS_SPEC_FILTER 0 // specialization constant id of the filter (HARNESS_FILTER_*)
+#define HARNESS_SPEC_MAGNIFY 1 // specialization constant id of level 0's reconstruction (HARNESS_RECONSTRUCT_*)
 
 // GPU builds (build_mip.comp.glsl, build_sat.comp.glsl): their own descriptor sets and push constants.
 #define HARNESS_MIP_MAX_LEVELS 15  // 16384 a side: 1 + log2(16384) levels, one storage view each

@@ -33,6 +33,8 @@ uint hwLookupCount = 0u;
 #extension GL_EXT_nonuniform_qualifier : require
 #define TF_NONUNIFORM nonuniformEXT // every image instruction in the includes: the index is divergent
 #endif
+#include "push_constants.glsl"    // before the includes: TF_MAGNIFY reads MAGNIFY_ID
+#define TF_MAGNIFY MAGNIFY_ID
 #include "texfilter/texfilter.glsl"
 #include "texfilter/debug.glsl"
 
@@ -46,6 +48,10 @@ uint hwLookupCount = 0u;
 #endif
 #if HARNESS_TAPS_MANUAL != TF_TAPS_MANUAL || HARNESS_TAPS_HARDWARE != TF_TAPS_HARDWARE
 #error "config.h: HARNESS_TAPS_* must equal texfilter's TF_TAPS_*"
+#endif
+#if HARNESS_RECONSTRUCT_BILINEAR != TF_RECONSTRUCT_BILINEAR || HARNESS_RECONSTRUCT_BSPLINE != TF_RECONSTRUCT_BSPLINE || \
+    HARNESS_RECONSTRUCT_CATMULL_ROM != TF_RECONSTRUCT_CATMULL_ROM
+#error "config.h: HARNESS_RECONSTRUCT_* must equal texfilter's TF_RECONSTRUCT_*"
 #endif
 
 // The texture as HARNESS_RESOURCE binds it (config.h), and how harness_filter passes it to the includes:
@@ -145,8 +151,6 @@ layout(set = 0, binding = HARNESS_BINDING_SAMPLER) uniform samplerShadow u_sampl
 #error "HARNESS_RESOURCE: unknown resource kind"
 #endif
 
-#include "push_constants.glsl"
-
 vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
 {
     tf_Sampler s = tf_Sampler(pc.wrapMode, pc.lodBias, pc.lodMin, pc.lodMax);
@@ -165,9 +169,16 @@ vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
     case HARNESS_FILTER_EWA:
         return hardwareTaps ? tf_ewa_hw(HARNESS_TEX_HW, uv HARNESS_X_HW, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso)
                             : tf_ewa(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso);
+    case HARNESS_FILTER_BSPLINE:
+        return hardwareTaps ? tf_bspline_hw(HARNESS_TEX_HW, uv HARNESS_X_HW, s) : tf_bspline(HARNESS_TEX, uv HARNESS_X, s);
+    case HARNESS_FILTER_CATMULL_ROM:
+        return hardwareTaps ? tf_catmull_rom_hw(HARNESS_TEX_HW, uv HARNESS_X_HW, s)
+                            : tf_catmull_rom(HARNESS_TEX, uv HARNESS_X, s);
 #else // integer data: no sampler can filter it, so manual taps only (the host refuses --taps hardware)
     case HARNESS_FILTER_ANISO: return tf_aniso(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.probes, pc.anisoShape);
     case HARNESS_FILTER_EWA: return tf_ewa(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso);
+    case HARNESS_FILTER_BSPLINE: return tf_bspline(HARNESS_TEX, uv HARNESS_X, s);
+    case HARNESS_FILTER_CATMULL_ROM: return tf_catmull_rom(HARNESS_TEX, uv HARNESS_X, s);
 #endif
 #ifdef HARNESS_SAT_X
     case HARNESS_FILTER_SAT:

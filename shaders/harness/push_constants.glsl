@@ -9,6 +9,9 @@
 // switch every family's texture calls stayed in the shader, and lavapipe generated its anisotropic
 // sampling code for all of them (hw-aniso renders ran ~30x slower).
 layout(constant_id = HARNESS_SPEC_FILTER) const int FILTER_ID = 0;
+// trilinear, aniso, ewa: level 0's reconstruction, the includes' TF_MAGNIFY (filter_select.glsl); a constant,
+// so a pipeline that does not magnify with a cubic has none of its code.
+layout(constant_id = HARNESS_SPEC_MAGNIFY) const int MAGNIFY_ID = HARNESS_RECONSTRUCT_BILINEAR;
 
 // tf::PushConstants (host/scene/shader_interface.h): both sides take the offsets from config.h.
 layout(push_constant) uniform PushConstants {

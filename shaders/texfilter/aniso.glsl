@@ -15,6 +15,8 @@
 //          [1, TF_ANISO_MAX_PROBES = 16]; shape TF_ANISO_GPU or TF_ANISO_FELINE (any other value: TF_ANISO_GPU).
 //          TF_ANISO_RATIO_SLACK: define before including (default 1.0 / 64.0): the slack s_r in N below,
 //          which keeps near-isotropic footprints at one probe instead of flipping between 1 and 2.
+//          TF_MAGNIFY (common.glsl): probes reconstruct level 0 with a cubic (bicubic.glsl): 16 fetches, or
+//          4 (B-spline) / 9 (Catmull-Rom) taps plus one of level 1 for the _hw form's probes with lod < 1.
 //          J = [dUVdx dUVdy] in level-0 texels (DESIGN.md §3).
 //   TF_ANISO_GPU (the Vulkan / EXT_texture_filter_anisotropic model): Px = |J e_x|, Py = |J e_y|,
 //          N = min(ceil(Pmax/Pmin − s_r), N_max), λ = log2(Pmax/N) + lodBias, then lodMin/lodMax and the
@@ -50,7 +52,7 @@
 #ifndef TF_ANISO_GLSL
 #define TF_ANISO_GLSL
 
-#include "bilinear.glsl"
+#include "bicubic.glsl" // tfi_mip_level, tfi_magnified_level0: TF_MAGNIFY on level 0
 #include "lod.glsl"
 
 #define TF_ANISO_GPU 0
@@ -142,7 +144,7 @@ vec4 tfi_aniso_probe(TFI_T, vec2 uv TFI_X, float lod, int wrapMode)
 #else
     float f;
     int lo = tfi_split_lod(lod, f);
-#define TFI_PROBE_LEVEL(level) tf_bilinear_level(TFI_A, uv TFI_XA, level, wrapMode)
+#define TFI_PROBE_LEVEL(level) tfi_mip_level(TFI_A, uv TFI_XA, level, wrapMode)
     return TFI_BLEND_LEVELS(TFI_PROBE_LEVEL, lo, f);
 #undef TFI_PROBE_LEVEL
 #endif
@@ -150,10 +152,20 @@ vec4 tfi_aniso_probe(TFI_T, vec2 uv TFI_X, float lod, int wrapMode)
 
 // One trilinear probe through the hardware sampler, at uv moved by whole periods as the manual form's
 // bilinear lookups do (a sampler given |uv| >= ~1e37 returns NaN on lavapipe: uv·size overflows).
+// With TF_MAGNIFY, a probe that reads level 0 (lod < 1) takes TF_MAGNIFY's taps there and one bilinear tap
+// of level 1, blended as trilinear blends them.
 vec4 tfi_aniso_probe_hw(TFI_T, vec2 uv TFI_X, float lod, int wrapMode)
 {
+    uv = tf_reduce_uv(uv, wrapMode);
+    if (TF_MAGNIFY != TF_RECONSTRUCT_BILINEAR && lod < 1.0) {
+        vec4 fine = tfi_magnified_level0(TFI_A, uv TFI_XA, wrapMode, true);
+        if (lod <= 0.0)
+            return fine;
+        TF_COUNT_HW_LOOKUPS(1);
+        return mix(fine, TFI_LOOKUP(uv, 1.0), lod);
+    }
     TF_COUNT_HW_LOOKUPS(1);
-    return TFI_LOOKUP(tf_reduce_uv(uv, wrapMode), lod);
+    return TFI_LOOKUP(uv, lod);
 }
 
 vec4 tfi_aniso_filter(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape,

@@ -27,6 +27,9 @@
 //                                  GL_EXT_nonuniform_qualifier) when the texture you pass is indexed
 //                                  divergently, e.g. tf_trilinear(texs[nonuniformEXT(i)], ...): every image
 //                                  instruction inside the includes then takes a NonUniform operand. Default: none.
+//          TF_MAGNIFY              how trilinear, aniso and ewa reconstruct level 0 (bicubic.glsl):
+//                                  TF_RECONSTRUCT_BILINEAR (default), _BSPLINE or _CATMULL_ROM; an int
+//                                  expression (e.g. a specialization constant) chooses at run time.
 //          TF_RESOURCES            the resource kinds to instantiate (compile time; default: all), a mask of
 //                                  TF_RESOURCE_SAMPLER_2D 1 (sampler2D), TF_RESOURCE_TEXTURE_2D 2 (texture2D, and
 //                                  texture2D + sampler for _hw), TF_RESOURCE_SAMPLER_2D_ARRAY 4, TF_RESOURCE_
@@ -82,6 +85,7 @@
 #define TFI_FAMILY_SAT 9
 #define TFI_FAMILY_CUBE 10
 #define TFI_FAMILY_LATLONG 11
+#define TFI_FAMILY_BICUBIC 12
 
 // Cost hooks: define these before the first include to count work (the harness's `sample --stats`
 // does); by default they vanish. n texels read with texelFetch / n hardware filtered lookups.
@@ -96,6 +100,18 @@
 // the sampler bound with the texture (which must then filter linearly with the same wrap mode).
 #define TF_TAPS_MANUAL 0
 #define TF_TAPS_HARDWARE 1
+
+// Reconstruction of one level from its texels (bicubic.glsl): bilinear (Vulkan LINEAR), the cubic B-spline
+// (smooth, positive weights, blurs a little) or Catmull-Rom (interpolating, sharper, rings a little).
+#define TF_RECONSTRUCT_BILINEAR 0
+#define TF_RECONSTRUCT_BSPLINE 1
+#define TF_RECONSTRUCT_CATMULL_ROM 2
+// How trilinear, aniso and ewa reconstruct level 0, where they magnify: TF_RECONSTRUCT_* (bicubic.glsl).
+// A constant by default, so the cubic code is compiled away; any int expression the shader can read at
+// the includes' point of use (a specialization constant, a uniform) selects it at run time.
+#ifndef TF_MAGNIFY
+#define TF_MAGNIFY TF_RECONSTRUCT_BILINEAR
+#endif
 
 #define TF_WRAP_REPEAT 0
 #define TF_WRAP_CLAMP 1  // clamp to edge

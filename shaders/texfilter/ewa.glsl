@@ -12,7 +12,9 @@
 //          comparison), e.g.
 //          tf_ewa(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha,
 //                 float maxAniso).
-// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as everywhere (common.glsl, lod.glsl).
+// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as everywhere (common.glsl, lod.glsl). TF_MAGNIFY
+//   (common.glsl, bicubic.glsl): where trilinear would read level 0 (its λ < 1), the result moves towards
+//   TF_MAGNIFY's cubic of level 0 by level 0's trilinear share, 1 − clamp(λ, 0, 1) (the cubic alone at λ <= 0).
 //          alpha (2, as pbrt, is the usual choice): weight exp(-alpha r²) - exp(-alpha R²), clamped to
 //            [0, 64]; NaN or negative -> 0 (then 1 - r²/R²). Smaller alpha = a wider Gaussian = blurrier.
 //          maxAniso (e.g. 16): largest major/minor axis ratio; a thinner ellipse has its minor axis
@@ -85,6 +87,7 @@
 #endif
 
 #include "lod.glsl"
+#include "bicubic.glsl" // tfi_magnified_level0: TF_MAGNIFY
 
 // Widens the row/column spans a little so that the r² test, not rounding in the span, decides.
 const float TFI_EWA_SPAN_MARGIN = 1.0 / 256.0;
@@ -404,13 +407,20 @@ vec4 tfi_ewa_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
         return vec4(0.0);
     uv = tf_reduce_uv(uv, s.wrap);
     float a = alpha >= 0.0 ? min(alpha, 64.0) : 0.0;
+    float cubicShare = 0.0; // TF_MAGNIFY: level 0's share in trilinear, which the cubic takes
+    if (TF_MAGNIFY != TF_RECONSTRUCT_BILINEAR)
+        cubicShare = 1.0 - clamp(tf_lod(TFI_A, dUVdx, dUVdy, s), 0.0, 1.0);
+    vec4 cubic = cubicShare > 0.0 ? tfi_magnified_level0(TFI_A, uv TFI_XA, s.wrap, hardware) : vec4(0.0);
+    if (cubicShare == 1.0)
+        return cubic;
     float lambda;
     tfi_EwaShape shape = tfi_ewa_shape(TFI_A, dUVdx, dUVdy, s, maxAniso, lambda);
     float f;
     int lo = tfi_split_lod(lambda, f);
 #define TFI_EWA_LEVEL(level) tfi_ewa_on_level(TFI_A, uv TFI_XA, level, s.wrap, shape, a, hardware)
-    return TFI_BLEND_LEVELS(TFI_EWA_LEVEL, lo, f);
+    vec4 ewa = TFI_BLEND_LEVELS(TFI_EWA_LEVEL, lo, f);
 #undef TFI_EWA_LEVEL
+    return cubicShare > 0.0 ? mix(ewa, cubic, cubicShare) : ewa;
 }
 
 #if TFI_MANUAL

@@ -26,6 +26,8 @@
 #include "cube.glsl"
 #elif TFI_FAMILY == TFI_FAMILY_LATLONG
 #include "latlong.glsl"
+#elif TFI_FAMILY == TFI_FAMILY_BICUBIC
+#include "bicubic.glsl"
 #else
 #error "texfilter/family.glsl: unknown TFI_FAMILY"
 #endif

@@ -1,5 +1,5 @@
 // texfilter/texfilter.glsl — umbrella include: every texfilter include at once (version, common,
-// derivatives, lod, nearest, bilinear, trilinear, brilinear, aniso, ewa, sat, cube, latlong).
+// derivatives, lod, nearest, bilinear, bicubic, trilinear, brilinear, aniso, ewa, sat, cube, latlong).
 //
 // Use:     #extension GL_GOOGLE_include_directive : require
 //          #include "texfilter/texfilter.glsl"   // compile with -I<dir holding texfilter/>
@@ -13,14 +13,14 @@
 //          _hw, sampler2DShadow / texture2D + samplerShadow with `float dref`; bindless arrays indexed with
 //          nonuniformEXT once TF_NONUNIFORM is defined. tf_sat's tables: usampler2D, utexture2D, and arrays.
 // Options: the individual includes', defined before this include:
-//          TF_COUNT_FETCHES(n), TF_COUNT_HW_LOOKUPS(n), TF_NONUNIFORM, TF_RESOURCES (common.glsl),
+//          TF_COUNT_FETCHES(n), TF_COUNT_HW_LOOKUPS(n), TF_NONUNIFORM, TF_RESOURCES, TF_MAGNIFY (common.glsl),
 //          TF_COMPUTE_QUADS (derivatives.glsl), TF_ANISO_RATIO_SLACK (aniso.glsl), TF_EWA_MAX_TEXELS (ewa.glsl);
 //          per call: tf_Sampler (and tf_Compare for depth maps).
 // Needs:   what each called filter needs: a sampler2D with a full MIP chain for every mip filter (bound
 //          with a linear sampler of the same wrap mode for the _hw forms), the SAT's two usampler2D for
 //          tf_sat / tf_sat_assembly. Nothing is declared here: no bindings, no push constants.
-// Cost:    texel fetches a lookup: nearest 1, bilinear 4, trilinear 8 (4 on a level), brilinear 4 or 8,
-//          aniso 8 a probe (N <= 16), ewa the texels in the ellipse on 2 levels (capped), sat 32 (<= 128)
+// Cost:    texel fetches a lookup: nearest 1, bilinear 4, bspline / catmull-rom 16 (_hw: 4 / 9 taps),
+//          trilinear 8 (4 on a level), brilinear 4 or 8, aniso 8 a probe (N <= 16), ewa the texels in the ellipse on 2 levels (capped), sat 32 (<= 128)
 //          (docs/FILTERS.md). Unused functions cost nothing: compilers drop them.
 // Example: vec4 c = tf_trilinear(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT));
 #ifndef TF_TEXFILTER_GLSL
@@ -31,6 +31,7 @@
 #include "lod.glsl"
 #include "nearest.glsl"
 #include "bilinear.glsl"
+#include "bicubic.glsl"
 #include "trilinear.glsl"
 #include "brilinear.glsl"
 #include "aniso.glsl"

@@ -9,7 +9,8 @@
 //          tf_trilinear(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s).
 // Math:    λ = tf_lod(...) (lod.glsl); bilinear lookups on levels floor(λ) and floor(λ)+1 blended by frac(λ),
 //          in full float (hardware samplers round the blend to mipmapPrecisionBits, often 4 or 8).
-// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax (common.glsl, lod.glsl). No defines.
+// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax (common.glsl, lod.glsl). TF_MAGNIFY (common.glsl): level 0
+//          reconstructed by a cubic instead of bilinearly (bicubic.glsl; 16 fetches on level 0).
 // Needs:   tex: any sampler2D with a full MIP chain (texelFetch only).
 // Cost:    8 texel fetches; 4 where λ sits exactly on a level or is clamped to the last one
 //          (plane scene: 6.5 on average, docs/FILTERS.md).
@@ -19,7 +20,7 @@
 #ifndef TF_TRILINEAR_GLSL
 #define TF_TRILINEAR_GLSL
 
-#include "bilinear.glsl"
+#include "bicubic.glsl" // tfi_mip_level: TF_MAGNIFY on level 0
 #include "lod.glsl"
 
 #define TFI_FAMILY TFI_FAMILY_TRILINEAR
@@ -33,7 +34,7 @@ vec4 tf_trilinear(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
 {
     float f;
     int lo = tfi_split_lod(tf_lod(TFI_A, dUVdx, dUVdy, s), f);
-#define TFI_TRILINEAR_LEVEL(level) tf_bilinear_level(TFI_A, uv TFI_XA, level, s.wrap)
+#define TFI_TRILINEAR_LEVEL(level) tfi_mip_level(TFI_A, uv TFI_XA, level, s.wrap)
     return TFI_BLEND_LEVELS(TFI_TRILINEAR_LEVEL, lo, f);
 #undef TFI_TRILINEAR_LEVEL
 }
