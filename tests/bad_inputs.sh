@@ -347,6 +347,17 @@ ground_truth_and_bench_errors() {
     expect_error "render --spp 0" --spp out.png -- "${truth[@]}" --spp 0 -o out.png
     expect_error "render --spp 8192 (over 4096)" --spp out.png -- "${truth[@]}" --spp 8192 -o out.png
     expect_error "render --pixel-filter bogus" bogus out.png -- "${truth[@]}" --pixel-filter bogus -o out.png
+    # --truth analytic|texels: only ground-truth takes it, and only checker, zoneplate and grid have a function.
+    expect_error "render --truth bogus" "unknown truth 'bogus'" out.png -- "${truth[@]}" --truth bogus -o out.png
+    expect_error "render --truth analytic --texture noise" "texture 'noise' has no analytic definition" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture noise --filter ground-truth --truth analytic "${REF[@]}" -o out.png
+    expect_error "render --truth without --filter ground-truth" "--truth applies to --filter ground-truth only" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter trilinear --truth analytic "${REF[@]}" -o out.png
+    expect_error "render --truth analytic --scene skybox" "no analytic definition" out.png -- \
+        "$TEXFILTER" render --scene skybox --texture checker --texture-size 16 --filter ground-truth --truth analytic \
+        "${REF[@]}" -o out.png
+    expect_error "view --truth analytic" "not available in the viewer" - -- \
+        "$TEXFILTER" view --texture checker --filter ground-truth --truth analytic
     expect_error "sample --filter ground-truth" ground-truth out.csv -- \
         "$TEXFILTER" sample --texture checker --filter ground-truth --lookups good.csv --backend reference -o out.csv
     local bench=("$TEXFILTER" bench --quick --scenes zoom)

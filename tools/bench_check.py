@@ -8,6 +8,9 @@ Checks bench.json (schema 1) against its own config: one result per (scene, labe
 config.scenes x config.labels (the environment scenes skybox and reflect: but brilinear, sat and
 sat-assembly), every numeric field present and finite with sane ranges, every
 image and truth PFM present with the configured size, a baseline per scene and well-formed goals.
+The analytic truth (config.analytic_truth: the texture is checker, zoneplate or grid): on every 2D scene
+a truth.SCENE.analytic image and finite error.analytic / flicker.analytic in each result; null (or absent)
+on the environment scenes and wherever config.analytic_truth is false.
 --require-flip also wants result.flip.box/gaussian in [0,1] (added by tools/bench_report.py).
 Prints "bench_check: N results complete and finite" and exits 0, or prints every problem found
 (one per line) and exits 1. Standard library only, so it runs without tools/python_env.sh.
@@ -25,6 +28,12 @@ TRUTHS = ("box", "gaussian")
 ENVIRONMENT_SCENES = {"skybox", "reflect"}
 NO_ENVIRONMENT_FORM = {"brilinear", "sat", "sat-assembly", "bspline", "bspline-hw", "catmull-rom", "catmull-rom-hw",
                        "trilinear-catmull-rom", "ewa-bspline"}
+ANALYTIC = "analytic"  # the box pixel over the procedural texture's analytic definition
+
+
+def has_analytic(config, scene):
+    """Where the analytic truth must exist: a texture with a definition, on a 2D scene."""
+    return config.get("analytic_truth") is True and scene not in ENVIRONMENT_SCENES
 
 
 def expected(scene, label):
@@ -165,15 +174,39 @@ def check_sat_sweep(bench, labels, c):
 
 
 def check_scene_data(bench, scenes, c):
+    config = bench.get("config") if isinstance(bench.get("config"), dict) else {}
+    if not isinstance(config.get("analytic_truth"), bool):
+        c.problem("config", f"config.analytic_truth: expected true or false (got {config.get('analytic_truth')!r})")
     for scene in scenes:
         c.timing(bench, f"baseline_ms.{scene}", f"{scene}/baseline")
         for kind in TRUTHS:
             paths = c.get(bench, f"truth.{scene}.{kind}", f"{scene}/truth")
             if paths is not MISSING:
                 c.images(paths, f"{scene}/truth", f"truth.{scene}.{kind}")
+        per_scene = bench.get("truth", {}).get(scene) if isinstance(bench.get("truth"), dict) else None
+        analytic = per_scene.get(ANALYTIC) if isinstance(per_scene, dict) else None
+        if has_analytic(config, scene):
+            paths = c.get(bench, f"truth.{scene}.{ANALYTIC}", f"{scene}/truth")
+            if paths is not MISSING:
+                c.images(paths, f"{scene}/truth", f"truth.{scene}.{ANALYTIC}")
+        elif analytic is not None:
+            c.problem(f"{scene}/truth", f"truth.{scene}.{ANALYTIC}: expected none here (got {analytic!r})")
 
 
-def check_result(result, c, require_flip):
+def check_analytic(result, c, where, wanted):
+    """error.analytic {rmse, psnr} and flicker.analytic: finite where wanted, else null or absent."""
+    if wanted:
+        c.number(result, f"error.{ANALYTIC}.rmse", where, minimum=0)
+        c.number(result, f"error.{ANALYTIC}.psnr", where)
+        c.number(result, f"flicker.{ANALYTIC}", where, minimum=0)
+        return
+    for group in ("error", "flicker"):
+        value = result.get(group, {}).get(ANALYTIC) if isinstance(result.get(group), dict) else None
+        if value is not None:
+            c.problem(where, f"{group}.{ANALYTIC}: expected null, no analytic truth here (got {value!r})")
+
+
+def check_result(result, c, require_flip, config):
     where = f"{result.get('scene', '?')}/{result.get('label', '?')}"
     for key in ("filter", "args"):
         if not isinstance(result.get(key), str):
@@ -191,6 +224,7 @@ def check_result(result, c, require_flip):
         c.number(result, f"flicker.{kind}", where, minimum=0)
         if require_flip:
             c.number(result, f"flip.{kind}", where, minimum=0, maximum=1)
+    check_analytic(result, c, where, has_analytic(config, result.get("scene")))
     paths = c.get(result, "images", where)
     if paths is not MISSING:
         c.images(paths, where, "images")
@@ -214,7 +248,7 @@ def check_results(bench, scenes, labels, c, require_flip):
         elif key[0] not in scenes or key[1] not in labels or not expected(key[0], key[1]):
             c.problem(f"{key[0]}/{key[1]}", "scene/label pair not in config.scenes x config.labels")
         seen.add(key)
-        check_result(result, c, require_flip)
+        check_result(result, c, require_flip, bench.get("config") if isinstance(bench.get("config"), dict) else {})
     for scene in scenes:
         for label in labels:
             if (scene, label) not in seen and expected(scene, label):

@@ -1,5 +1,7 @@
 #include "bench/bench.h"
 #include "bench/env_bench.h"
+#include "core/analytic_texture.h"
+#include "vulkan/render_pipeline.h"
 #include "texture/error.h"
 #include "vulkan/render.h"
 #include "io/pfm.h"
@@ -52,23 +54,44 @@ std::vector<Image> render_path(GpuRenderer& renderer, const SceneParams& scene, 
     return frames;
 }
 
-std::vector<Image> truth_path(const VulkanContext& context, const GpuTexture& texture, const MipChain& chain,
-                              const BenchConfig& config, const SceneParams& scene, PixelFilter pixel_filter)
+// A scene's truths along the camera path: the box and Gaussian pixels over the bilinear texels, and, where
+// the texture has an analytic definition, the box pixel over that function (else empty). On the device
+// the three renderers share one pipeline: only their push constants differ.
+struct TruthPaths {
+    std::vector<Image> box, gaussian, analytic;
+};
+
+TruthPaths truth_paths(const VulkanContext& context, const GpuTexture& texture, const MipChain& chain,
+                       const BenchConfig& config, const SceneParams& scene)
 {
-    SamplerOptions options;
-    options.filter = Filter::ground_truth;
-    options.pixel_filter = pixel_filter;
-    options.truth_side = config.truth_side;
-    int texture_width = chain.levels[0].width;
-    if (config.truth_on_cpu) {
-        std::vector<Image> frames;
-        for (int t = 0; t < config.flicker_frames; ++t)
-            frames.push_back(reference_render(scene_at_frame(scene, t, texture_width), chain, options, RenderOptions{}));
-        return frames;
-    }
+    auto truth_options = [&](PixelFilter pixel_filter, Truth truth) {
+        SamplerOptions options;
+        options.filter = Filter::ground_truth;
+        options.pixel_filter = pixel_filter;
+        options.truth_side = config.truth_side;
+        options.truth = truth;
+        resolve_analytic_truth(options, config.texture.name_or_path);
+        return options;
+    };
+    const int texture_width = chain.levels[0].width;
     RenderOptions render; // ray-cast in a fragment shader; the mesh through its ray-cast twin
-    auto renderer = create_renderer(context, texture, scene, options, render);
-    return render_path(*renderer, scene, config.flicker_frames, texture_width);
+    RenderPipelineCache cache;
+    auto path = [&](const SamplerOptions& options) {
+        if (config.truth_on_cpu) {
+            std::vector<Image> frames;
+            for (int t = 0; t < config.flicker_frames; ++t)
+                frames.push_back(reference_render(scene_at_frame(scene, t, texture_width), chain, options, RenderOptions{}));
+            return frames;
+        }
+        auto renderer = create_renderer(context, texture, scene, options, render, &cache);
+        return render_path(*renderer, scene, config.flicker_frames, texture_width);
+    };
+    TruthPaths paths;
+    paths.box = path(truth_options(PixelFilter::box, Truth::texels));
+    paths.gaussian = path(truth_options(PixelFilter::gaussian, Truth::texels));
+    if (has_analytic_definition(config.texture.name_or_path))
+        paths.analytic = path(truth_options(PixelFilter::box, Truth::analytic));
+    return paths;
 }
 
 // Texel fetches and hardware lookups a covered pixel, counted by the sample harness on the scene's own lookups.
@@ -91,10 +114,12 @@ void count_fetches(const VulkanContext& context, const GpuTexture& texture, cons
 // One line a result as it finishes (the JSON has everything): reads are texel fetches plus hardware lookups.
 void print_result(const BenchResult& r)
 {
-    std::printf("%-9s %-13s %8.3f ms  x%5.2f baseline  %6.1f reads/px  PSNR box %5.2f gauss %5.2f  flicker %.4f\n",
-                to_string(r.scene).c_str(), r.filter.label.c_str(), r.time.median, r.vs_baseline,
-                r.fetches_per_pixel + r.hw_lookups_per_pixel, psnr_from_rmse(r.rmse_box), psnr_from_rmse(r.rmse_gaussian),
-                r.flicker_gaussian);
+    std::printf("%-9s %-13s %8.3f ms  x%5.2f baseline  %6.1f reads/px  PSNR box %5.2f gauss %5.2f", to_string(r.scene).c_str(),
+                r.filter.label.c_str(), r.time.median, r.vs_baseline, r.fetches_per_pixel + r.hw_lookups_per_pixel,
+                psnr_from_rmse(r.rmse_box), psnr_from_rmse(r.rmse_gaussian));
+    if (std::isfinite(r.rmse_analytic))
+        std::printf(" analytic %5.2f", psnr_from_rmse(r.rmse_analytic));
+    std::printf("  flicker %.4f\n", r.flicker_gaussian);
     std::fflush(stdout);
 }
 
@@ -167,12 +192,17 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
             RenderOptions render = render_options_for(kind, config.stage);
             fs::create_directories(fs::path(directory) / "images" / to_string(kind));
 
-            std::vector<Image> truth_box = truth_path(context, texture, chain, config, scene, PixelFilter::box);
-            std::vector<Image> truth_gaussian = truth_path(context, texture, chain, config, scene, PixelFilter::gaussian);
+            const TruthPaths truths = truth_paths(context, texture, chain, config, scene);
+            const std::vector<Image>& truth_box = truths.box;
+            const std::vector<Image>& truth_gaussian = truths.gaussian;
             run.truth_box[kind] = image_path(kind, "truth-box");
             run.truth_gaussian[kind] = image_path(kind, "truth-gaussian");
             write_pfm((fs::path(directory) / run.truth_box[kind]).string(), truth_box[0]);
             write_pfm((fs::path(directory) / run.truth_gaussian[kind]).string(), truth_gaussian[0]);
+            if (!truths.analytic.empty()) {
+                run.truth_analytic[kind] = image_path(kind, "truth-analytic");
+                write_pfm((fs::path(directory) / run.truth_analytic[kind]).string(), truths.analytic[0]);
+            }
 
             SamplerOptions none;
             none.filter = Filter::none;
@@ -198,6 +228,10 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
                 r.rmse_gaussian = display_rmse(frames[0], truth_gaussian[0]);
                 r.flicker_box = display_flicker(frames, truth_box);
                 r.flicker_gaussian = display_flicker(frames, truth_gaussian);
+                if (!truths.analytic.empty()) {
+                    r.rmse_analytic = display_rmse(frames[0], truths.analytic[0]);
+                    r.flicker_analytic = display_flicker(frames, truths.analytic);
+                }
                 r.image = image_path(kind, filter.label);
                 write_pfm((fs::path(directory) / r.image).string(), frames[0]);
                 count_fetches(context, texture, lookups, filter.options, r);

@@ -1,8 +1,10 @@
 #pragma once
 // texfilter bench: every scene x filter configuration on one device. GPU time per frame (timestamps),
 // cost relative to hw-trilinear and to a no-texture baseline, texel fetches per pixel (counted by the
-// shader), error against two ground truths (box and Gaussian pixel filters) and temporal flicker along a
-// camera path. Writes bench.json, bench.csv and frame-0 images (PFM); tools/bench_report.py adds FLIP,
+// shader), error against two ground truths (box and Gaussian pixel filters) and, where the texture has an
+// analytic definition (checker, zoneplate, grid: core/analytic_texture.h), a third, the box pixel over that
+// function (which judges magnification: the other two integrate the bilinear texels), and temporal flicker
+// along a camera path. Writes bench.json, bench.csv and frame-0 images (PFM); tools/bench_report.py adds FLIP,
 // plots and an HTML page. The goals of docs/BENCHMARKS.md are checked and reported, never asserted.
 #include "bench/metrics.h"
 #include "core/filter.h"
@@ -10,6 +12,7 @@
 #include "scene/scene.h"
 #include "io/texture_source.h"
 #include "vulkan/context.h"
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -49,6 +52,9 @@ struct BenchResult {
     double fetches_per_pixel = 0, hw_lookups_per_pixel = 0;
     double rmse_box = 0, rmse_gaussian = 0;
     double flicker_box = 0, flicker_gaussian = 0;
+    // Against the analytic truth (box pixel over the texture's function): NaN (null in bench.json) where
+    // there is none (other textures, the environment scenes).
+    double rmse_analytic = NAN, flicker_analytic = NAN;
     std::string image; // frame 0, relative to the output directory
 };
 
@@ -69,6 +75,7 @@ struct BenchRun {
     int texture_width = 0, texture_height = 0; // level 0 of the texture benchmarked (procedural or file)
     std::map<SceneKind, TimeSummary> baseline;
     std::map<SceneKind, std::string> truth_box, truth_gaussian; // frame-0 images, relative paths
+    std::map<SceneKind, std::string> truth_analytic; // the 2D scenes, when the texture has an analytic definition
     std::vector<BenchResult> results;
     std::vector<SatSweep> sat_sweep;
     std::vector<BenchGoal> goals;

@@ -2,6 +2,7 @@
 // docs/BENCHMARKS.md), JSON through nlohmann-json. Non-finite numbers are written as null, so a reader sees them
 // rather than a parse error.
 #include "bench/bench.h"
+#include "core/analytic_texture.h"
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -37,6 +38,8 @@ Json config_json(const BenchRun& run)
             {"texture_height", run.texture_height},
             {"spp", c.truth_side * c.truth_side},
             {"truth_backend", c.truth_on_cpu ? "reference" : "vulkan"},
+            // The analytic truth (box pixel over checker's, zoneplate's or grid's function) on the 2D scenes.
+            {"analytic_truth", has_analytic_definition(c.texture.name_or_path)},
             {"warmup", c.warmup},
             {"frames", c.frames},
             {"flicker_frames", c.flicker_frames},
@@ -44,6 +47,14 @@ Json config_json(const BenchRun& run)
             {"camera_step_texels", Json::array({camera_step_texels.x, camera_step_texels.y})},
             {"scenes", scenes},
             {"labels", labels}};
+}
+
+// Against the analytic truth: null where the scene has none (NaN), like a non-finite number.
+Json analytic_error(const BenchResult& r)
+{
+    if (std::isnan(r.rmse_analytic))
+        return nullptr;
+    return {{"rmse", r.rmse_analytic}, {"psnr", psnr_from_rmse(r.rmse_analytic)}};
 }
 
 Json result_json(const BenchResult& r)
@@ -61,8 +72,9 @@ Json result_json(const BenchResult& r)
             {"hw_lookups_per_pixel", r.hw_lookups_per_pixel},
             {"error",
              {{"box", {{"rmse", r.rmse_box}, {"psnr", psnr_from_rmse(r.rmse_box)}}},
-              {"gaussian", {{"rmse", r.rmse_gaussian}, {"psnr", psnr_from_rmse(r.rmse_gaussian)}}}}},
-            {"flicker", {{"box", r.flicker_box}, {"gaussian", r.flicker_gaussian}}},
+              {"gaussian", {{"rmse", r.rmse_gaussian}, {"psnr", psnr_from_rmse(r.rmse_gaussian)}}},
+              {"analytic", analytic_error(r)}}},
+            {"flicker", {{"box", r.flicker_box}, {"gaussian", r.flicker_gaussian}, {"analytic", r.flicker_analytic}}},
             {"images", Json::array({r.image})}};
 }
 
@@ -85,9 +97,12 @@ std::string bench_json(const BenchRun& run)
     for (const auto& [scene, t] : run.baseline)
         baseline[to_string(scene)] = times(t);
     for (SceneKind scene : run.config.scenes)
-        if (run.truth_box.count(scene))
+        if (run.truth_box.count(scene)) {
             truth[to_string(scene)] = {{"box", Json::array({run.truth_box.at(scene)})},
                                        {"gaussian", Json::array({run.truth_gaussian.at(scene)})}};
+            if (run.truth_analytic.count(scene))
+                truth[to_string(scene)]["analytic"] = Json::array({run.truth_analytic.at(scene)});
+        }
     for (const BenchResult& r : run.results)
         results.push_back(result_json(r));
     for (const SatSweep& s : run.sat_sweep)
@@ -114,11 +129,12 @@ std::string bench_csv(const BenchRun& run)
 {
     std::string out = "scene,label,filter,hardware,time_min_ms,time_median_ms,time_max_ms,time_vs_hw_trilinear,"
                       "time_vs_baseline,fetches_per_pixel,hw_lookups_per_pixel,rmse_box,psnr_box,rmse_gaussian,"
-                      "psnr_gaussian,flicker_box,flicker_gaussian\n";
+                      "psnr_gaussian,flicker_box,flicker_gaussian,rmse_analytic,psnr_analytic,flicker_analytic\n";
     for (const BenchResult& r : run.results) {
         const double values[] = {r.time.min, r.time.median, r.time.max, r.vs_hw_trilinear, r.vs_baseline,
                                  r.fetches_per_pixel, r.hw_lookups_per_pixel, r.rmse_box, psnr_from_rmse(r.rmse_box),
-                                 r.rmse_gaussian, psnr_from_rmse(r.rmse_gaussian), r.flicker_box, r.flicker_gaussian};
+                                 r.rmse_gaussian, psnr_from_rmse(r.rmse_gaussian), r.flicker_box, r.flicker_gaussian,
+                                 r.rmse_analytic, psnr_from_rmse(r.rmse_analytic), r.flicker_analytic};
         out += to_string(r.scene) + "," + r.filter.label + "," + to_string(r.filter.options.filter) + "," +
                (is_hardware(r.filter.options.filter) ? "true" : "false");
         for (double v : values)

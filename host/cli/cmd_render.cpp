@@ -1,4 +1,5 @@
 #include "flags/cli_common.h"
+#include "core/analytic_texture.h"
 #include "cli/commands.h"
 #include "texture/error.h"
 #include "vulkan/backend.h"
@@ -91,10 +92,12 @@ int run_render(const std::vector<std::string>& argv)
     const bool environment = is_environment_scene(kind);
     if (environment) { // before any work
         check_environment_filter(options);
+        check_environment_truth(options);
         if (render.view != DebugView::color)
             throw Error("--view " + to_string(render.view) + " is not available on the environment scenes (skybox, "
                         "reflect): use --view color");
     }
+    resolve_analytic_truth(options, source.name_or_path); // --truth analytic: the texture's function, or refused
     check_format_filter(source.format, options); // integer data and hardware filtering, before any work
     std::string out = checked_output_path(args.require("-o"), {".png", ".exr", ".pfm"}, {source.name_or_path});
     if (render.view == DebugView::data && out.size() >= 4 && out.compare(out.size() - 4, 4, ".png") == 0)

@@ -1,4 +1,5 @@
 #include "cli/golden.h"
+#include "core/analytic_texture.h"
 #include "flags/cli_common.h"
 #include "texture/error.h"
 #include <cstdlib>
@@ -50,6 +51,9 @@ std::vector<GoldenCase> parse_manifest(std::istream& in, const std::string& path
             c.scene = parse_flag(args, "--scene", "", parse_scene);
             c.texture = texture_source_from(args);
             c.sampler = sampler_options_from(args);
+            if (is_environment_scene(c.scene))
+                check_environment_truth(c.sampler);
+            resolve_analytic_truth(c.sampler, c.texture.name_or_path); // truth=analytic: the texture's function
             check_format_filter(c.texture.format, c.sampler);
             c.render = make_render_options(c.scene, parse_flag(args, "--stage", "fragment", parse_stage),
                                            parse_flag(args, "--derivatives", "fine", parse_gradients));

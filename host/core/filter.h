@@ -34,6 +34,16 @@ enum class Wrap { repeat = HARNESS_WRAP_REPEAT, clamp = HARNESS_WRAP_CLAMP, mirr
 
 // ground-truth: the pixel filter it integrates under, a box over the pixel or a Gaussian (sigma 0.5 px).
 enum class PixelFilter { box = HARNESS_PIXEL_FILTER_BOX, gaussian = HARNESS_PIXEL_FILTER_GAUSSIAN };
+// ground-truth --truth: integrate level 0's texels reconstructed bilinearly (texels, the default) or the
+// procedural texture's analytic definition (analytic; core/analytic_texture.h, which parses the names).
+enum class Truth { texels, analytic };
+// The procedural textures with an analytic definition (core/analytic_texture.h); none: integrate the texels.
+enum class AnalyticKind {
+    none = HARNESS_ANALYTIC_NONE,
+    checker = HARNESS_ANALYTIC_CHECKER,
+    zoneplate = HARNESS_ANALYTIC_ZONEPLATE,
+    grid = HARNESS_ANALYTIC_GRID,
+};
 
 // aniso: where probes go and how they are weighted (see shaders/texfilter/aniso.glsl).
 enum class AnisoShape { gpu = HARNESS_ANISO_GPU, feline = HARNESS_ANISO_FELINE };
@@ -93,6 +103,10 @@ struct SamplerOptions {
     // viewer accumulates the truth a range a frame); truth_count 0 = every sample from truth_first on.
     int truth_first = 0;
     int truth_count = 0;
+    // ground-truth: what it integrates (--truth), and with Truth::analytic the function: set from the
+    // texture's name by resolve_analytic_truth (core/analytic_texture.h); the size is level 0's width.
+    Truth truth = Truth::texels;
+    AnalyticKind analytic = AnalyticKind::none;
 };
 
 // The ground truth's sample range of `options`, resolved: count 0 becomes the rest of the grid. Throws

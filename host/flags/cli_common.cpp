@@ -1,4 +1,5 @@
 #include "flags/cli_common.h"
+#include "core/analytic_texture.h"
 #include "core/environment.h"
 #include "vulkan/device_memory_check.h"
 #include "texture/error.h"
@@ -47,6 +48,8 @@ std::vector<FlagSpec> sampler_flags(SamplerFlags which)
     if (scenes) {
         flags.push_back({"--pixel-filter", "P", "ground-truth: box (over the pixel, default) or gaussian (sigma 0.5 px)"});
         flags.push_back({"--spp", "N", "ground-truth: samples a pixel, a square number 1..4096 (default 256)"});
+        flags.push_back({"--truth", "T", "ground-truth: what it integrates, texels (level 0 reconstructed bilinearly, "
+                                         "default) or analytic (the function of checker, zoneplate or grid)"});
     }
     flags.insert(flags.end(), {{"--lod-bias", "B", "added to the LOD (default 0)"},
                                {"--lod-min", "L", "lowest LOD used (default 0)"},
@@ -121,6 +124,10 @@ SamplerOptions sampler_options_from(const Args& args)
     options.boxes = args.get_int("--boxes", options.boxes, 1, 16);
     options.pixel_filter = parse_flag(args, "--pixel-filter", "box", parse_pixel_filter);
     options.truth_side = parse_flag(args, "--spp", "256", parse_spp_side);
+    options.truth = parse_flag(args, "--truth", "texels", parse_truth); // its texture: resolve_analytic_truth
+    if (args.has("--truth") && options.filter != Filter::ground_truth)
+        throw Error("--truth applies to --filter ground-truth only (what the truth integrates), not to --filter " +
+                    to_string(options.filter));
     options.lod_bias = float(args.get_double("--lod-bias", 0.0, -16.0, 16.0));
     options.lod_min = float(args.get_double("--lod-min", 0.0, 0.0, 1000.0));
     options.lod_max = float(args.get_double("--lod-max", 1000.0, 0.0, 1000.0));
@@ -128,6 +135,13 @@ SamplerOptions sampler_options_from(const Args& args)
         throw Error("bad values: --lod-min " + args.get("--lod-min", "0") + " is above --lod-max " +
                     args.get("--lod-max", "1000"));
     return options;
+}
+
+void check_viewer_truth(const SamplerOptions& options)
+{
+    if (options.truth == Truth::analytic)
+        throw Error("--truth analytic is not available in the viewer (its ground truth integrates the texels): render "
+                    "it with texfilter render --filter ground-truth --truth analytic");
 }
 
 int parse_spp_side(const std::string& text)

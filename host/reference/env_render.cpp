@@ -1,4 +1,5 @@
 #include "reference/env_render.h"
+#include "core/analytic_texture.h"
 
 #include "reference/env_cast.h"
 #include "reference/environment.h"
@@ -27,6 +28,7 @@ Image reference_render_environment(const SceneParams& scene, const EnvironmentMa
                                    const RenderOptions& render)
 {
     check_environment_filter(options);
+    check_environment_truth(options);
     if (render.view != DebugView::color)
         throw Error("--view " + to_string(render.view) + " is not available on the environment scenes: use --view color");
     const int width = scene.kind_size.y, height = scene.kind_size.z;

@@ -1,4 +1,5 @@
 #include "reference/ground_truth.h"
+#include "core/analytic_texture.h"
 #include "texture/error.h"
 #include "core/hash.h"
 #include "texture/threads.h"
@@ -66,6 +67,10 @@ Image reference_ground_truth(const SceneParams& scene, const MipChain& chain, co
     const int first = range.first, end = range.first + range.count;
     const Image& base = chain.levels.at(0);
     const glm::dvec4 background(scene.background);
+    // --truth analytic: the procedural texture's function at level 0's size instead of its bilinear texels.
+    check_analytic_truth(options);
+    const bool analytic = options.truth == Truth::analytic;
+    const AnalyticTexture function{options.analytic, base.width};
     Image out = make_image(width, height);
     ProgressBar progress{size_t(height)};
     parallel_for(size_t(height), [&](size_t row) {
@@ -75,7 +80,12 @@ Image reference_ground_truth(const SceneParams& scene, const MipChain& chain, co
             for (int i = first; i < end; ++i) {
                 glm::dvec2 p = ground_truth_sample(x, y, i, side, options.pixel_filter);
                 PixelHit hit = reference_hit(scene, p.x, p.y);
-                sum += hit.hit ? reference_bilinear(base, hit.uv.x, hit.uv.y, options.wrap) : background;
+                if (!hit.hit)
+                    sum += background;
+                else if (analytic)
+                    sum += analytic_value(function, hit.uv, options.wrap);
+                else
+                    sum += reference_bilinear(base, hit.uv.x, hit.uv.y, options.wrap);
             }
             out.texels[row * size_t(width) + size_t(x)] = glm::vec4(sum / double(range.count));
         }

@@ -39,7 +39,8 @@ struct PushConstants {
     int32_t layer;            // sample: the array layer (array kinds), the first bindless index
     int32_t compare_op;       // sample, shadow kind: VkCompareOp of the manual filters' comparison
     float dref;               // sample, shadow kind: the reference depth
-    int32_t padding[2];       // the block's size is a multiple of its 16-byte alignment
+    int32_t truth_analytic;   // ground-truth: HARNESS_ANALYTIC_* (tf::AnalyticKind; NONE: the texels)
+    int32_t padding[1];       // the block's size is a multiple of its 16-byte alignment
 };
 static_assert(offsetof(PushConstants, wrap_mode) == HARNESS_PUSH_WRAP_MODE);
 static_assert(offsetof(PushConstants, lod_bias) == HARNESS_PUSH_LOD_BIAS);
@@ -65,6 +66,7 @@ static_assert(offsetof(PushConstants, gradient_scale) == HARNESS_PUSH_GRADIENT_S
 static_assert(offsetof(PushConstants, layer) == HARNESS_PUSH_LAYER);
 static_assert(offsetof(PushConstants, compare_op) == HARNESS_PUSH_COMPARE_OP);
 static_assert(offsetof(PushConstants, dref) == HARNESS_PUSH_DREF);
+static_assert(offsetof(PushConstants, truth_analytic) == HARNESS_PUSH_TRUTH_ANALYTIC);
 static_assert(sizeof(PushConstants) == HARNESS_PUSH_SIZE);
 
 // SceneBlock in shaders/harness/scene.glsl (std140: vec4 members and vec4 arrays, 16 bytes each).
@@ -113,6 +115,9 @@ static_assert(int(Taps::manual) == HARNESS_TAPS_MANUAL && int(Taps::hardware) ==
 static_assert(int(PixelFilter::box) == HARNESS_PIXEL_FILTER_BOX &&
               int(PixelFilter::gaussian) == HARNESS_PIXEL_FILTER_GAUSSIAN,
               "tf::PixelFilter: PushConstants.pixelFilter");
+static_assert(int(AnalyticKind::none) == HARNESS_ANALYTIC_NONE && int(AnalyticKind::checker) == HARNESS_ANALYTIC_CHECKER &&
+              int(AnalyticKind::zoneplate) == HARNESS_ANALYTIC_ZONEPLATE && int(AnalyticKind::grid) == HARNESS_ANALYTIC_GRID,
+              "tf::AnalyticKind: PushConstants.truthAnalytic");
 static_assert(int(Gradients::fine) == HARNESS_GRADIENTS_FINE && int(Gradients::coarse) == HARNESS_GRADIENTS_COARSE &&
               int(Gradients::ray) == HARNESS_GRADIENTS_RAY, "tf::Gradients: PushConstants.gradients");
 static_assert(int(DebugView::color) == HARNESS_VIEW_COLOR && int(DebugView::lod) == HARNESS_VIEW_LOD &&

@@ -92,7 +92,12 @@ std::string view_name(const ScriptAction& a)
     return check_debug_view(a.words[0]);
 }
 
-SamplerOptions sampler(const ScriptAction& a) { return sampler_options_from(flag_args(a, "--filter", script_sampler_flags())); }
+SamplerOptions sampler(const ScriptAction& a)
+{
+    SamplerOptions options = sampler_options_from(flag_args(a, "--filter", script_sampler_flags()));
+    check_viewer_truth(options);
+    return options;
+}
 
 TextureSource texture(const ScriptAction& a)
 {

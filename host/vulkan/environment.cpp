@@ -1,4 +1,5 @@
 #include "vulkan/environment.h"
+#include "core/analytic_texture.h"
 
 #include "harness/config.h"
 #include "texture/error.h"
@@ -88,6 +89,7 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
                                                          const RenderOptions& render, EnvironmentPipelineCache* cache)
 {
     check_environment_filter(options);
+    check_environment_truth(options);
     if (render.view != DebugView::color)
         throw Error("--view " + to_string(render.view) + " is not available on the environment scenes: use --view color");
     if (render.stage != Stage::fragment)

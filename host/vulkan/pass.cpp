@@ -1,4 +1,5 @@
 #include "vulkan/pass.h"
+#include "core/analytic_texture.h"
 #include "harness/config.h"
 #include <map>
 
@@ -134,14 +135,20 @@ PushConstants make_push_constants(const SamplerOptions& options, uint32_t count,
 {
     // Ground truth: the range resolved and checked here (a range past the grid is refused, naming it); the
     // shader clamps it again, so whatever reaches it stays bounded.
-    const TruthRange truth = options.filter == Filter::ground_truth ? truth_range(options) : TruthRange{};
-    return {int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max,
-            count, options.band, options.probes, int32_t(options.aniso_shape), int32_t(options.taps),
-            options.alpha, options.max_aniso, options.boxes, gradients,
-            options.truth_side, int32_t(options.pixel_filter), view,
-            {sat_offset.x, sat_offset.y, sat_offset.z, sat_offset.w},
-            {sat_scale.x, sat_scale.y, sat_scale.z, sat_scale.w},
-            truth.first, truth.count, 1.0f, 0};
+    const bool ground_truth = options.filter == Filter::ground_truth;
+    const TruthRange truth = ground_truth ? truth_range(options) : TruthRange{};
+    // --truth analytic: the function the shader integrates (analytic_texture.glsl); the texels otherwise.
+    check_analytic_truth(options);
+    const bool analytic = ground_truth && options.truth == Truth::analytic;
+    PushConstants push{int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max,
+                       count, options.band, options.probes, int32_t(options.aniso_shape), int32_t(options.taps),
+                       options.alpha, options.max_aniso, options.boxes, gradients,
+                       options.truth_side, int32_t(options.pixel_filter), view,
+                       {sat_offset.x, sat_offset.y, sat_offset.z, sat_offset.w},
+                       {sat_scale.x, sat_scale.y, sat_scale.z, sat_scale.w},
+                       truth.first, truth.count, 1.0f, 0};
+    push.truth_analytic = int32_t(analytic ? options.analytic : AnalyticKind::none);
+    return push;
 }
 
 } // namespace tf

@@ -46,6 +46,12 @@
 #define HARNESS_PIXEL_FILTER_GAUSSIAN 1
 #define HARNESS_GROUND_TRUTH_SIGMA 0.5 // Gaussian pixel filter: standard deviation in pixels
 #define HARNESS_MAX_TRUTH_SIDE 64      // samples a pixel = side^2, at most 4096
+// Ground truth's integrand (tf::AnalyticKind; --truth): level 0's texels reconstructed bilinearly (none, --truth
+// texels), or a procedural texture's analytic definition (host/core/analytic_texture.h, analytic_texture.glsl).
+#define HARNESS_ANALYTIC_NONE 0
+#define HARNESS_ANALYTIC_CHECKER 1
+#define HARNESS_ANALYTIC_ZONEPLATE 2
+#define HARNESS_ANALYTIC_GRID 3
 
 // Scene kinds: a textured plane or quad (plane, zoom, minify, slanted) and a cylinder (tunnel).
 #define HARNESS_SCENE_PLANE 0
@@ -138,6 +144,7 @@
 #define HARNESS_PUSH_LAYER 108       // sample: the array layer read (array kinds), the first bindless index
 #define HARNESS_PUSH_COMPARE_OP 112  // sample, shadow kind: VkCompareOp of the manual filters' comparison
 #define HARNESS_PUSH_DREF 116        // sample, shadow kind: the reference depth
+#define HARNESS_PUSH_TRUTH_ANALYTIC 120 // ground-truth: HARNESS_ANALYTIC_* (--truth analytic), NONE for the texels
 #define HARNESS_PUSH_SIZE 128        // padded to a multiple of 16, the block's alignment (vec4 members); 128 is
                                      // Vulkan's least maxPushConstantsSize: nothing more fits
 

@@ -1,5 +1,6 @@
 // Harness only: the ground truth a filtered pixel is judged against. The pixel integrates the level-0
-// texture (bilinear reconstruction) over the scene itself under a pixel filter, by stratified
+// texture (bilinear reconstruction; or, with pc.truthAnalytic, the procedural texture's analytic definition
+// at level 0's size: analytic_texture.glsl) over the scene itself under a pixel filter, by stratified
 // supersampling: a side x side grid of strata jittered by an integer hash of (pixel, sample), the
 // pattern of host/reference/ground_truth.cpp (the CPU twin, in double). Box: uniform over the pixel. Gaussian:
 // sigma HARNESS_GROUND_TRUTH_SIGMA pixels about the centre, Box-Muller on the stratified unit square.
@@ -7,6 +8,8 @@
 // Needs scene.glsl and filter_select.glsl (u_texture, pc) or env_select.glsl included first.
 #ifndef HARNESS_GROUND_TRUTH_GLSL
 #define HARNESS_GROUND_TRUTH_GLSL
+
+#include "analytic_texture.glsl"
 
 // host/core/hash.h mix32 ("lowbias32"), bit for bit.
 uint truth_hash(uint x)
@@ -53,10 +56,16 @@ vec4 ground_truth(ivec2 pixel)
     int side, first, count;
     truth_samples(side, first, count);
     tf_Sampler s = tf_sampler(pc.wrapMode);
+    int analytic = pc.truthAnalytic, size = HARNESS_SIZE0.x; // uniform: the branch below does not diverge
     vec4 sum = vec4(0.0);
     [[dont_unroll]] for (int i = first; i < first + count; ++i) {
         Hit h = scene_hit(scene, truth_sample(pixel, i, side, pc.pixelFilter));
-        sum += h.hit ? tf_bilinear(HARNESS_TEX, h.uv HARNESS_X, s) : scene.background;
+        if (!h.hit)
+            sum += scene.background;
+        else if (analytic != HARNESS_ANALYTIC_NONE)
+            sum += analytic_value(analytic, size, h.uv, pc.wrapMode);
+        else
+            sum += tf_bilinear(HARNESS_TEX, h.uv HARNESS_X, s);
     }
     return sum / float(count);
 }

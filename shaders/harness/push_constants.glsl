@@ -43,6 +43,7 @@ layout(push_constant) uniform PushConstants {
     layout(offset = HARNESS_PUSH_LAYER) int layer;         // sample: array layer, first bindless index
     layout(offset = HARNESS_PUSH_COMPARE_OP) int compareOp; // sample, shadow: VkCompareOp (manual filters)
     layout(offset = HARNESS_PUSH_DREF) float dref;          // sample, shadow: the reference depth
+    layout(offset = HARNESS_PUSH_TRUTH_ANALYTIC) int truthAnalytic; // ground-truth: HARNESS_ANALYTIC_*
 } pc;
 
 #endif
