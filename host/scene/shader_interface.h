@@ -113,7 +113,8 @@ static_assert(int(PixelFilter::box) == HARNESS_PIXEL_FILTER_BOX &&
               int(PixelFilter::gaussian) == HARNESS_PIXEL_FILTER_GAUSSIAN,
               "tf::PixelFilter: PushConstants.pixelFilter");
 static_assert(int(Gradients::fine) == HARNESS_GRADIENTS_FINE && int(Gradients::coarse) == HARNESS_GRADIENTS_COARSE &&
-              int(Gradients::ray) == HARNESS_GRADIENTS_RAY, "tf::Gradients: PushConstants.gradients");
+              int(Gradients::ray) == HARNESS_GRADIENTS_RAY && int(Gradients::cone) == HARNESS_GRADIENTS_CONE,
+              "tf::Gradients: PushConstants.gradients");
 static_assert(int(DebugView::color) == HARNESS_VIEW_COLOR && int(DebugView::lod) == HARNESS_VIEW_LOD &&
               int(DebugView::anisotropy) == HARNESS_VIEW_ANISOTROPY &&
               int(DebugView::fetches) == HARNESS_VIEW_FETCHES && int(DebugView::data) == HARNESS_VIEW_DATA,
