@@ -72,6 +72,21 @@ glm::dvec2 gpu_uv(const Image& none, const SceneParams& scene, int x, int y)
     return glm::round(ref - frac) + frac;
 }
 
+// The tunnel's u is periodic: where a quad's plain u difference jumps (over half a period, at the seam) the
+// shader takes that of fract(u + 0.5) instead if smaller (texfilter/derivatives.glsl), in float.
+double shader_u_difference(const SceneParams& scene, double u1, double u0)
+{
+    double plain = u1 - u0;
+    if (scene.kind_size.x != HARNESS_SCENE_CYLINDER || std::abs(plain) <= 0.5)
+        return plain;
+    auto shift = [](double u) {
+        float s = float(u) + 0.5f;
+        return double(s - std::floor(s));
+    };
+    double shifted = shift(u1) - shift(u0);
+    return std::abs(shifted) < std::abs(plain) ? shifted : plain;
+}
+
 // Pixels on a grid (odd offsets: both quad positions), every one whose quad is all hit.
 std::vector<Probe> probes_of(const SceneParams& scene, const Image& none)
 {
@@ -88,6 +103,8 @@ std::vector<Probe> probes_of(const SceneParams& scene, const Image& none)
             glm::dvec2 uv = gpu_uv(none, scene, x, y);
             glm::dvec2 dx = gpu_uv(none, scene, x0 | 1, y) - gpu_uv(none, scene, x0, y);
             glm::dvec2 dy = gpu_uv(none, scene, x, y0 | 1) - gpu_uv(none, scene, x, y0);
+            dx.x = shader_u_difference(scene, gpu_uv(none, scene, x0 | 1, y).x, gpu_uv(none, scene, x0, y).x);
+            dy.x = shader_u_difference(scene, gpu_uv(none, scene, x, y0 | 1).x, gpu_uv(none, scene, x, y0).x);
             Lookup g{uv.x, uv.y, dx.x, dx.y, dy.x, dy.y};
             out.push_back({{x, y}, lookups[size_t(y) * kSize + size_t(x)].lookup, test::as_float(g)});
         }

@@ -55,7 +55,7 @@ int run_render(const std::vector<std::string>& argv)
          sampler_flags(SamplerFlags::scenes),
          {{"--size", "WxH", "image size, even sides (default 256x256)"},
           {"--stage", "S", "fragment (default) or compute (2x2 quads from subgroup quad operations)"},
-          {"--derivatives", "D", "fine (default), coarse (one pair a quad) or ray (ray differentials)"},
+          {"--derivatives", "D", "fine (default), coarse (one pair a quad), ray (ray differentials) or cone (ray cones)"},
           {"--view", "V", "color (default), lod, anisotropy, fetches (a heat map 0..128) or data (linear floats: "
                           "R LOD, G anisotropy, B fetches + hardware lookups; write .pfm or .exr)"},
           {"--frame", "N", "frame N (0..1000000, default 0) of the benchmark's camera path: uv slides N x (0.37, 0.23) texels"},

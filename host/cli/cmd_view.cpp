@@ -34,7 +34,7 @@ int run_view(const std::vector<std::string>& argv)
                              "script's `compare F [flags]`)"},
           {"--size", "WxH", "window and scene size (default 1280x720)"},
           {"--stage", "S", "fragment (default) or compute"},
-          {"--derivatives", "D", "fine (default), coarse or ray"},
+          {"--derivatives", "D", "fine (default), coarse, ray or cone"},
           {"--script", "FILE", "run the actions in FILE in the window, one a line (docs/VIEWER.md), then exit"},
           {"--state", "FILE", "start from a state a screenshot wrote (its .json)"},
           {"--frame-log", "FILE", "write every frame's times as CSV when the viewer ends (the viewer benchmark)"},

@@ -2,6 +2,7 @@
 // double, independently of shaders/harness/env_scene.glsl (which transfers analytic ray differentials; here
 // derivatives are central differences of the direction itself).
 #include "reference/env_cast.h"
+#include "reference/scene_cast.h"
 #include "harness/config.h"
 #include "texture/error.h"
 #include <cmath>
@@ -85,6 +86,35 @@ glm::dvec3 ray_derivative(const SceneParams& scene, double px, double py, glm::d
     return glm::dvec3(0.0); // a silhouette thinner than 2h: no derivative to speak of
 }
 
+// The ray cone's direction footprint at (px, py) (texfilter/derivatives.glsl's model, in double): sky: a circle
+// of angular diameter gamma around the camera ray, axes along the camera's right (made perpendicular) and
+// across it; mirror: the primary cone (width gamma x distance at the hit) reflected by the sphere's curvature
+// 1/radius: gamma + 2 w |cos theta| / radius across the plane of incidence, gamma + 2 w / (|cos theta| radius)
+// within it. Each axis scaled by |dir|.
+EnvLookup cone_lookup(const SceneParams& scene, double px, double py)
+{
+    EnvRay ray = reference_env_ray(scene, px, py);
+    double gamma = reference_pixel_spread(scene);
+    EnvLookup l;
+    l.dir = ray.dir;
+    glm::dvec3 d = glm::normalize(ray.dir);
+    if (!ray.mirror) {
+        glm::dvec3 right = d3(scene.right);
+        glm::dvec3 side = glm::normalize(right - glm::dot(right, d) * d);
+        double scale = gamma * glm::length(ray.dir);
+        l.ddx = scale * side;
+        l.ddy = scale * glm::cross(d, side);
+        return l;
+    }
+    glm::dvec3 incident = glm::normalize(ray.ray);
+    double width = gamma * glm::length(ray.point - d3(scene.origin));
+    double c = std::abs(glm::dot(incident, ray.normal)), curvature = 1.0 / double(scene.p0.w);
+    glm::dvec3 side = reference_incidence_side(incident, ray.normal);
+    l.ddx = (gamma + 2.0 * curvature * width * c) * side;
+    l.ddy = (gamma + 2.0 * curvature * width / c) * glm::cross(d, side);
+    return l;
+}
+
 } // namespace
 
 std::vector<EnvLookup> reference_env_lookups(const SceneParams& scene, Gradients gradients)
@@ -102,6 +132,10 @@ std::vector<EnvLookup> reference_env_lookups(const SceneParams& scene, Gradients
         for (int x = 0; x < width; ++x) {
             EnvLookup& l = out[size_t(y) * width + x];
             l.dir = dir_at(x, y);
+            if (gradients == Gradients::cone) {
+                l = cone_lookup(scene, x + 0.5, y + 0.5);
+                continue;
+            }
             if (gradients == Gradients::ray) {
                 l.ddx = ray_derivative(scene, x + 0.5, y + 0.5, {1.0, 0.0});
                 l.ddy = ray_derivative(scene, x + 0.5, y + 0.5, {0.0, 1.0});

@@ -29,7 +29,9 @@ glm::dvec3 reference_env_direction(const SceneParams& scene, double px, double p
 // dy = d(x, y|1) - d(x, y&~1); coarse: the quad's top-left pair for all four pixels (as reference_lookups
 // does for uv); ray: the exact derivative with respect to the pixel position by central differences in
 // double, Richardson-extrapolated (measured within 3e-8 of the analytic transfer, relative; one-sided and
-// first order within 1/1024 pixel of the sphere's silhouette). Sides must be even.
+// first order within 1/1024 pixel of the sphere's silhouette); cone: the ray cone's direction footprint
+// (texfilter/derivatives.glsl: the camera's pixel spread gamma around a sky ray; the primary cone reflected
+// by the sphere's curvature on the mirror), two vectors perpendicular to dir. Sides must be even.
 std::vector<EnvLookup> reference_env_lookups(const SceneParams& scene, Gradients gradients);
 
 } // namespace tf

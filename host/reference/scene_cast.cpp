@@ -1,5 +1,6 @@
 // The CPU half of the scenes' ray casts (scene/scene.h describes the scenes): each pixel's hit and uv in
-// double, and the whole image's lookups with quad or ray-differential gradients.
+// double, and the whole image's lookups with quad (seam-free on the tunnel's u), ray-differential or ray-cone
+// gradients.
 #include "reference/scene_cast.h"
 #include "harness/config.h"
 #include "texture/error.h"
@@ -53,13 +54,31 @@ glm::dvec2 reference_triangle_plane_uv(const SceneParams& scene, int triangle, d
     return triangle_uv(scene, triangle, b1, b2);
 }
 
-PixelHit reference_hit(const SceneParams& scene, double px, double py)
+namespace {
+
+// A ray's hit on the scene's surface, with what ray cones need: distance and normal. triangle_only >= 0:
+// that triangle's plane, unbounded (the footprint of a pixel that hit it stays on it).
+struct SurfaceHit {
+    PixelHit pixel;
+    double t = 0;            // along d as given (not normalised)
+    glm::dvec3 normal{0.0};  // not normalised
+};
+
+SurfaceHit surface_hit(const SceneParams& scene, glm::dvec3 o, glm::dvec3 d, int triangle_only = -1)
 {
-    glm::dvec3 o = d3(scene.origin);
-    glm::dvec3 d = camera_ray(scene, px, py);
     glm::dvec2 offset(scene.extent.z, scene.extent.w);
-    PixelHit result;
+    SurfaceHit result;
     if (scene.kind_size.x == HARNESS_SCENE_TRIANGLES) { // nearest hit inside a triangle; uv 0 on a miss
+        auto frame = [&](int i) {
+            glm::dvec3 a = d3(scene.positions[3 * i]);
+            return glm::cross(d3(scene.positions[3 * i + 1]) - a, d3(scene.positions[3 * i + 2]) - a);
+        };
+        if (triangle_only >= 0) {
+            double b1 = 0, b2 = 0, t = 0;
+            if (triangle_plane_hit(scene, triangle_only, o, d, b1, b2, t))
+                result = {{true, triangle_uv(scene, triangle_only, b1, b2), triangle_only}, t, frame(triangle_only)};
+            return result;
+        }
         double best = INFINITY;
         for (int i = 0; i < scene.kind_size.w; ++i) {
             double b1, b2, t;
@@ -67,7 +86,7 @@ PixelHit reference_hit(const SceneParams& scene, double px, double py)
             if (triangle_plane_hit(scene, i, o, d, b1, b2, t) && t > 0.0 && t < best && b1 >= -slack &&
                 b2 >= -slack && b1 + b2 <= 1.0 + slack) {
                 best = t;
-                result = {true, triangle_uv(scene, i, b1, b2), i};
+                result = {{true, triangle_uv(scene, i, b1, b2), i}, t, frame(i)};
             }
         }
         return result;
@@ -79,9 +98,11 @@ PixelHit reference_hit(const SceneParams& scene, double px, double py)
         double t = (-b + std::sqrt(b * b - 4.0 * a * c)) / (2.0 * a);
         glm::dvec3 p = o + t * d;
         double repeats = scene.p0.z;
-        result.uv = glm::dvec2(std::atan2(p.y, p.x) * repeats / (2.0 * pi) + 0.5 * repeats, p.z * double(scene.p0.w));
-        result.uv += offset;
-        result.hit = t > 0.0 && p.z < length;
+        result.pixel.uv = glm::dvec2(std::atan2(p.y, p.x) * repeats / (2.0 * pi) + 0.5 * repeats, p.z * double(scene.p0.w));
+        result.pixel.uv += offset;
+        result.pixel.hit = t > 0.0 && p.z < length;
+        result.t = t;
+        result.normal = glm::dvec3(p.x, p.y, 0.0);
         return result;
     }
     glm::dvec3 au = d3(scene.axis_u), av = d3(scene.axis_v), p0 = d3(scene.p0);
@@ -89,9 +110,62 @@ PixelHit reference_hit(const SceneParams& scene, double px, double py)
     double t = glm::dot(p0 - o, n) / glm::dot(d, n);
     glm::dvec3 rel = o + t * d - p0;
     glm::dvec2 st(glm::dot(rel, au) / glm::dot(au, au), glm::dot(rel, av) / glm::dot(av, av));
-    result.hit = t > 0.0 && std::abs(st.x) <= scene.extent.x && std::abs(st.y) <= scene.extent.y;
-    result.uv = st + offset;
+    result.pixel.hit = t > 0.0 && std::abs(st.x) <= scene.extent.x && std::abs(st.y) <= scene.extent.y;
+    result.pixel.uv = st + offset;
+    result.t = t;
+    result.normal = n;
     return result;
+}
+
+// The scene's uv axes that wrap with period 1 (the tunnel's u: whole turns of the texture around the axis).
+glm::bvec2 periodic_axes(const SceneParams& scene) { return {scene.kind_size.x == HARNESS_SCENE_CYLINDER, false}; }
+
+// A difference of uv on the periodic axes taken as the period's representative nearest zero: the change
+// without the whole periods a seam adds (exact while the true change is under half a period).
+glm::dvec2 unwrap(const SceneParams& scene, glm::dvec2 difference)
+{
+    glm::bvec2 periodic = periodic_axes(scene);
+    for (int k = 0; k < 2; ++k)
+        if (periodic[k])
+            difference[k] -= std::round(difference[k]);
+    return difference;
+}
+
+// A unit vector perpendicular to unit v: v x the coordinate axis least aligned with v (ties: x, then y), the
+// rule texfilter/derivatives.glsl's cones use where the plane of incidence is undefined.
+glm::dvec3 any_perpendicular(glm::dvec3 v)
+{
+    glm::dvec3 a = glm::abs(v);
+    glm::dvec3 axis = a.x <= a.y && a.x <= a.z ? glm::dvec3(1, 0, 0) : a.y <= a.z ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+    return glm::normalize(glm::cross(v, axis));
+}
+
+} // namespace
+
+glm::dvec3 reference_incidence_side(glm::dvec3 d, glm::dvec3 n)
+{
+    glm::dvec3 side = glm::cross(glm::normalize(d), glm::normalize(n));
+    double len = glm::length(side);
+    return len > 1e-4 ? side / len : any_perpendicular(glm::normalize(d));
+}
+
+double reference_pixel_spread(const SceneParams& scene)
+{
+    return std::atan(2.0 * glm::length(d3(scene.up)) / double(scene.kind_size.z));
+}
+
+PixelHit reference_hit(const SceneParams& scene, double px, double py)
+{
+    return surface_hit(scene, d3(scene.origin), camera_ray(scene, px, py)).pixel;
+}
+
+glm::dvec2 reference_cone_axis_uv(const SceneParams& scene, double px, double py, glm::dvec3 offset, int triangle)
+{
+    glm::dvec3 o = d3(scene.origin), d = camera_ray(scene, px, py);
+    const double h = 1.0 / 1024; // central differences of parallel rays: exact on planes, error ~h^2 on the tunnel
+    glm::dvec2 ahead = surface_hit(scene, o + h * offset, d, triangle).pixel.uv;
+    glm::dvec2 behind = surface_hit(scene, o - h * offset, d, triangle).pixel.uv;
+    return unwrap(scene, ahead - behind) / (2.0 * h);
 }
 
 namespace {
@@ -117,14 +191,31 @@ PixelLookup quad_lookup(const SceneParams& scene, Gradients gradients, bool rast
     glm::dvec2 uv = self.uv, dx, dy;
     if (gradients == Gradients::ray) {
         const double h = 1.0 / 1024; // central differences: error ~h^2, far below float32's
-        dx = (surface_uv(x + 0.5 + h, y + 0.5) - surface_uv(x + 0.5 - h, y + 0.5)) / (2 * h);
-        dy = (surface_uv(x + 0.5, y + 0.5 + h) - surface_uv(x + 0.5, y + 0.5 - h)) / (2 * h);
+        dx = unwrap(scene, surface_uv(x + 0.5 + h, y + 0.5) - surface_uv(x + 0.5 - h, y + 0.5)) / (2 * h);
+        dy = unwrap(scene, surface_uv(x + 0.5, y + 0.5 + h) - surface_uv(x + 0.5, y + 0.5 - h)) / (2 * h);
+    } else if (gradients == Gradients::cone) {
+        // The primary cone (width gamma x distance) as parallel rays offset across the plane of incidence and
+        // within it (reference_cone_axis_uv), not the shader's projection onto the tangent plane.
+        double px = x + 0.5, py = y + 0.5;
+        glm::dvec3 d = camera_ray(scene, px, py);
+        int triangle = triangles ? self.triangle : -1;
+        SurfaceHit hit = surface_hit(scene, d3(scene.origin), d, triangle);
+        if (triangles && !self.hit)
+            hit = {};
+        double width = reference_pixel_spread(scene) * hit.t * glm::length(d);
+        glm::dvec3 side = hit.t > 0.0 ? reference_incidence_side(d, hit.normal) : glm::dvec3(0.0);
+        glm::dvec3 along = glm::cross(side, glm::normalize(d));
+        dx = width * reference_cone_axis_uv(scene, px, py, side, triangle);
+        dy = width * reference_cone_axis_uv(scene, px, py, along, triangle);
+        if (!(hit.t > 0.0))
+            dx = dy = glm::dvec2(0.0); // behind the camera or a missed triangle: no footprint (the pixel is background)
     } else {
         int x0 = x & ~1, y0 = y & ~1;
         int ax = gradients == Gradients::coarse ? y0 : y; // the row dx is taken along
         int ay = gradients == Gradients::coarse ? x0 : x; // the column dy is taken down
-        dx = uv_at(x0 | 1, ax) - uv_at(x0, ax);
-        dy = uv_at(ay, y0 | 1) - uv_at(ay, y0);
+        // Periodic axes (the tunnel's u): the seam's whole periods taken out (unwrap).
+        dx = unwrap(scene, uv_at(x0 | 1, ax) - uv_at(x0, ax));
+        dy = unwrap(scene, uv_at(ay, y0 | 1) - uv_at(ay, y0));
     }
     PixelLookup p;
     p.hit = self.hit;

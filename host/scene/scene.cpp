@@ -79,16 +79,17 @@ std::string to_string(Gradients gradients)
     case Gradients::fine: return "fine";
     case Gradients::coarse: return "coarse";
     case Gradients::ray: return "ray";
+    case Gradients::cone: return "cone";
     }
     return "?";
 }
 
 Gradients parse_gradients(const std::string& name)
 {
-    for (Gradients g : {Gradients::fine, Gradients::coarse, Gradients::ray})
+    for (Gradients g : {Gradients::fine, Gradients::coarse, Gradients::ray, Gradients::cone})
         if (to_string(g) == name)
             return g;
-    throw Error("unknown derivatives '" + name + "' (expected one of: fine, coarse, ray)");
+    throw Error("unknown derivatives '" + name + "' (expected one of: fine, coarse, ray, cone)");
 }
 
 std::string to_string(Stage stage) { return stage == Stage::compute ? "compute" : "fragment"; }
@@ -135,8 +136,9 @@ RenderOptions make_render_options(SceneKind kind, Stage stage, Gradients gradien
     if (mesh && stage == Stage::compute)
         throw Error("the mesh scene is rasterized by the graphics pipeline; for the compute stage use --scene triangles "
                     "(the same triangles, ray-cast)");
-    if (mesh && gradients == Gradients::ray)
-        throw Error("ray differentials need a ray-cast scene; the mesh scene is rasterized (use fine or coarse)");
+    if (mesh && (gradients == Gradients::ray || gradients == Gradients::cone))
+        throw Error(std::string(gradients == Gradients::ray ? "ray differentials" : "ray cones") +
+                    " need a ray-cast scene; the mesh scene is rasterized (use fine or coarse)");
     if (is_environment_scene(kind) && stage == Stage::compute)
         throw Error("the environment scenes (skybox, reflect) render in the fragment stage only: use --stage fragment");
     return {stage, gradients, mesh};

@@ -20,9 +20,15 @@ enum class SceneKind { plane, tunnel, zoom, minify, slanted, triangles, mesh, sk
 // not uv; code that renders a 2D texture on every scene of all_scenes() skips them.
 bool is_environment_scene(SceneKind kind);
 
-// How uv gradients are made: fine or coarse 2x2 quad differences, or ray differentials (ray-cast scenes).
-enum class Gradients { fine = HARNESS_GRADIENTS_FINE, coarse = HARNESS_GRADIENTS_COARSE, ray = HARNESS_GRADIENTS_RAY };
-Gradients parse_gradients(const std::string& name); // "fine", "coarse", "ray"
+// How uv gradients are made: fine or coarse 2x2 quad differences (seam-free where the scene's uv wraps: the
+// tunnel's u), ray differentials or ray cones (ray-cast scenes; docs/DERIVATIVES.md).
+enum class Gradients {
+    fine = HARNESS_GRADIENTS_FINE,
+    coarse = HARNESS_GRADIENTS_COARSE,
+    ray = HARNESS_GRADIENTS_RAY,
+    cone = HARNESS_GRADIENTS_CONE
+};
+Gradients parse_gradients(const std::string& name); // "fine", "coarse", "ray", "cone"
 std::string to_string(Gradients gradients);
 
 // Which pipeline renders: a fragment shader (or, for mesh, the raster pipeline) or a compute shader
@@ -56,7 +62,7 @@ struct RenderOptions {
 };
 
 // The render options a scene allows: mesh is rasterized (fragment stage, quad derivatives only);
-// ray differentials need a ray-cast scene. Throws tf::Error naming the conflict.
+// ray differentials and ray cones need a ray-cast scene. Throws tf::Error naming the conflict.
 RenderOptions make_render_options(SceneKind kind, Stage stage, Gradients gradients);
 
 SceneKind parse_scene(const std::string& name); // throws tf::Error listing the valid names

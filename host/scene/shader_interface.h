@@ -119,7 +119,8 @@ static_assert(int(AnalyticKind::none) == HARNESS_ANALYTIC_NONE && int(AnalyticKi
               int(AnalyticKind::zoneplate) == HARNESS_ANALYTIC_ZONEPLATE && int(AnalyticKind::grid) == HARNESS_ANALYTIC_GRID,
               "tf::AnalyticKind: PushConstants.truthAnalytic");
 static_assert(int(Gradients::fine) == HARNESS_GRADIENTS_FINE && int(Gradients::coarse) == HARNESS_GRADIENTS_COARSE &&
-              int(Gradients::ray) == HARNESS_GRADIENTS_RAY, "tf::Gradients: PushConstants.gradients");
+              int(Gradients::ray) == HARNESS_GRADIENTS_RAY && int(Gradients::cone) == HARNESS_GRADIENTS_CONE,
+              "tf::Gradients: PushConstants.gradients");
 static_assert(int(DebugView::color) == HARNESS_VIEW_COLOR && int(DebugView::lod) == HARNESS_VIEW_LOD &&
               int(DebugView::anisotropy) == HARNESS_VIEW_ANISOTROPY &&
               int(DebugView::fetches) == HARNESS_VIEW_FETCHES && int(DebugView::data) == HARNESS_VIEW_DATA,

@@ -17,6 +17,7 @@ int gradients_id(Gradients gradients)
 {
     return gradients == Gradients::coarse ? HARNESS_GRADIENTS_COARSE
            : gradients == Gradients::ray  ? HARNESS_GRADIENTS_RAY
+           : gradients == Gradients::cone ? HARNESS_GRADIENTS_CONE
                                           : HARNESS_GRADIENTS_FINE;
 }
 

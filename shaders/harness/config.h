@@ -67,6 +67,7 @@
 #define HARNESS_GRADIENTS_FINE 0
 #define HARNESS_GRADIENTS_COARSE 1
 #define HARNESS_GRADIENTS_RAY 2
+#define HARNESS_GRADIENTS_CONE 3 // ray cones (texfilter/derivatives.glsl): ray-cast 2D scenes, skybox, reflect
 
 // What a render shows (tf::DebugView; texfilter/debug.glsl draws the debug views): the filtered colour,
 // the LOD as the mipcolors palette, the footprint's anisotropy ratio, texel fetches + hardware lookups as a

@@ -10,26 +10,33 @@
 //          own camera ray (the sky behind).
 // Output:  dirDx, dirDy are the exact derivatives of dir with respect to the pixel position (x right, y
 //          down): the camera's per-pixel steps on a miss, Igehy's transfer through the reflection, with the
-//          sphere's normal derivative, on a hit.
-// Cost:    a ray-sphere intersection and a few dozen multiply-adds; no loops, no texture access.
+//          sphere's normal derivative, on a hit (tf_transfer_ray_differentials, tf_reflect_ray_differentials).
+//          coneDx, coneDy: the ray cone's direction footprint (spread gamma = camera_pixel_spread; on a hit
+//          the cone of width gamma t reflected by the sphere's curvature 1 / radius).
+// Cost:    a ray-sphere intersection and about a hundred multiply-adds; no loops, no texture access.
 #ifndef HARNESS_ENV_SCENE_GLSL
 #define HARNESS_ENV_SCENE_GLSL
 
 #include "scene.glsl"
+#include "texfilter/derivatives.glsl" // the mirror's differential transfer and the ray cones
 
 struct EnvHit {
     vec3 dir;    // the lookup direction (any length but zero)
     bool mirror; // reflect: the ray hit the sphere (dir is the reflected direction)
     vec3 dirDx;  // d(dir)/dx, one pixel right
     vec3 dirDy;  // d(dir)/dy, one pixel down
+    vec3 coneDx; // the ray cone's direction footprint (texfilter/derivatives.glsl): across the plane of
+    vec3 coneDy; // incidence and within it (reflect), along the camera's right and up (a sky pixel)
 };
 
 EnvHit env_hit(SceneParams scene, vec2 pixelCentre)
 {
     vec3 d = camera_ray(scene, pixelCentre);
     vec3 dDdx = camera_ray_dx(scene), dDdy = camera_ray_dy(scene);
+    float spread = camera_pixel_spread(scene);
+    tf_DirGradients sky = tf_ray_cone_direction_gradients(d, scene.right.xyz, spread, spread);
     if (scene.kindSize.x != HARNESS_SCENE_REFLECT)
-        return EnvHit(d, false, dDdx, dDdy);
+        return EnvHit(d, false, dDdx, dDdy, sky.dDirdx, sky.dDirdy);
 
     // The nearer root of |o + t u - c| = r with u the unit ray: t = -b - sqrt(b^2 - (|o - c|^2 - r^2)).
     float len = length(d);
@@ -40,24 +47,21 @@ EnvHit env_hit(SceneParams scene, vec2 pixelCentre)
     float disc = b * b - (dot(oc, oc) - radius * radius);
     float t = -b - sqrt(max(disc, 0.0));
     if (disc < 0.0 || t <= 0.0)
-        return EnvHit(d, false, dDdx, dDdy);
+        return EnvHit(d, false, dDdx, dDdy, sky.dDirdx, sky.dDirdy);
 
     vec3 p = scene.origin.xyz + t * u;
     vec3 n = (p - scene.p0.xyz) / radius;
-    float un = dot(u, n);
-    vec3 r = u - 2.0 * un * n;
+    vec3 r = u - 2.0 * dot(u, n) * n;
 
-    // Igehy's transfer: the unit ray's derivative, the hit point's (t changes so the point stays on the
-    // sphere: dt = -t (du . n) / (u . n)), the normal's (dn = dp / radius on a sphere), then the reflection's.
-    vec3 du[2] = vec3[2]((dDdx - u * dot(u, dDdx)) / len, (dDdy - u * dot(u, dDdy)) / len);
-    vec3 dr[2];
-    for (int k = 0; k < 2; ++k) {
-        float dt = -t * dot(du[k], n) / un;
-        vec3 dp = t * du[k] + dt * u;
-        vec3 dn = dp / radius;
-        dr[k] = du[k] - 2.0 * (un * dn + (dot(du[k], n) + dot(u, dn)) * n);
-    }
-    return EnvHit(r, true, dr[0], dr[1]);
+    // Igehy's transfer for the unit ray u (its derivative: the camera step without its part along u, over
+    // |d|) to the hit, the sphere's normal derivative there (dN = dP / radius), then the reflection.
+    tf_RayDifferentials camera = tf_RayDifferentials(vec3(0.0), vec3(0.0), (dDdx - u * dot(u, dDdx)) / len,
+                                                     (dDdy - u * dot(u, dDdy)) / len);
+    tf_RayDifferentials atHit = tf_transfer_ray_differentials(u, t, n, camera);
+    tf_RayDifferentials reflected = tf_reflect_ray_differentials(u, n, atHit.dPdx / radius, atHit.dPdy / radius, atHit);
+    // The primary cone (width gamma t at the hit), reflected by the sphere's curvature 1 / radius.
+    tf_DirGradients cone = tf_ray_cone_reflect_direction_gradients(u, n, tf_RayCone(spread * t, spread), 1.0 / radius);
+    return EnvHit(r, true, reflected.dDdx, reflected.dDdy, cone.dDirdx, cone.dDirdy);
 }
 
 #endif

@@ -1,5 +1,6 @@
-// Harness only: the uv gradients a render asked for (pc.gradients), for a ray-cast hit. Quad
-// derivatives must run in uniform control flow, so every form is computed and one is kept.
+// Harness only: the uv gradients a render asked for (pc.gradients), for a ray-cast hit: quads (seam-free
+// where the scene's uv wraps), ray differentials or ray cones. Quad derivatives must run in uniform control
+// flow, so every form is computed and one is kept.
 #ifndef HARNESS_GRADIENTS_GLSL
 #define HARNESS_GRADIENTS_GLSL
 
@@ -9,6 +10,28 @@ tf_Gradients ray_gradients(SceneParams scene, vec2 pixelCentre, Hit h)
 {
     return tf_ray_differential_gradients(camera_ray(scene, pixelCentre), camera_ray_dx(scene),
                                          camera_ray_dy(scene), h.t, h.normal, h.dPdu, h.dPdv);
+}
+
+// The primary ray cone at the hit: width gamma·distance (h.t is in units of the unnormalised camera ray).
+tf_Gradients cone_gradients(SceneParams scene, vec2 pixelCentre, Hit h)
+{
+    vec3 d = camera_ray(scene, pixelCentre);
+    tf_RayCone cone = tf_ray_cone_propagate(tf_RayCone(0.0, camera_pixel_spread(scene)), h.t * length(d));
+    return tf_ray_cone_gradients(d, cone.width, h.normal, h.dPdu, h.dPdv);
+}
+
+// The uv axes that wrap with period 1, from the scene description: the tunnel's u (p0.z whole turns of the
+// texture around the axis). Quad differences there take Tarini's seam-free form.
+bvec2 scene_periodic_axes(SceneParams scene) { return bvec2(scene.kindSize.x == HARNESS_SCENE_CYLINDER, false); }
+
+// The second quantity Tarini's selection differences: uv shifted by half a period, then wrapped.
+vec2 half_period_shift(vec2 uv) { return fract(uv + 0.5); }
+
+// Tarini's selection from the differences of uv (g) and of half_period_shift(uv) (shifted), on the scene's
+// periodic axes (none: g as it is).
+tf_Gradients scene_quad_gradients(SceneParams scene, tf_Gradients g, tf_Gradients shifted)
+{
+    return tf_periodic_gradients(g, shifted, scene_periodic_axes(scene));
 }
 
 // What a pixel filters. Every lane filters, hit or miss, and the hit picks the result afterwards: behind

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 // Harness: ray-casts the scene at the pixel centre, takes 2x2 quad derivatives of uv (fine or coarse)
-// or ray differentials, filters.
+// (seam-free where uv wraps), ray differentials or ray cones, filters.
 #include "config.h"
 #include "filter_select.glsl"
 #include "gradients.glsl"
@@ -18,11 +18,14 @@ void main()
     }
     Hit h = scene_hit(scene, gl_FragCoord.xy);
     // Every lane of the quad computes uv, hit or not, before any branch.
-    tf_Gradients fine = tf_quad_gradients_fine(h.uv);
-    tf_Gradients coarse = tf_quad_gradients_coarse(h.uv);
+    // Seam-free differences where the scene's uv wraps: those of uv and of its half-period shift (gradients.glsl).
+    vec2 shifted = half_period_shift(h.uv);
+    tf_Gradients fine = scene_quad_gradients(scene, tf_quad_gradients_fine(h.uv), tf_quad_gradients_fine(shifted));
+    tf_Gradients coarse = scene_quad_gradients(scene, tf_quad_gradients_coarse(h.uv), tf_quad_gradients_coarse(shifted));
     tf_Gradients g = pc.gradients == HARNESS_GRADIENTS_COARSE ? coarse
                      : pc.gradients == HARNESS_GRADIENTS_RAY  ? ray_gradients(scene, gl_FragCoord.xy, h)
-                                                         : fine;
+                     : pc.gradients == HARNESS_GRADIENTS_CONE ? cone_gradients(scene, gl_FragCoord.xy, h)
+                                                              : fine;
     // A neighbour's q from fine differences: exact where this lane's q is 0 (the only case adoption uses).
     bvec2 odd = equal(ivec2(gl_FragCoord.xy) & 1, ivec2(1));
     vec3 q = uv_or_none(h);

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 // Harness: the environment scenes (skybox, reflect): each pixel's lookup direction from env_scene.glsl, its
-// 2x2 quad derivatives (fine or coarse) or ray differentials, filtered from the cube or lat-long map the
+// 2x2 quad derivatives (fine or coarse), ray differentials or ray cones, filtered from the cube or lat-long map the
 // variant binds (-DHARNESS_ENV); or the ground truth over the pixel's directions.
 #include "config.h"
 #include "env_select.glsl"
@@ -31,7 +31,13 @@ void main()
     EnvHit h = env_hit(scene, gl_FragCoord.xy);
     // Quad derivatives in uniform control flow: every form, then the one asked for.
     vec3 fineX = dFdxFine(h.dir), fineY = dFdyFine(h.dir), coarseX = dFdxCoarse(h.dir), coarseY = dFdyCoarse(h.dir);
-    vec3 dx = pc.gradients == HARNESS_GRADIENTS_COARSE ? coarseX : pc.gradients == HARNESS_GRADIENTS_RAY ? h.dirDx : fineX;
-    vec3 dy = pc.gradients == HARNESS_GRADIENTS_COARSE ? coarseY : pc.gradients == HARNESS_GRADIENTS_RAY ? h.dirDy : fineY;
+    vec3 dx = pc.gradients == HARNESS_GRADIENTS_COARSE ? coarseX
+              : pc.gradients == HARNESS_GRADIENTS_RAY  ? h.dirDx
+              : pc.gradients == HARNESS_GRADIENTS_CONE ? h.coneDx
+                                                       : fineX;
+    vec3 dy = pc.gradients == HARNESS_GRADIENTS_COARSE ? coarseY
+              : pc.gradients == HARNESS_GRADIENTS_RAY  ? h.dirDy
+              : pc.gradients == HARNESS_GRADIENTS_CONE ? h.coneDy
+                                                       : fineY;
     outColor = harness_env_filter(h.dir, dx * pc.gradientScale, dy * pc.gradientScale);
 }

@@ -126,4 +126,7 @@ Hit scene_hit(SceneParams scene, vec2 pixelCentre)
 vec3 camera_ray_dx(SceneParams scene) { return scene.right.xyz * (2.0 / float(scene.kindSize.y)); }
 vec3 camera_ray_dy(SceneParams scene) { return scene.up.xyz * (-2.0 / float(scene.kindSize.z)); }
 
+// The ray cone's spread angle a pixel: atan(2 tan(fov_y / 2) / height), |up| being tan(fov_y / 2).
+float camera_pixel_spread(SceneParams scene) { return atan(2.0 * length(scene.up.xyz) / float(scene.kindSize.z)); }
+
 #endif
