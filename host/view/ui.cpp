@@ -229,7 +229,7 @@ void build_ui(Viewer& v)
         if (!v.controls.message.empty())
             ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", v.controls.message.c_str());
         changed |= enum_combo("stage", next.render.stage, 0, 1, stage_name);
-        changed |= enum_combo("derivatives", next.render.gradients, HARNESS_GRADIENTS_FINE, HARNESS_GRADIENTS_RAY,
+        changed |= enum_combo("derivatives", next.render.gradients, HARNESS_GRADIENTS_FINE, HARNESS_GRADIENTS_CONE,
                               gradients_name);
         const char* views[] = {"color", "lod", "anisotropy", "fetches", "error"};
         if (ImGui::BeginCombo("view", next.view.c_str())) {
