@@ -296,10 +296,12 @@ void check_isotropic_vs_trilinear(int bits) {
 }
 
 // A Gaussian that is too wide (small alpha) blurs, measured: standard deviation of lookups over the
-// zoneplate's band of 0.2..0.45 cycles/texel, one lookup per texel (footprint 1 texel: M = 2·I). The
-// per-axis variances are 0.1717·2 (alpha 2) and 0.2396·2 texel² (alpha 0.25, nearly a flat disc); a
-// Gaussian of those attenuates a wave of f cycles/texel by exp(-2π²·var·f²), a ratio of 1.11 at
-// f = 0.2 to 1.72 at 0.45. Asserted: at least 1.3 over the band.
+// zoneplate's band of 0.2..0.45 cycles/texel, one lookup per texel, footprint 2 x 1 texels (trilinear's
+// λ = 1, where the ellipse alone filters: below it the magnification filter takes level 0's share) on
+// level 0: M = diag(5, 2). Along v the per-axis variances are 0.1717·2 (alpha 2) and 0.2396·2 texel²
+// (alpha 0.25, nearly a flat disc); a Gaussian of those attenuates a wave of f cycles/texel by
+// exp(-2π²·var·f²), a ratio of 1.11 at f = 0.2 to 1.72 at 0.45, and more along u (variances 5/2 as large).
+// Asserted: at least 1.3 over the band.
 void check_alpha_blurs() {
     const int size = 256;
     const MipChain chain = make_procedural("zoneplate", size);
@@ -308,7 +310,7 @@ void check_alpha_blurs() {
         for (int x = 0; x < size; ++x) {
             const double r = std::hypot(x + 0.5 - size / 2.0, y + 0.5 - size / 2.0);
             if (r >= 0.2 * size && r <= 0.45 * size)
-                lookups.push_back(as_float({(x + 0.5) / size, (y + 0.5) / size, 1.0 / size, 0, 0, 1.0 / size}));
+                lookups.push_back(as_float({(x + 0.5) / size, (y + 0.5) / size, 2.0 / size, 0, 0, 1.0 / size}));
         }
     auto stddev = [](const std::vector<glm::dvec4>& c) {
         double s = 0, s2 = 0;
@@ -370,7 +372,11 @@ void check_gpu_vs_reference(const std::string& texture, SamplerOptions o, const 
         edges += edge > 1e-5;
         worst = std::max(worst, err);
         const double weights = 2.5 * (3 + 6 * double(o.alpha) * kSupport);
-        worst_ratio = std::max(worst_ratio, (err - edge) / ((8 + 2 * n + weights) * kUlp + sampler));
+        // The magnification filter's share (bilinear on level 0): its texel coordinate rounds like any
+        // bilinear lookup's, 2 ulp of |x| + 1/2 an axis, times the adjacent-texel contrast.
+        const double x = std::max(std::abs(reduce_uv(lookups[i].u, o.wrap)), std::abs(reduce_uv(lookups[i].v, o.wrap))) * 256;
+        const double magnified = magnified_share(chain, o, lookups[i]) * 4 * kUlp * (x + 0.5) * adjacent;
+        worst_ratio = std::max(worst_ratio, (err - edge) / ((8 + 2 * n + weights) * kUlp + sampler + magnified));
     }
     std::printf("     %s %s: max |GPU - reference| %.3g, %d lookups with a texel on the edge\n", texture.c_str(),
                 label.c_str(), worst, edges);

@@ -173,6 +173,25 @@ def check_sat_sweep(bench, labels, c):
                 c.timing(entry, key, f"sat_sweep/{entry.get('label', '?')}")
 
 
+def check_ewa_sweep(bench, labels, c):
+    """When both ewa and ewa-hw ran: their PSNR against the Gaussian truth at 1..64 texels a pixel."""
+    sweep = c.get(bench, "ewa_sweep", "bench.json")
+    if sweep is MISSING:
+        return
+    if not isinstance(sweep, list):
+        c.problem("bench.json", "ewa_sweep: not a list")
+        return
+    expected = [1, 2, 4, 8, 16, 32, 64] if "ewa" in labels and "ewa-hw" in labels else []
+    found = [entry.get("texels_per_pixel") for entry in sweep if isinstance(entry, dict)]
+    if found != expected:
+        c.problem("bench.json", f"ewa_sweep: footprint sizes {found}, expected {expected}")
+    for entry in sweep:
+        for key in ("psnr_gaussian_manual", "psnr_gaussian_hardware"):
+            value = entry.get(key) if isinstance(entry, dict) else None
+            if not isinstance(value, (int, float)) or not math.isfinite(value) or not 0 < value < 200:
+                c.problem("bench.json", f"ewa_sweep: {key} {value!r} is not a PSNR in (0, 200) dB")
+
+
 def check_scene_data(bench, scenes, c):
     config = bench.get("config") if isinstance(bench.get("config"), dict) else {}
     if not isinstance(config.get("analytic_truth"), bool):
@@ -296,6 +315,7 @@ def check(out_dir, require_flip):
     check_scene_data(bench, scenes, c)
     count = check_results(bench, scenes, labels, c, require_flip)
     check_sat_sweep(bench, labels, c)
+    check_ewa_sweep(bench, labels, c)
     check_goals(bench, c)
     return count, c.problems
 

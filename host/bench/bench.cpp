@@ -1,5 +1,6 @@
 #include "bench/bench.h"
 #include "bench/env_bench.h"
+#include "bench/ewa_sweep.h"
 #include "core/analytic_texture.h"
 #include "vulkan/render_pipeline.h"
 #include "texture/error.h"
@@ -255,6 +256,18 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
             std::printf("minify    %-13s %8.3f ms at 2x, %8.3f ms at 64x\n", filter.label.c_str(), sweep.at_2x.median,
                         sweep.at_64x.median);
             run.sat_sweep.push_back(sweep);
+        }
+        // ewa's two tap forms against footprint size, when both run.
+        auto ran = [&](const char* label) {
+            for (const BenchFilter& f : config.filters)
+                if (f.label == label) return true;
+            return false;
+        };
+        if (ran("ewa") && ran("ewa-hw")) {
+            run.ewa_sweep = run_ewa_sweep(context, texture, chain, config);
+            for (const EwaSweepPoint& p : run.ewa_sweep)
+                std::printf("minify    ewa %4.0f texels/px: PSNR gauss manual %6.2f, hardware %6.2f (%+.2f dB)\n",
+                            p.texels_per_pixel, p.psnr_manual, p.psnr_hardware, p.psnr_hardware - p.psnr_manual);
         }
         return 0;
     });

@@ -64,6 +64,13 @@ struct SatSweep {
     TimeSummary at_2x, at_64x;
 };
 
+// ewa's footprint-size sweep (bench/ewa_sweep.h): PSNR against the Gaussian truth of the minify scene at
+// texels_per_pixel, manual and hardware taps.
+struct EwaSweepPoint {
+    double texels_per_pixel = 0;
+    double psnr_manual = 0, psnr_hardware = 0;
+};
+
 struct BenchGoal {
     std::string goal, measured, status, note; // status: met, missed, not-applicable
 };
@@ -78,6 +85,7 @@ struct BenchRun {
     std::map<SceneKind, std::string> truth_analytic; // the 2D scenes, when the texture has an analytic definition
     std::vector<BenchResult> results;
     std::vector<SatSweep> sat_sweep;
+    std::vector<EwaSweepPoint> ewa_sweep; // when both ewa and ewa-hw ran
     std::vector<BenchGoal> goals;
 };
 

@@ -91,6 +91,55 @@ bool ewa_beats_hw_aniso(const BenchRun& run, const std::string& label, std::stri
     return all && compared > 0;
 }
 
+// Issue 16: ewa's Gaussian-truth error and its flicker both below hw-aniso 16's on every scene both ran on.
+BenchGoal ewa_every_scene(const BenchRun& run, bool real_gpu)
+{
+    BenchGoal goal{"ewa: Gaussian-truth error and flicker below hw-aniso 16's on every scene", "", "", ""};
+    int compared = 0, beaten = 0;
+    std::string misses;
+    for (const BenchResult& e : run.results) {
+        if (e.filter.label != "ewa")
+            continue;
+        const BenchResult* h = find(run, e.scene, "hw-aniso16");
+        if (!h)
+            continue;
+        ++compared;
+        const bool beats = e.rmse_gaussian < h->rmse_gaussian && e.flicker_gaussian < h->flicker_gaussian;
+        beaten += beats;
+        if (!beats)
+            misses += (misses.empty() ? "" : "; ") + to_string(e.scene) + format(" %.4f", e.rmse_gaussian) +
+                      format(" vs %.4f", h->rmse_gaussian) + format(", flicker %.4f", e.flicker_gaussian) +
+                      format(" vs %.4f", h->flicker_gaussian);
+    }
+    goal.measured = std::to_string(beaten) + " of " + std::to_string(compared) + " scenes" +
+                    (misses.empty() ? "" : " (missed: " + misses + ")");
+    goal.status = compared == 0 ? not_applicable : beaten == compared ? met : missed;
+    if (!real_gpu && compared > 0)
+        goal.note = "on lavapipe; the real-GPU run decides";
+    return goal;
+}
+
+// Issue 16: ewa --taps hardware within 0.5 dB of the manual form at every footprint size of the sweep.
+BenchGoal ewa_taps_every_size(const BenchRun& run)
+{
+    BenchGoal goal{"ewa --taps hardware within 0.5 dB of --taps manual (Gaussian truth) at every footprint size", "",
+                   "", ""};
+    if (run.ewa_sweep.empty()) {
+        goal.status = not_applicable;
+        goal.note = "ewa and ewa-hw did not both run";
+        return goal;
+    }
+    double worst = INFINITY;
+    for (const EwaSweepPoint& p : run.ewa_sweep) {
+        const double behind = p.psnr_hardware - p.psnr_manual;
+        goal.measured += (goal.measured.empty() ? "" : ", ") + format("%.0f", p.texels_per_pixel) +
+                         format(" texels %+.2f dB", behind);
+        worst = std::min(worst, behind);
+    }
+    goal.status = worst >= -0.5 ? met : missed; // NaN: missed
+    return goal;
+}
+
 } // namespace
 
 std::vector<BenchGoal> judge_goals(const BenchRun& run)
@@ -138,6 +187,8 @@ std::vector<BenchGoal> judge_goals(const BenchRun& run)
     fastest.status = !real_gpu ? not_applicable : best <= 2.0 ? met : missed;
     fastest.note = best_label.empty() ? "no EWA form beat hw-aniso 16 on all three scenes" : "fastest: " + best_label;
     goals.push_back(fastest);
+    goals.push_back(ewa_every_scene(run, real_gpu));
+    goals.push_back(ewa_taps_every_size(run));
 
     // sat: four corner fetches a box whatever the footprint, so its time must not grow with it.
     for (const SatSweep& s : run.sat_sweep) {

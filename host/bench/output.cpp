@@ -107,6 +107,10 @@ std::string bench_json(const BenchRun& run)
         results.push_back(result_json(r));
     for (const SatSweep& s : run.sat_sweep)
         sweep.push_back({{"label", s.label}, {"minify_2x_ms", times(s.at_2x)}, {"minify_64x_ms", times(s.at_64x)}});
+    Json ewa_sweep = Json::array();
+    for (const EwaSweepPoint& p : run.ewa_sweep)
+        ewa_sweep.push_back({{"texels_per_pixel", p.texels_per_pixel}, {"psnr_gaussian_manual", p.psnr_manual},
+                             {"psnr_gaussian_hardware", p.psnr_hardware}});
     for (const BenchGoal& g : run.goals)
         goals.push_back({{"goal", g.goal}, {"measured", g.measured}, {"status", g.status}, {"note", g.note}});
     Json out = {{"schema", 1},
@@ -120,6 +124,7 @@ std::string bench_json(const BenchRun& run)
                 {"truth", truth},
                 {"results", results},
                 {"sat_sweep", sweep},
+                {"ewa_sweep", ewa_sweep},
                 {"goals", goals}};
     // Invalid UTF-8 (a texture path is bytes) is replaced, not thrown: the file is always written.
     return out.dump(1, ' ', false, Json::error_handler_t::replace) + "\n";

@@ -61,7 +61,6 @@ glm::dvec4 reference_cubic(const MipChain& chain, int level, double u, double v,
 }
 
 double magnified_share(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup) {
-    if (options.magnify == Reconstruction::bilinear) return 0.0;
     return 1.0 - std::min(1.0, clamp_lod(chain, reference_lod(chain, lookup, options), options));
 }
 

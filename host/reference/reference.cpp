@@ -175,10 +175,16 @@ glm::dvec4 reference_sample_texels(const MipChain& chain, const SamplerOptions& 
     case Filter::aniso:
         return reference_aniso(chain, options, reduced, texels);
     case Filter::ewa: {
-        const double share = magnified_share(chain, options, reduced); // --magnify: towards level 0's cubic
+        // Magnification: level 0's trilinear share is the magnification filter's (bilinear or --magnify's cubic;
+        // a bilinear hardware tap through the texel source's tap where it has one: the cube's device taps).
+        const double share = magnified_share(chain, options, reduced);
         if (share == 0.0) return reference_ewa(chain, options, reduced, texels);
-        const glm::dvec4 cubic = reference_cubic(chain, 0, reduced.u, reduced.v, options.wrap, options.magnify, texels);
-        return share == 1.0 ? cubic : (1.0 - share) * reference_ewa(chain, options, reduced, texels) + share * cubic;
+        const bool device_tap = options.taps == Taps::hardware && options.magnify == Reconstruction::bilinear;
+        const glm::dvec4 magnified =
+            device_tap ? reference_hardware_tap(chain, 0, reduced.u, reduced.v, options.wrap, texels)
+                       : reference_cubic(chain, 0, reduced.u, reduced.v, options.wrap, options.magnify, texels);
+        return share == 1.0 ? magnified
+                            : (1.0 - share) * reference_ewa(chain, options, reduced, texels) + share * magnified;
     }
     case Filter::bspline:
         return reference_cubic(chain, 0, reduced.u, reduced.v, options.wrap, Reconstruction::bspline, texels);

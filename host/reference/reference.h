@@ -79,8 +79,8 @@ glm::dvec4 reference_hardware_tap(const MipChain& chain, int level, double u, do
 double cubic_kernel(double d, Reconstruction kernel);
 glm::dvec4 reference_cubic(const MipChain& chain, int level, double u, double v, Wrap wrap, Reconstruction kernel,
                            const TexelSource& texels = {});
-// --magnify: the share of level 0 in trilinear at this lookup's LOD, 1 - clamp(lambda, 0, 1) (0 for bilinear):
-// how far ewa moves towards the cubic of level 0 (shaders/texfilter/ewa.glsl).
+// The share of level 0 in trilinear at this lookup's LOD, 1 - clamp(lambda, 0, 1): how far ewa moves towards
+// the magnification filter of level 0 (bilinear, or --magnify's cubic; shaders/texfilter/ewa.glsl).
 double magnified_share(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
 
 // Trilinear at a given LOD (clamped to [0, levels-1]): the building block of probes and hardware taps. Level 0

@@ -13,8 +13,12 @@
 //          tf_ewa(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha,
 //                 float maxAniso).
 // Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as everywhere (common.glsl, lod.glsl). TF_MAGNIFY
-//   (common.glsl, bicubic.glsl): where trilinear would read level 0 (its λ < 1), the result moves towards
-//   TF_MAGNIFY's cubic of level 0 by level 0's trilinear share, 1 − clamp(λ, 0, 1) (the cubic alone at λ <= 0).
+//   (common.glsl, bicubic.glsl): the magnification filter (below).
+// Magnification (issue 16): where trilinear would read level 0 (its λ = tf_lod < 1), the result moves towards
+//   the magnification filter's value of level 0 (bilinear, Vulkan's LINEAR magFilter, or TF_MAGNIFY's cubic)
+//   by level 0's trilinear share, 1 − clamp(λ, 0, 1): that filter alone at λ <= 0, the ellipse alone from λ = 1.
+//   The ellipse's one-texel reconstruction term (M = J·Jᵀ + I) is a Gaussian of σ ½ texel, blurrier than the
+//   tent: on the zoom scene it cost 11.4 dB against the Gaussian truth and 3.5x the flicker (lavapipe, 128²).
 //          alpha (2, as pbrt, is the usual choice): weight exp(-alpha r²) - exp(-alpha R²), clamped to
 //            [0, 64]; NaN or negative -> 0 (then 1 - r²/R²). Smaller alpha = a wider Gaussian = blurrier.
 //          maxAniso (e.g. 16): largest major/minor axis ratio; a thinner ellipse has its minor axis
@@ -54,8 +58,8 @@
 //   (tf_ewa_hw: K/2+1 rows of K/2+1 2x2 blocks). Where the LOD clamps (lodMax, lodBias) leave a
 //   support whose bounding box is wider than K texels, it is shrunk, same shape, to fit (so it then
 //   aliases, like any LOD clamp). A 1x1 level is read once, whatever the ellipse.
-// Degenerate input (docs/API.md): zero gradients -> lodMin's level (0 by default) with M = I, a
-//   one-texel Gaussian around uv; huge (1e30, 3e38) -> the coarsest level the clamps allow (normally
+// Degenerate input (docs/API.md): zero gradients -> λ = −∞: the magnification filter on level 0 (with
+//   lodMin >= 1: lodMin's level with M = I, a one-texel Gaussian around uv); huge (1e30, 3e38) -> the coarsest level the clamps allow (normally
 //   the last, 1x1: the texture's mean); NaN or ±Inf in any component, or a footprint entry
 //   (gradient·size) past float range -> that same level with M = I. Non-finite uv returns vec4(0);
 //   huge finite uv is first moved by whole periods (tf_reduce_uv), in both forms.
@@ -407,12 +411,12 @@ vec4 tfi_ewa_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
         return vec4(0.0);
     uv = tf_reduce_uv(uv, s.wrap);
     float a = alpha >= 0.0 ? min(alpha, 64.0) : 0.0;
-    float cubicShare = 0.0; // TF_MAGNIFY: level 0's share in trilinear, which the cubic takes
-    if (TF_MAGNIFY != TF_RECONSTRUCT_BILINEAR)
-        cubicShare = 1.0 - clamp(tf_lod(TFI_A, dUVdx, dUVdy, s), 0.0, 1.0);
-    vec4 cubic = cubicShare > 0.0 ? tfi_magnified_level0(TFI_A, uv TFI_XA, s.wrap, hardware) : vec4(0.0);
-    if (cubicShare == 1.0)
-        return cubic;
+    // Magnification: level 0's share in trilinear (1 − λ, λ trilinear's LOD) is the magnification filter's
+    // (TF_MAGNIFY: bilinear, Vulkan's LINEAR magFilter, unless a cubic is asked for) instead of the ellipse.
+    float magnifyShare = 1.0 - clamp(tf_lod(TFI_A, dUVdx, dUVdy, s), 0.0, 1.0);
+    vec4 magnified = magnifyShare > 0.0 ? tfi_magnified_level0(TFI_A, uv TFI_XA, s.wrap, hardware) : vec4(0.0);
+    if (magnifyShare == 1.0)
+        return magnified;
     float lambda;
     tfi_EwaShape shape = tfi_ewa_shape(TFI_A, dUVdx, dUVdy, s, maxAniso, lambda);
     float f;
@@ -420,7 +424,7 @@ vec4 tfi_ewa_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
 #define TFI_EWA_LEVEL(level) tfi_ewa_on_level(TFI_A, uv TFI_XA, level, s.wrap, shape, a, hardware)
     vec4 ewa = TFI_BLEND_LEVELS(TFI_EWA_LEVEL, lo, f);
 #undef TFI_EWA_LEVEL
-    return cubicShare > 0.0 ? mix(ewa, cubic, cubicShare) : ewa;
+    return magnifyShare > 0.0 ? mix(ewa, magnified, magnifyShare) : ewa;
 }
 
 #if TFI_MANUAL
