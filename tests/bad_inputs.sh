@@ -238,6 +238,26 @@ bad_flag_values() {
         out.png -- "${RENDER[@]}" --magnify bogus -o out.png
     expect_error "--magnify on bilinear" "--magnify bspline applies to trilinear, aniso and ewa" out.png -- \
         "$TEXFILTER" render --scene zoom --texture checker --filter bilinear --magnify bspline "${REF[@]}" -o out.png
+    # --stochastic / --accumulate: the noise, the filters that take it, the frame count, the combinations.
+    local stoch=("$TEXFILTER" render --scene zoom --texture checker --filter trilinear "${REF[@]}")
+    expect_error "--stochastic bogus" "bad value for --stochastic: 'bogus' is not a noise (expected white or blue)" \
+        out.png -- "${stoch[@]}" --stochastic bogus -o out.png
+    expect_error "--stochastic on sat" "--stochastic applies to bilinear, trilinear, aniso and ewa" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter sat --stochastic white "${REF[@]}" -o out.png
+    expect_error "--stochastic with --magnify" "--stochastic reads level 0 bilinearly" out.png -- \
+        "${stoch[@]}" --stochastic blue --magnify bspline -o out.png
+    expect_error "--accumulate 0" "bad value for --accumulate: 0 (expected 1..4096 frames)" out.png -- \
+        "${stoch[@]}" --stochastic white --accumulate 0 -o out.png
+    expect_error "--accumulate 4097" "bad value for --accumulate: 4097" out.png -- \
+        "${stoch[@]}" --stochastic white --accumulate 4097 -o out.png
+    expect_error "--accumulate 2.5" "bad value for --accumulate: '2.5'" out.png -- \
+        "${stoch[@]}" --stochastic white --accumulate 2.5 -o out.png
+    expect_error "--accumulate without --stochastic" "--accumulate 8 needs --stochastic white|blue" out.png -- \
+        "${stoch[@]}" --accumulate 8 -o out.png
+    expect_error "--stochastic ewa --taps hardware on the reference" "has no CPU reference" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter ewa --taps hardware --stochastic white "${REF[@]}" -o out.png
+    expect_error "--stochastic on an environment scene" "--stochastic is not available on the environment scenes" \
+        out.png -- "$TEXFILTER" render --scene skybox --texture checker --filter trilinear --stochastic white "${REF[@]}" -o out.png
     # Quad derivatives: bad values, and combinations the mesh scene cannot do.
     expect_error "--stage bogus" --stage out.png -- "${RENDER[@]}" --stage bogus -o out.png
     expect_error "--derivatives bogus" --derivatives out.png -- "${RENDER[@]}" --derivatives bogus -o out.png

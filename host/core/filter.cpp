@@ -125,6 +125,46 @@ void check_magnify(const SamplerOptions& options) {
                     (options.filter == Filter::bilinear ? " (--filter " + to_string(options.magnify) + " is that cubic alone)" : ""));
 }
 
+bool takes_stochastic(Filter filter)
+{
+    return filter == Filter::bilinear || filter == Filter::trilinear || filter == Filter::aniso || filter == Filter::ewa;
+}
+
+Noise parse_noise(const std::string& name)
+{
+    if (name == "white") return Noise::white;
+    if (name == "blue") return Noise::blue;
+    throw Error("'" + name + "' is not a noise (expected white or blue)");
+}
+
+std::string to_string(Noise noise) { return noise == Noise::blue ? "blue" : "white"; }
+
+void check_stochastic(const SamplerOptions& options)
+{
+    if (options.accumulate < 1 || options.accumulate > HARNESS_MAX_ACCUMULATE)
+        throw Error("bad value for --accumulate: " + std::to_string(options.accumulate) + " (expected 1.." +
+                    std::to_string(HARNESS_MAX_ACCUMULATE) + " frames)");
+    if (!options.stochastic) {
+        if (options.accumulate != 1)
+            throw Error("--accumulate " + std::to_string(options.accumulate) +
+                        " needs --stochastic white|blue (a deterministic filter gives the same frame every time)");
+        return;
+    }
+    if (!takes_stochastic(options.filter))
+        throw Error("--stochastic applies to bilinear, trilinear, aniso and ewa (their one-texel forms), not to --filter " +
+                    to_string(options.filter));
+    if (options.magnify != Reconstruction::bilinear)
+        throw Error("--stochastic reads level 0 bilinearly: it does not combine with --magnify " +
+                    to_string(options.magnify));
+    if (options.stochastic_first > (1u << 28))
+        throw Error("--stochastic: first frame " + std::to_string(options.stochastic_first) + " is past 2^28");
+}
+
+int32_t stochastic_push(const SamplerOptions& options, uint32_t frame)
+{
+    return options.stochastic ? int32_t(((frame & 0x1fffffffu) << 2) | uint32_t(options.noise)) : 0;
+}
+
 TruthRange truth_range(const SamplerOptions& options)
 {
     const int side = options.truth_side;

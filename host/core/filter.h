@@ -3,6 +3,7 @@
 // are the ids the harness shaders compare with (shaders/harness/config.h; checked in
 // scene/shader_interface.h), so the order here is free.
 #include "harness/config.h"
+#include "core/stochastic_noise.h"
 #include <string>
 #include <vector>
 
@@ -107,6 +108,13 @@ struct SamplerOptions {
     // texture's name by resolve_analytic_truth (core/analytic_texture.h); the size is level 0's width.
     Truth truth = Truth::texels;
     AnalyticKind analytic = AnalyticKind::none;
+    // --stochastic (bilinear, trilinear, aniso, ewa): the one-texel forms of shaders/texfilter/stochastic.glsl
+    // with `noise`'s random numbers (core/stochastic_noise.h); a render is the mean of `accumulate` frames,
+    // frames stochastic_first .. stochastic_first + accumulate - 1, each with its own numbers.
+    bool stochastic = false;
+    Noise noise = Noise::white;
+    int accumulate = 1; // 1..HARNESS_MAX_ACCUMULATE
+    uint32_t stochastic_first = 0;
 };
 
 // The ground truth's sample range of `options`, resolved: count 0 becomes the rest of the grid. Throws
@@ -119,5 +127,14 @@ TruthRange truth_range(const SamplerOptions& options);
 
 // Throws tf::Error naming the filter when options.magnify is not bilinear on a filter that does not take it.
 void check_magnify(const SamplerOptions& options);
+
+bool takes_stochastic(Filter filter); // --stochastic applies: bilinear, trilinear, aniso, ewa
+Noise parse_noise(const std::string& name); // white | blue
+std::string to_string(Noise noise);
+// Throws tf::Error naming what is wrong: --stochastic on another filter or with --magnify, accumulate outside
+// 1..HARNESS_MAX_ACCUMULATE, accumulate > 1 without --stochastic.
+void check_stochastic(const SamplerOptions& options);
+// The push constant of frame `frame` (shaders/harness/stochastic_noise.glsl): frame * 4 + the noise id; 0 off.
+int32_t stochastic_push(const SamplerOptions& options, uint32_t frame);
 
 } // namespace tf

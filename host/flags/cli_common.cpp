@@ -4,6 +4,7 @@
 #include "vulkan/device_memory_check.h"
 #include "texture/error.h"
 #include "core/memory_budget.h"
+#include <algorithm>
 #include <cstdlib>
 
 namespace tf {
@@ -48,6 +49,10 @@ std::vector<FlagSpec> sampler_flags(SamplerFlags which)
     if (scenes) {
         flags.push_back({"--pixel-filter", "P", "ground-truth: box (over the pixel, default) or gaussian (sigma 0.5 px)"});
         flags.push_back({"--spp", "N", "ground-truth: samples a pixel, a square number 1..4096 (default 256)"});
+        flags.push_back({"--stochastic", "NOISE", "bilinear, trilinear, aniso, ewa: one texel (or, with --taps hardware, "
+                                                  "one tap) a lookup, chosen by its weight from white or blue noise"});
+        flags.push_back({"--accumulate", "N", "--stochastic: the mean of N frames, each with its own random numbers, "
+                                              "1..4096 (default 1: one noisy frame)"});
         flags.push_back({"--truth", "T", "ground-truth: what it integrates, texels (level 0 reconstructed bilinearly, "
                                          "default) or analytic (the function of checker, zoneplate or grid)"});
     }
@@ -128,6 +133,19 @@ SamplerOptions sampler_options_from(const Args& args)
     if (args.has("--truth") && options.filter != Filter::ground_truth)
         throw Error("--truth applies to --filter ground-truth only (what the truth integrates), not to --filter " +
                     to_string(options.filter));
+    if (args.has("--stochastic")) {
+        options.stochastic = true;
+        options.noise = parse_flag(args, "--stochastic", "", parse_noise);
+    }
+    if (args.has("--accumulate")) {
+        const std::string n = args.get("--accumulate", "");
+        char* end = nullptr;
+        const long value = std::strtol(n.c_str(), &end, 10);
+        if (n.empty() || *end != '\0')
+            throw Error("bad value for --accumulate: '" + n + "' (expected a whole number of frames, 1..4096)");
+        options.accumulate = int(std::clamp(value, -1L, long(HARNESS_MAX_ACCUMULATE) + 1));
+    }
+    check_stochastic(options); // --accumulate's range, the filter, --magnify
     options.lod_bias = float(args.get_double("--lod-bias", 0.0, -16.0, 16.0));
     options.lod_min = float(args.get_double("--lod-min", 0.0, 0.0, 1000.0));
     options.lod_max = float(args.get_double("--lod-max", 1000.0, 0.0, 1000.0));

@@ -2,6 +2,7 @@
 #include "reference/debug_view.h"
 #include "reference/footprint.h"
 #include "reference/ground_truth.h"
+#include "reference/stochastic.h"
 #include "texture/threads.h"
 #include <algorithm>
 #include <optional>
@@ -27,6 +28,8 @@ Image reference_render(const SceneParams& scene, const MipChain& chain, const Sa
     check_reference_view(render.view);
     if (options.filter == Filter::ground_truth)
         return reference_ground_truth(scene, chain, options);
+    if (options.stochastic && render.view == DebugView::color)
+        return reference_render_stochastic(scene, chain, options, render);
     int width = scene.kind_size.y, height = scene.kind_size.z;
     // The stage does not change the math: compute quads are the fragment stage's quads.
     std::vector<PixelLookup> lookups = reference_lookups(scene, render.gradients, render.rasterize);

@@ -40,9 +40,11 @@ struct PushConstants {
     int32_t compare_op;       // sample, shadow kind: VkCompareOp of the manual filters' comparison
     float dref;               // sample, shadow kind: the reference depth
     int32_t truth_analytic;   // ground-truth: HARNESS_ANALYTIC_* (tf::AnalyticKind; NONE: the texels)
-    int32_t padding[1];       // the block's size is a multiple of its 16-byte alignment
+    int32_t stochastic;       // --stochastic: frame * 4 + HARNESS_NOISE_* (stochastic_push); 0 off. The last slot:
+                              // HARNESS_PUSH_SIZE is 128
 };
 static_assert(offsetof(PushConstants, wrap_mode) == HARNESS_PUSH_WRAP_MODE);
+static_assert(offsetof(PushConstants, stochastic) == HARNESS_PUSH_STOCHASTIC);
 static_assert(offsetof(PushConstants, lod_bias) == HARNESS_PUSH_LOD_BIAS);
 static_assert(offsetof(PushConstants, lod_min) == HARNESS_PUSH_LOD_MIN);
 static_assert(offsetof(PushConstants, lod_max) == HARNESS_PUSH_LOD_MAX);

@@ -148,6 +148,8 @@ PushConstants make_push_constants(const SamplerOptions& options, uint32_t count,
                        {sat_scale.x, sat_scale.y, sat_scale.z, sat_scale.w},
                        truth.first, truth.count, 1.0f, 0};
     push.truth_analytic = int32_t(analytic ? options.analytic : AnalyticKind::none);
+    check_stochastic(options);
+    push.stochastic = stochastic_push(options, options.stochastic_first); // gpu_render steps it a frame at a time
     return push;
 }
 

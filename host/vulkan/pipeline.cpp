@@ -6,17 +6,18 @@ namespace tf {
 
 namespace {
 
-// The filter as HARNESS_SPEC_FILTER, the reconstruction as HARNESS_SPEC_MAGNIFY (shaders that declare only the
-// first ignore the second); info points into the struct, so keep it alive until the pipeline is made.
+// The filter as HARNESS_SPEC_FILTER, the reconstruction as HARNESS_SPEC_MAGNIFY, --stochastic as
+// HARNESS_SPEC_STOCHASTIC (shaders that declare only the first ignore the others); info points into the struct, so keep it alive until the pipeline is made.
 struct FilterSpecialization {
-    int32_t ids[2];
-    VkSpecializationMapEntry entries[2];
+    int32_t ids[3];
+    VkSpecializationMapEntry entries[3];
     VkSpecializationInfo info;
 
     explicit FilterSpecialization(FilterVariant variant)
-        : ids{int32_t(variant.filter), int32_t(variant.magnify)},
-          entries{{HARNESS_SPEC_FILTER, 0, sizeof(int32_t)}, {HARNESS_SPEC_MAGNIFY, sizeof(int32_t), sizeof(int32_t)}},
-          info{2, entries, sizeof(ids), ids}
+        : ids{int32_t(variant.filter), int32_t(variant.magnify), variant.stochastic ? 1 : 0},
+          entries{{HARNESS_SPEC_FILTER, 0, sizeof(int32_t)}, {HARNESS_SPEC_MAGNIFY, sizeof(int32_t), sizeof(int32_t)},
+                  {HARNESS_SPEC_STOCHASTIC, 2 * sizeof(int32_t), sizeof(int32_t)}},
+          info{3, entries, sizeof(ids), ids}
     {
     }
     FilterSpecialization(const FilterSpecialization&) = delete;

@@ -14,11 +14,15 @@ namespace tf {
 struct FilterVariant {
     Filter filter = Filter::nearest;
     Reconstruction magnify = Reconstruction::bilinear;
+    bool stochastic = false; // --stochastic: HARNESS_SPEC_STOCHASTIC 1, the one-texel forms
     FilterVariant(Filter f) : filter(f) {} // NOLINT: implicit, most pipelines vary by filter alone
-    FilterVariant(Filter f, Reconstruction m) : filter(f), magnify(m) {}
+    FilterVariant(Filter f, Reconstruction m, bool s = false) : filter(f), magnify(m), stochastic(s) {}
     bool operator==(const FilterVariant&) const = default;
 };
-inline FilterVariant filter_variant(const SamplerOptions& options) { return {options.filter, options.magnify}; }
+inline FilterVariant filter_variant(const SamplerOptions& options)
+{
+    return {options.filter, options.magnify, options.stochastic};
+}
 
 struct ShaderCode {
     const uint32_t* words;

@@ -8,6 +8,7 @@
 #include "vulkan/mesh.h"
 #include "vulkan/readback.h"
 #include <cstring>
+#include <vector>
 
 namespace tf {
 
@@ -93,7 +94,20 @@ Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const 
                  const SamplerOptions& options, const RenderOptions& render, RenderPipelineCache* cache)
 {
     std::unique_ptr<GpuRenderer> renderer = create_renderer(context, texture, scene, options, render, cache);
-    return render_frame(*renderer, scene);
+    if (!options.stochastic || options.accumulate <= 1)
+        return render_frame(*renderer, scene);
+    // --stochastic --accumulate N: the mean of N frames, each with its own random numbers (summed in double).
+    std::vector<glm::dvec4> sum(size_t(renderer->width) * renderer->height, glm::dvec4(0.0));
+    Image frame;
+    for (int f = 0; f < options.accumulate; ++f) {
+        renderer->push.stochastic = stochastic_push(options, options.stochastic_first + uint32_t(f));
+        frame = render_frame(*renderer, scene);
+        for (size_t i = 0; i < sum.size(); ++i)
+            sum[i] += glm::dvec4(frame.texels[i]);
+    }
+    for (size_t i = 0; i < sum.size(); ++i)
+        frame.texels[i] = glm::vec4(sum[i] / double(options.accumulate));
+    return frame;
 }
 
 } // namespace tf

@@ -146,6 +146,7 @@
 #define HARNESS_PUSH_COMPARE_OP 112  // sample, shadow kind: VkCompareOp of the manual filters' comparison
 #define HARNESS_PUSH_DREF 116        // sample, shadow kind: the reference depth
 #define HARNESS_PUSH_TRUTH_ANALYTIC 120 // ground-truth: HARNESS_ANALYTIC_* (--truth analytic), NONE for the texels
+#define HARNESS_PUSH_STOCHASTIC 124  // --stochastic: frame * 4 + HARNESS_NOISE_* (stochastic_noise.glsl); 0 off
 #define HARNESS_PUSH_SIZE 128        // padded to a multiple of 16, the block's alignment (vec4 members); 128 is
                                      // Vulkan's least maxPushConstantsSize: nothing more fits
 
@@ -164,6 +165,13 @@
 
 #define HARNESS_SPEC_FILTER 0 // specialization constant id of the filter (HARNESS_FILTER_*)
 #define HARNESS_SPEC_MAGNIFY 1 // specialization constant id of level 0's reconstruction (HARNESS_RECONSTRUCT_*)
+#define HARNESS_SPEC_STOCHASTIC 2 // specialization constant id: 1 = the stochastic forms (stochastic.glsl), 0 = not
+
+// --stochastic: the random numbers of the one-texel forms (tf::Noise; shaders/harness/stochastic_noise.glsl,
+// host/core/stochastic_noise.h): white (an integer hash) or blue (a Cranley-Patterson rotated R3 sequence).
+#define HARNESS_NOISE_WHITE 1
+#define HARNESS_NOISE_BLUE 2
+#define HARNESS_MAX_ACCUMULATE 4096 // --accumulate N: 1..this frames averaged
 
 // GPU builds (build_mip.comp.glsl, build_sat.comp.glsl): their own descriptor sets and push constants.
 #define HARNESS_MIP_MAX_LEVELS 15  // 16384 a side: 1 + log2(16384) levels, one storage view each

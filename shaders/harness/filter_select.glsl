@@ -37,6 +37,7 @@ uint hwLookupCount = 0u;
 #define TF_MAGNIFY MAGNIFY_ID
 #include "texfilter/texfilter.glsl"
 #include "texfilter/debug.glsl"
+#include "stochastic_noise.glsl"
 
 // The options the host passes through unchanged are the includes' own ids.
 #if HARNESS_WRAP_REPEAT != TF_WRAP_REPEAT || HARNESS_WRAP_CLAMP != TF_WRAP_CLAMP || \
@@ -60,6 +61,8 @@ uint hwLookupCount = 0u;
 // HARNESS_GRAD the hw-* modes' lookup, HARNESS_SIZE0 / HARNESS_LEVELS the queries of the debug views.
 // sample's lookup index (bindless: which texture a lookup reads); 0 in render.
 uint harnessLookupIndex = 0u;
+// render's pixel (--stochastic: the random numbers are a function of pixel, frame and lookup); (0, 0) in sample.
+ivec2 harnessPixel = ivec2(0);
 
 #if HARNESS_RESOURCE == HARNESS_RESOURCE_COMBINED || HARNESS_RESOURCE == HARNESS_RESOURCE_BINDLESS || \
     HARNESS_RESOURCE == HARNESS_RESOURCE_UINT || HARNESS_RESOURCE == HARNESS_RESOURCE_SINT || \
@@ -151,10 +154,44 @@ layout(set = 0, binding = HARNESS_BINDING_SAMPLER) uniform samplerShadow u_sampl
 #error "HARNESS_RESOURCE: unknown resource kind"
 #endif
 
+// --stochastic: the one-texel (or one-tap) forms of stochastic.glsl, xi from stochastic_noise.glsl. Only in
+// pipelines specialised with STOCHASTIC_ID 1 (the host allows it on bilinear, trilinear, aniso and ewa).
+vec4 harness_filter_stochastic(vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, bool hardwareTaps)
+{
+    vec3 xi = stochastic_xi(pc.stochastic, harnessPixel, harnessLookupIndex);
+    switch (FILTER_ID) {
+#ifdef HARNESS_TEX_HW
+    case HARNESS_FILTER_BILINEAR:
+        return hardwareTaps ? tf_bilinear_stochastic_hw(HARNESS_TEX_HW, uv HARNESS_X_HW, s, xi)
+                            : tf_bilinear_stochastic(HARNESS_TEX, uv HARNESS_X, s, xi);
+    case HARNESS_FILTER_TRILINEAR:
+        return hardwareTaps ? tf_trilinear_stochastic_hw(HARNESS_TEX_HW, uv HARNESS_X_HW, dUVdx, dUVdy, s, xi)
+                            : tf_trilinear_stochastic(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, xi);
+    case HARNESS_FILTER_ANISO:
+        return hardwareTaps
+                   ? tf_aniso_stochastic_hw(HARNESS_TEX_HW, uv HARNESS_X_HW, dUVdx, dUVdy, s, pc.probes, pc.anisoShape, xi)
+                   : tf_aniso_stochastic(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.probes, pc.anisoShape, xi);
+    case HARNESS_FILTER_EWA:
+        return hardwareTaps ? tf_ewa_stochastic_hw(HARNESS_TEX_HW, uv HARNESS_X_HW, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso, xi)
+                            : tf_ewa_stochastic(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso, xi);
+#else
+    case HARNESS_FILTER_BILINEAR: return tf_bilinear_stochastic(HARNESS_TEX, uv HARNESS_X, s, xi);
+    case HARNESS_FILTER_TRILINEAR: return tf_trilinear_stochastic(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, xi);
+    case HARNESS_FILTER_ANISO:
+        return tf_aniso_stochastic(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.probes, pc.anisoShape, xi);
+    case HARNESS_FILTER_EWA:
+        return tf_ewa_stochastic(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso, xi);
+#endif
+    default: return vec4(0.0); // refused by the host
+    }
+}
+
 vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
 {
     tf_Sampler s = tf_Sampler(pc.wrapMode, pc.lodBias, pc.lodMin, pc.lodMax);
     bool hardwareTaps = pc.taps == TF_TAPS_HARDWARE;
+    if (STOCHASTIC_ID != 0)
+        return harness_filter_stochastic(uv, dUVdx, dUVdy, s, hardwareTaps);
     switch (FILTER_ID) {
     case HARNESS_FILTER_NEAREST: return tf_nearest(HARNESS_TEX, uv HARNESS_X, s);
     case HARNESS_FILTER_BILINEAR: return tf_bilinear(HARNESS_TEX, uv HARNESS_X, s);

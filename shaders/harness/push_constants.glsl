@@ -12,6 +12,9 @@ layout(constant_id = HARNESS_SPEC_FILTER) const int FILTER_ID = 0;
 // trilinear, aniso, ewa: level 0's reconstruction, the includes' TF_MAGNIFY (filter_select.glsl); a constant,
 // so a pipeline that does not magnify with a cubic has none of its code.
 layout(constant_id = HARNESS_SPEC_MAGNIFY) const int MAGNIFY_ID = HARNESS_RECONSTRUCT_BILINEAR;
+// bilinear, trilinear, aniso, ewa: 1 = their one-texel stochastic forms (--stochastic), a constant so that the
+// deterministic pipelines hold none of that code.
+layout(constant_id = HARNESS_SPEC_STOCHASTIC) const int STOCHASTIC_ID = 0;
 
 // tf::PushConstants (host/scene/shader_interface.h): both sides take the offsets from config.h.
 layout(push_constant) uniform PushConstants {
@@ -44,6 +47,7 @@ layout(push_constant) uniform PushConstants {
     layout(offset = HARNESS_PUSH_COMPARE_OP) int compareOp; // sample, shadow: VkCompareOp (manual filters)
     layout(offset = HARNESS_PUSH_DREF) float dref;          // sample, shadow: the reference depth
     layout(offset = HARNESS_PUSH_TRUTH_ANALYTIC) int truthAnalytic; // ground-truth: HARNESS_ANALYTIC_*
+    layout(offset = HARNESS_PUSH_STOCHASTIC) int stochastic; // --stochastic: frame * 4 + HARNESS_NOISE_*
 } pc;
 
 #endif

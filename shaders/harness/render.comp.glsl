@@ -37,6 +37,7 @@ void main()
     [[unroll]] for (int step = 0; step < 2; ++step)
         q = adopt_uv(q, subgroupQuadSwapHorizontal(q), subgroupQuadSwapVertical(q));
     PixelLookup l = pixel_lookup(h, g, q);
+    harnessPixel = pixel;
     vec4 color = harness_shade(l.uv, l.dUVdx, l.dUVdy);
     if (all(lessThan(pixel, size)))
         pixels[pixel.y * size.x + pixel.x] = h.hit ? color : scene.background;

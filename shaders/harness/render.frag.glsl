@@ -34,6 +34,7 @@ void main()
         q = adopt_uv(q, q + (odd.x ? -dx : dx), q + (odd.y ? -dy : dy));
     }
     PixelLookup l = pixel_lookup(h, g, q);
+    harnessPixel = ivec2(gl_FragCoord.xy);
     vec4 color = harness_shade(l.uv, l.dUVdx, l.dUVdy);
     outColor = h.hit ? color : scene.background;
 }

@@ -86,6 +86,7 @@
 #define TFI_FAMILY_CUBE 10
 #define TFI_FAMILY_LATLONG 11
 #define TFI_FAMILY_BICUBIC 12
+#define TFI_FAMILY_STOCHASTIC 13
 
 // Cost hooks: define these before the first include to count work (the harness's `sample --stats`
 // does); by default they vanish. n texels read with texelFetch / n hardware filtered lookups.

@@ -28,6 +28,8 @@
 #include "latlong.glsl"
 #elif TFI_FAMILY == TFI_FAMILY_BICUBIC
 #include "bicubic.glsl"
+#elif TFI_FAMILY == TFI_FAMILY_STOCHASTIC
+#include "stochastic.glsl"
 #else
 #error "texfilter/family.glsl: unknown TFI_FAMILY"
 #endif

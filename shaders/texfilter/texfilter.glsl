@@ -1,5 +1,6 @@
 // texfilter/texfilter.glsl — umbrella include: every texfilter include at once (version, common,
-// derivatives, lod, nearest, bilinear, bicubic, trilinear, brilinear, aniso, ewa, sat, cube, latlong).
+// derivatives, lod, nearest, bilinear, bicubic, trilinear, brilinear, aniso, ewa, sat, cube, latlong,
+// stochastic).
 //
 // Use:     #extension GL_GOOGLE_include_directive : require
 //          #include "texfilter/texfilter.glsl"   // compile with -I<dir holding texfilter/>
@@ -39,5 +40,6 @@
 #include "sat.glsl"
 #include "cube.glsl"
 #include "latlong.glsl"
+#include "stochastic.glsl"
 
 #endif
