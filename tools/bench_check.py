@@ -192,6 +192,33 @@ def check_ewa_sweep(bench, labels, c):
                 c.problem("bench.json", f"ewa_sweep: {key} {value!r} is not a PSNR in (0, 200) dB")
 
 
+def check_stochastic(bench, labels, c):
+    """Stochastic rows (not in --quick): each with a frame time and finite errors after 1, 4, 16, 64 frames."""
+    rows = c.get(bench, "stochastic", "bench.json")
+    if rows is MISSING:
+        return
+    if not isinstance(rows, list):
+        c.problem("bench.json", "stochastic: not a list")
+        return
+    quick = isinstance(bench.get("config"), dict) and bench["config"].get("quick") is True
+    if quick and rows:
+        c.problem("bench.json", "stochastic: rows in a --quick run")
+    for row in rows:
+        where = f"stochastic/{row.get('label', '?')}/{row.get('noise', '?')}" if isinstance(row, dict) else "stochastic"
+        if not isinstance(row, dict) or row.get("label") not in labels or row.get("noise") not in ("white", "blue"):
+            c.problem(where, "expected a label of the run and noise white or blue")
+            continue
+        c.timing(row, "frame_ms", where)
+        if row.get("frames") != [1, 4, 16, 64]:
+            c.problem(where, f"frames {row.get('frames')!r}, expected [1, 4, 16, 64]")
+        for truth in TRUTHS:
+            errors = row.get("error", {}).get(truth) if isinstance(row.get("error"), dict) else None
+            if not isinstance(errors, list) or len(errors) != 4 or not all(
+                    isinstance(e, dict) and isinstance(e.get("rmse"), (int, float)) and math.isfinite(e["rmse"])
+                    for e in errors):
+                c.problem(where, f"error.{truth}: expected 4 finite rmse values")
+
+
 def check_scene_data(bench, scenes, c):
     config = bench.get("config") if isinstance(bench.get("config"), dict) else {}
     if not isinstance(config.get("analytic_truth"), bool):
@@ -316,6 +343,7 @@ def check(out_dir, require_flip):
     count = check_results(bench, scenes, labels, c, require_flip)
     check_sat_sweep(bench, labels, c)
     check_ewa_sweep(bench, labels, c)
+    check_stochastic(bench, labels, c)
     check_goals(bench, c)
     return count, c.problems
 

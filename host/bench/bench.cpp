@@ -1,6 +1,7 @@
 #include "bench/bench.h"
 #include "bench/env_bench.h"
 #include "bench/ewa_sweep.h"
+#include "bench/stochastic_bench.h"
 #include "core/analytic_texture.h"
 #include "vulkan/render_pipeline.h"
 #include "texture/error.h"
@@ -240,6 +241,9 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
                 print_result(r);
             }
             set_vs_hw_trilinear(run, first);
+            // Stochastic filtering on the first 2D scene of the run (its cost: 64 frames a filter and noise).
+            if (config.stochastic && run.stochastic.empty())
+                run.stochastic = run_stochastic_rows(context, texture, config, kind, scene, truth_box[0], truth_gaussian[0]);
         }
         // sat's cost against footprint size: the same four corners per box whatever the footprint.
         for (const BenchFilter& filter : config.filters) {

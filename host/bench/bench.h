@@ -37,6 +37,7 @@ struct BenchConfig {
     TextureSource texture;
     int truth_side = 16; // 256 samples a pixel
     bool truth_on_cpu = false; // the CPU reference's ground truth instead of the device's
+    bool stochastic = true; // the stochastic rows (bench/stochastic_bench.h); off in --quick
     int warmup = 5, frames = 20, flicker_frames = 8;
     FrameTimer timer = FrameTimer::timestamps; // the wall clock on CPU devices (see vulkan/frame_timer.h)
     std::vector<SceneKind> scenes;
@@ -64,6 +65,17 @@ struct SatSweep {
     TimeSummary at_2x, at_64x;
 };
 
+// Stochastic filtering (bench/stochastic_bench.h) on one scene: a filter with --stochastic NOISE, the time of
+// one frame and the error of the mean of the first 1, 4, 16 and 64 frames against the box and Gaussian truths.
+struct StochasticRow {
+    SceneKind scene = SceneKind::plane;
+    std::string label; // the bench filter's label (bilinear, trilinear, aniso16, ewa)
+    Noise noise = Noise::white;
+    TimeSummary time;  // one frame
+    std::vector<int> frames; // 1, 4, 16, 64
+    std::vector<double> rmse_box, rmse_gaussian; // after frames[k] frames
+};
+
 // ewa's footprint-size sweep (bench/ewa_sweep.h): PSNR against the Gaussian truth of the minify scene at
 // texels_per_pixel, manual and hardware taps.
 struct EwaSweepPoint {
@@ -86,6 +98,7 @@ struct BenchRun {
     std::vector<BenchResult> results;
     std::vector<SatSweep> sat_sweep;
     std::vector<EwaSweepPoint> ewa_sweep; // when both ewa and ewa-hw ran
+    std::vector<StochasticRow> stochastic;
     std::vector<BenchGoal> goals;
 };
 

@@ -111,6 +111,17 @@ std::string bench_json(const BenchRun& run)
     for (const EwaSweepPoint& p : run.ewa_sweep)
         ewa_sweep.push_back({{"texels_per_pixel", p.texels_per_pixel}, {"psnr_gaussian_manual", p.psnr_manual},
                              {"psnr_gaussian_hardware", p.psnr_hardware}});
+    Json stochastic = Json::array();
+    for (const StochasticRow& r : run.stochastic) {
+        Json box = Json::array(), gaussian = Json::array();
+        for (size_t k = 0; k < r.frames.size(); ++k) {
+            box.push_back({{"rmse", r.rmse_box[k]}, {"psnr", psnr_from_rmse(r.rmse_box[k])}});
+            gaussian.push_back({{"rmse", r.rmse_gaussian[k]}, {"psnr", psnr_from_rmse(r.rmse_gaussian[k])}});
+        }
+        stochastic.push_back({{"scene", to_string(r.scene)}, {"label", r.label}, {"noise", to_string(r.noise)},
+                              {"frame_ms", times(r.time)}, {"frames", r.frames},
+                              {"error", {{"box", box}, {"gaussian", gaussian}}}});
+    }
     for (const BenchGoal& g : run.goals)
         goals.push_back({{"goal", g.goal}, {"measured", g.measured}, {"status", g.status}, {"note", g.note}});
     Json out = {{"schema", 1},
@@ -125,6 +136,7 @@ std::string bench_json(const BenchRun& run)
                 {"results", results},
                 {"sat_sweep", sweep},
                 {"ewa_sweep", ewa_sweep},
+                {"stochastic", stochastic},
                 {"goals", goals}};
     // Invalid UTF-8 (a texture path is bytes) is replaced, not thrown: the file is always written.
     return out.dump(1, ' ', false, Json::error_handler_t::replace) + "\n";

@@ -215,8 +215,11 @@ glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Look
         const EwaFootprint fp = reference_ewa_footprint(chain, o, l);
         const double alpha = ewa_alpha(o);
         auto support_of = [&](int level) { return ewa_support(chain, level, fp, l.u, l.v, alpha); };
+        // Magnification (ewa.glsl): level 0's trilinear share is the bilinear magnification filter's.
+        const double share = magnified_share(chain, o, l);
         if (visit) {
-            visit_levels(fp.lod, 1.0, [&](int level, double q) {
+            if (share > 0.0) visit_bilinear(chain, 0, l.u, l.v, o.wrap, share, *visit);
+            if (share < 1.0) visit_levels(fp.lod, 1.0 - share, [&](int level, double q) {
                 const std::vector<WeightedTexel> s = support_of(level);
                 double total = 0;
                 for (const WeightedTexel& t : s) total += t.w;
@@ -224,8 +227,11 @@ glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Look
             });
             return {};
         }
+        if (double(xi->z) < share) return pick_bilinear(chain, 0, l.u, l.v, o.wrap, *xi);
+        // The rest of xi.z, rescaled in float as the shader does.
+        const float z = std::clamp((xi->z - float(share)) / (1.0f - float(share)), 0.0f, 0.99999994f);
         double rest;
-        const int level = pick_level(fp.lod, xi->z, rest);
+        const int level = pick_level(fp.lod, z, rest);
         const std::vector<WeightedTexel> s = support_of(level);
         double total = 0;
         for (const WeightedTexel& t : s) total += t.w;

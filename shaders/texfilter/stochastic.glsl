@@ -30,10 +30,13 @@
 //          or the probe (aniso), chosen the same way, then one bilinear (trilinear: on the chosen level) or
 //          trilinear (aniso: the probe's) tap: E = the deterministic _hw form; bilinear's _hw form is the
 //          hardware bilinear tap itself, which needs no random number.
-//          ewa: the level as trilinear (xi.z < frac(λ): the coarser), then ONE texel of that level's support
+//          ewa: first its magnification (ewa.glsl): xi.z < 1 − clamp(λ, 0, 1) (λ trilinear's LOD) reads the
+//          bilinear magnification filter's one texel of level 0 (_hw: its one tap), and the rest of xi.z, rescaled,
+//          goes on; TF_MAGNIFY's cubics are not sampled (Catmull-Rom's weights are not probabilities). Then
+//          the ellipse's level as trilinear (xi.z < frac(λ): the coarser), then ONE texel of that level's support
 //          with probability w_i / Σw (its Gaussian weights exp(−αr²) − exp(−αR²), ewa.glsl), found by walking
 //          the CDF with xi.x. E = per level the Gaussian-weighted MEAN Σw_i t_i / Σw of the support's texels,
-//          blended by frac(λ): NOT tf_ewa, whose least-squares line fit (not a convex combination of texels,
+//          blended by frac(λ) (and the magnification share as in tf_ewa): NOT tf_ewa, whose least-squares line fit (not a convex combination of texels,
 //          so no one-texel estimator has it as its mean) moves the mean to uv; the two differ by the fitted
 //          gradient times the weights' centroid offset (at most ~0.1 level texel) and by the fit's range clamp.
 //          tf_ewa_stochastic_hw: one 2x2 block of the level chosen with probability (its total weight) / Σ,
@@ -311,6 +314,23 @@ vec4 tfi_ewa_stochastic_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sa
     xi = tfi_unit3(xi);
     uv = tf_reduce_uv(uv, s.wrap);
     float a = alpha >= 0.0 ? min(alpha, 64.0) : 0.0;
+    // Magnification (ewa.glsl): with probability level 0's trilinear share, the bilinear magnification filter's
+    // one texel (one tap); the rest of xi.z, rescaled, picks the ellipse's level.
+    float magnifyShare = 1.0 - clamp(tf_lod(TFI_A, dUVdx, dUVdy, s), 0.0, 1.0);
+    if (xi.z < magnifyShare) {
+#if TFI_HW
+        if (hardware) {
+            TF_COUNT_HW_LOOKUPS(1);
+            return TFI_LOOKUP(uv, 0.0);
+        }
+#endif
+#if TFI_CAN_FETCH
+        return tf_bilinear_stochastic_level(TFI_A, uv TFI_XA, 0, s.wrap, xi);
+#else
+        return vec4(0.0);
+#endif
+    }
+    xi.z = clamp((xi.z - magnifyShare) / (1.0 - magnifyShare), 0.0, 0.99999994);
     float lambda, rest;
     tfi_EwaShape shape = tfi_ewa_shape(TFI_A, dUVdx, dUVdy, s, maxAniso, lambda);
     int level = tfi_stochastic_level(lambda, xi.z, rest);
