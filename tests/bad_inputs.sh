@@ -378,6 +378,8 @@ ground_truth_and_bench_errors() {
         "${REF[@]}" -o out.png
     expect_error "view --truth analytic" "not available in the viewer" - -- \
         "$TEXFILTER" view --texture checker --filter ground-truth --truth analytic
+    expect_error "view --stochastic white" "--stochastic is not available in the viewer" - -- \
+        "$TEXFILTER" view --texture checker --filter trilinear --stochastic white
     expect_error "sample --filter ground-truth" ground-truth out.csv -- \
         "$TEXFILTER" sample --texture checker --filter ground-truth --lookups good.csv --backend reference -o out.csv
     local bench=("$TEXFILTER" bench --quick --scenes zoom)

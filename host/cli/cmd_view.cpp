@@ -70,7 +70,7 @@ int run_view(const std::vector<std::string>& argv)
         if (!args.has("--filter"))
             filter_args = parse_args("view", {"--filter", "trilinear"}, sampler_flags(SamplerFlags::scenes), 0);
         s.a.options = sampler_options_from(filter_args);
-        check_viewer_truth(s.a.options);
+        check_viewer_sampler(s.a.options);
     }
     if (args.has("--compare")) {
         SamplerOptions b = s.a.options;

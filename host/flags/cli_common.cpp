@@ -155,11 +155,14 @@ SamplerOptions sampler_options_from(const Args& args)
     return options;
 }
 
-void check_viewer_truth(const SamplerOptions& options)
+void check_viewer_sampler(const SamplerOptions& options)
 {
     if (options.truth == Truth::analytic)
         throw Error("--truth analytic is not available in the viewer (its ground truth integrates the texels): render "
                     "it with texfilter render --filter ground-truth --truth analytic");
+    if (options.stochastic)
+        throw Error("--stochastic is not available in the viewer (it shows one deterministic frame a change): render "
+                    "it with texfilter render --stochastic " + to_string(options.noise) + " --accumulate N");
 }
 
 int parse_spp_side(const std::string& text)

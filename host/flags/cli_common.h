@@ -25,9 +25,9 @@ std::vector<FlagSpec> join(std::vector<std::vector<FlagSpec>> groups);
 
 TextureSource texture_source_from(const Args& args);
 SamplerOptions sampler_options_from(const Args& args);
-// The viewer's ground truth integrates the texels (its texture can change under it): throws tf::Error for
-// --truth analytic, pointing at render.
-void check_viewer_truth(const SamplerOptions& options);
+// What the viewer cannot show, pointing at render: --truth analytic (its ground truth integrates the texels,
+// and its texture can change under it) and --stochastic (one deterministic frame a change). Throws tf::Error.
+void check_viewer_sampler(const SamplerOptions& options);
 // --spp: a square number of samples a pixel, 1..4096; returns the grid side. Throws naming what is wrong.
 int parse_spp_side(const std::string& text);
 ContextOptions context_options_from(const Args& args);

@@ -95,7 +95,7 @@ std::string view_name(const ScriptAction& a)
 SamplerOptions sampler(const ScriptAction& a)
 {
     SamplerOptions options = sampler_options_from(flag_args(a, "--filter", script_sampler_flags()));
-    check_viewer_truth(options);
+    check_viewer_sampler(options);
     return options;
 }
 
