@@ -48,6 +48,24 @@ int tfi_split_lod(float lod, out float f)
 }
 #define TFI_BLEND_LEVELS(LEVEL, lo, w) \
     ((w) == 0.0 ? LEVEL(lo) : (w) == 1.0 ? LEVEL((lo) + 1) : mix(LEVEL(lo), LEVEL((lo) + 1), (w)))
+// TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w): the same value into the vec4 `result`, a statement, with each
+// level's lookup written once. SIMD implementations run both sides of a divergent branch (lavapipe runs every
+// side of every `if`, so the expression above cost four levels' fetches); a loop is the one construct they
+// leave early, once no lane needs another turn. So: the level that counts (lo, or lo + 1 where w is 1) on the
+// first turn, the coarser one on a second turn only where 0 < w < 1; a batch of lanes that all sit outside
+// brilinear's band, on a level or clamped to the last one pays one level's fetches, any other two (never four).
+// mix(LEVEL(lo), LEVEL(lo + 1), w) is formed as in TFI_BLEND_LEVELS: the same value, bit for bit.
+#define TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w)                                     \
+    {                                                                                    \
+        int tfi_turns = (w) > 0.0 && (w) < 1.0 ? 2 : 1;                                  \
+        int tfi_level = (w) == 1.0 ? (lo) + 1 : (lo);                                    \
+        int tfi_turn = 0;                                                                \
+        do {                                                                             \
+            vec4 tfi_value = LEVEL(tfi_level);                                           \
+            result = tfi_turn == 0 ? tfi_value : mix(result, tfi_value, (w));            \
+            tfi_level = (lo) + 1;                                                        \
+        } while (++tfi_turn < tfi_turns);                                                \
+    }
 
 // Vulkan mipmapMode NEAREST: ceil(d + 0.5) - 1, so d = 0.5 still picks the finer level. Written with
 // floor and a comparison because lod + 0.5 rounds in float (1.50000012 + 0.5 == 2.0 exactly).

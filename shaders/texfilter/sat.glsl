@@ -85,9 +85,11 @@
 // area weights (no slice counts more than another; the overlap of neighbouring boxes is counted in each).
 // K = 1 is tf_sat exactly (same float operations).
 //
-// Cost: 16 table entries inside the texture (2 texelFetch each, low and high word: 32 fetches), at
-// most 64 entries (128 fetches) where the box crosses a border; tf_sat_assembly K times that. Constant
-// in the footprint's size. Plane scene (docs/FILTERS.md): tf_sat 34.2 on average (max 72),
+// Cost: 16 table entries inside the texture (2 texelFetch each, low and high word: 32 fetches), 32
+// entries (64 fetches) where the box crosses a border on one axis, 64 (128) where it crosses both (a turn
+// of 16 a term: tfi_sat_box); tf_sat_assembly K times that. Constant in the footprint's size. Before
+// issue 16 a border-crossing box read only the entries it needed (24..64), but SIMD devices that run
+// every side of a branch (lavapipe) read all 64 for every box. Plane scene (docs/FILTERS.md): tf_sat 34.2 on average (max 72),
 // tf_sat_assembly with 4 boxes 132.7 (max 288).
 #ifndef TF_SAT_GLSL
 #define TF_SAT_GLSL
@@ -128,34 +130,31 @@ tfi_SatInt tfi_sat_mul(tfi_SatInt a, int k)
 // The value modulo 2^40 as a float (used only on exact, non-negative block sums).
 vec4 tfi_sat_to_float(tfi_SatInt a) { return vec4(a.hi & 0xFFu) * 4294967296.0 + vec4(a.lo); }
 
-// One integer coordinate i of the extended table along an axis of n texels: E(i) = c.x·S(t.x) + c.y·S(t.y)
-// (a zero coefficient: no term). See the header for the formulas.
-struct tfi_SatTerms {
-    ivec2 t;
-    ivec2 c;
+// One integer coordinate i of the extended table along an axis of n texels: E(i) = a·S(r) + b·S(n), 0 <= r <= n
+// (see the header for the formulas): the texel column r, and the whole-texture column n with b = 0 inside.
+struct tfi_SatAxis {
+    int r;
+    int a;
+    int b;
 };
 
-tfi_SatTerms tfi_sat_axis(int i, int n, int wrapMode)
+// The quotient is taken in float, as tf_wrap does (SIMD devices without a vector integer divide, lavapipe, ran
+// int / one lane at a time) and put right by one integer step: exact, since the box corners here lie within a
+// few texture sizes of it (uv moved by whole periods, the box at most W x H texels, W, H <= 4096).
+tfi_SatAxis tfi_sat_axis(int i, int n, int wrapMode)
 {
     if (i >= 0 && i <= n)
-        return tfi_SatTerms(ivec2(i, 0), ivec2(1, 0));
-    tfi_SatTerms e;
-    if (wrapMode == TF_WRAP_CLAMP) {
-        e = i < 0 ? tfi_SatTerms(ivec2(1, 0), ivec2(i, 0)) : tfi_SatTerms(ivec2(n, n - 1), ivec2(1 + i - n, n - i));
-    } else {
-        int period = wrapMode == TF_WRAP_MIRROR ? 2 * n : n;
-        int q = (i >= 0 ? i : i - period + 1) / period; // floor division (int / truncates toward zero)
-        int r = i - q * period;
-        if (wrapMode != TF_WRAP_MIRROR)
-            e = tfi_SatTerms(ivec2(n, r), ivec2(q, 1));
-        else if (r <= n)
-            e = tfi_SatTerms(ivec2(n, r), ivec2(2 * q, 1));
-        else
-            e = tfi_SatTerms(ivec2(n, period - r), ivec2(2 * q + 2, -1));
-    }
-    if (e.t.y == 0) // S(0) = 0: nothing to read
-        e.c.y = 0;
-    return e;
+        return tfi_SatAxis(i, 1, 0);
+    if (wrapMode == TF_WRAP_CLAMP) // texel 0 repeated below, texel n - 1 above
+        return i < 0 ? tfi_SatAxis(1, i, 0) : tfi_SatAxis(n - 1, n - i, 1 + i - n);
+    int period = wrapMode == TF_WRAP_MIRROR ? 2 * n : n;
+    int q = int(floor(float(i) / float(period)));
+    int r = i - q * period;
+    q += r < 0 ? -1 : (r >= period ? 1 : 0);
+    r = i - q * period;
+    if (wrapMode != TF_WRAP_MIRROR)
+        return tfi_SatAxis(r, 1, q);
+    return r <= n ? tfi_SatAxis(r, 1, 2 * q) : tfi_SatAxis(period - r, -1, 2 * q + 2);
 }
 
 // One axis of the box [x0, x1): corners (i0, i0+1, i1, i1+1) and the weights of the three intervals
@@ -211,43 +210,51 @@ tfi_SatInt tfi_sat_entry(TFI_SAT_T, ivec2 t TFI_SAT_X)
     return tfi_SatInt(TFI_SAT_LOW(t), uvec4(h, h >> 8, h >> 16, h >> 24) & 0xFFu);
 }
 
-// Extended table entry at the corner (x, y): up to 4 table entries with integer coefficients.
-tfi_SatInt tfi_sat_corner(TFI_SAT_T, tfi_SatTerms x, tfi_SatTerms y TFI_SAT_X)
-{
-    tfi_SatInt sum = tfi_SatInt(uvec4(0u), uvec4(0u));
-    for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b) {
-            int k = x.c[a] * y.c[b];
-            if (k == 0)
-                continue;
-            tfi_SatInt e = tfi_sat_entry(TFI_SAT_A, ivec2(x.t[a], y.t[b]) TFI_SAT_XA);
-            sum = tfi_sat_add(sum, k == 1 ? e : tfi_sat_mul(e, k));
-        }
-    return sum;
-}
-
-// Mean over the box [lo, hi) in texel units (corners within ±2^24), in the units of the texture.
+// Mean over the box [lo, hi) in texel units (corners within a few texture sizes of it), in the units of the
+// texture. The 16 corners' extended entries E(x, y) = ax·ay·S(rx, ry) + ax·by·S(rx, n) + bx·ay·S(n, ry) +
+// bx·by·S(n, n) are summed one kind of term a turn, 16 table entries each: the S(rx, ry) turn always, a turn for
+// the terms with by (the box crosses a horizontal border), one with bx, and the S(n, n) turn when it crosses
+// both. A loop because SIMD devices run every side of an `if` (lavapipe read all 64 entries of every box) but
+// leave a loop once no lane needs another turn: a batch of boxes inside the texture reads 16 entries. Sums
+// modulo 2^40 do not depend on their order, so every block sum, and the result, is what it was, bit for bit.
 vec4 tfi_sat_box(TFI_SAT_T, vec2 lo, vec2 hi TFI_SAT_X, ivec2 size, int wrapMode, vec4 offset, vec4 scale)
 {
     ivec4 px, py;
     vec3 wx, wy;
     tfi_sat_edges(lo.x, hi.x, px, wx);
     tfi_sat_edges(lo.y, hi.y, py, wy);
-    tfi_SatTerms tx[4];
-    for (int k = 0; k < 4; ++k)
-        tx[k] = tfi_sat_axis(px[k], size.x, wrapMode);
+    tfi_SatAxis ax[4], ay[4];
+    bool crossesX = false, crossesY = false; // some corner outside [0, n] on that axis: b != 0 somewhere
+    for (int k = 0; k < 4; ++k) {
+        ax[k] = tfi_sat_axis(px[k], size.x, wrapMode);
+        ay[k] = tfi_sat_axis(py[k], size.y, wrapMode);
+        crossesX = crossesX || ax[k].b != 0;
+        crossesY = crossesY || ay[k].b != 0;
+    }
+    int turns = 1 + (crossesX ? 1 : 0) + (crossesY ? 1 : 0) + (crossesX && crossesY ? 1 : 0);
+    tfi_SatInt e[16]; // E at corner (px[k], py[l]): e[4l + k]
+    int turn = 0;
+    do {
+        // The turn's term: 0 S(rx, ry), 1 S(rx, n) (by), 2 S(n, ry) (bx), 3 S(n, n); a box crossing one axis only
+        // takes that axis's term on its second turn.
+        int term = turn == 0 ? 0 : turn == 3 ? 3 : crossesY ? turn : 2;
+        bool fullX = term >= 2, fullY = term == 1 || term == 3;
+        for (int s = 0; s < 16; ++s) {
+            tfi_SatAxis x = ax[s & 3], y = ay[s >> 2];
+            int k = (fullX ? x.b : x.a) * (fullY ? y.b : y.a);
+            tfi_SatInt t = tfi_sat_entry(TFI_SAT_A, ivec2(fullX ? size.x : x.r, fullY ? size.y : y.r) TFI_SAT_XA);
+            t = tfi_sat_mul(t, k);
+            e[s] = turn == 0 ? t : tfi_sat_add(e[s], t);
+        }
+    } while (++turn < turns);
     vec4 sum = vec4(0.0);
     tfi_SatInt previous[3]; // x differences E(px[k+1], y) − E(px[k], y) of the previous corner row
     for (int l = 0; l < 4; ++l) {
-        tfi_SatTerms ty = tfi_sat_axis(py[l], size.y, wrapMode);
-        tfi_SatInt e0 = tfi_sat_corner(TFI_SAT_A, tx[0], ty TFI_SAT_XA);
         for (int k = 0; k < 3; ++k) {
-            tfi_SatInt e1 = tfi_sat_corner(TFI_SAT_A, tx[k + 1], ty TFI_SAT_XA);
-            tfi_SatInt d = tfi_sat_sub(e1, e0);
+            tfi_SatInt d = tfi_sat_sub(e[4 * l + k + 1], e[4 * l + k]);
             if (l > 0) // block [px[k], px[k+1]) x [py[l-1], py[l]): exact, then weighted in float
                 sum += (wx[k] * wy[l - 1]) * tfi_sat_to_float(tfi_sat_sub(d, previous[k]));
             previous[k] = d;
-            e0 = e1;
         }
     }
     return offset + sum * (scale / 65535.0);
