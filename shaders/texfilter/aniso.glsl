@@ -145,7 +145,9 @@ vec4 tfi_aniso_probe(TFI_T, vec2 uv TFI_X, float lod, int wrapMode)
     float f;
     int lo = tfi_split_lod(lod, f);
 #define TFI_PROBE_LEVEL(level) tfi_mip_level(TFI_A, uv TFI_XA, level, wrapMode)
-    return TFI_BLEND_LEVELS(TFI_PROBE_LEVEL, lo, f);
+    vec4 color;
+    TFI_BLEND_LEVELS_ONCE(color, TFI_PROBE_LEVEL, lo, f); // each level's fetches issued once (lod.glsl)
+    return color;
 #undef TFI_PROBE_LEVEL
 #endif
 }

@@ -422,7 +422,8 @@ vec4 tfi_ewa_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
     float f;
     int lo = tfi_split_lod(lambda, f);
 #define TFI_EWA_LEVEL(level) tfi_ewa_on_level(TFI_A, uv TFI_XA, level, s.wrap, shape, a, hardware)
-    vec4 ewa = TFI_BLEND_LEVELS(TFI_EWA_LEVEL, lo, f);
+    vec4 ewa;
+    TFI_BLEND_LEVELS_ONCE(ewa, TFI_EWA_LEVEL, lo, f); // each level's support walked once (lod.glsl)
 #undef TFI_EWA_LEVEL
     return magnifyShare > 0.0 ? mix(ewa, magnified, magnifyShare) : ewa;
 }
