@@ -67,7 +67,7 @@ Lookup lookup_at_lod(double u, double v, double lambda, int size) {
 
 } // namespace
 
-TEST_CASE("bicubic.kernels") {
+TEST_CASE("kernels") {
     // Partition of unity at every fraction, B-spline weights positive, Catmull-Rom interpolating; support 2.
     for (Reconstruction r : kCubics) {
         const std::string name = to_string(r);
@@ -99,7 +99,7 @@ TEST_CASE("bicubic.kernels") {
     CHECK_LE("bilinear: the tent's k(0.25) - 0.75", std::abs(cubic_kernel(0.25, Reconstruction::bilinear) - 0.75), 0.0);
 }
 
-TEST_CASE("bicubic.polynomial-reproduction") {
+TEST_CASE("polynomial-reproduction") {
     // Catmull-Rom reproduces quadratics (the sampled p at x - 1/2, texel centres at i + 1/2); the B-spline
     // reproduces lines and adds its variance, 1/3 texel², times p'' / 2 = c to a quadratic. Away from the edges
     // (clamp), on a 64-texel row: texels up to ~4000, so the bound is float rounding of the texels (2^-24 each).
@@ -124,7 +124,7 @@ TEST_CASE("bicubic.polynomial-reproduction") {
     CHECK_LE("bspline on a quadratic: |result - (p(x - 1/2) + c/3)|", bs_quad, texel_rounding);
 }
 
-TEST_CASE("bicubic.magnify-limits") {
+TEST_CASE("magnify-limits") {
     // --magnify swaps level 0's reconstruction: where only level 0 is read (lambda <= 0) trilinear, aniso and
     // ewa give the cubic itself; from lambda = 1 on (level 0 unread) nothing changes; just below lambda = 1 the
     // change is level 0's share (1 - lambda) times the cubic - bilinear difference: continuous.
@@ -233,7 +233,7 @@ double cubic_bound(const DeviceCase& d, const Lookup& l, Wrap wrap, Reconstructi
 
 } // namespace
 
-TEST_CASE("bicubic.gpu-vs-reference") {
+TEST_CASE("gpu-vs-reference") {
     // 512 random lookups a kernel and wrap mode on a 64² noise texture (uv in [-1, 2]), manual and hardware
     // taps. Manual bound: the GPU's texel coordinate x = u·w − ½ rounds twice in float (2 ulp of |x| + 1/2,
     // |x| <= 3w), which moves the weights by at most that times sum |k'| <= 2 an axis (4 for both), times the
@@ -272,7 +272,7 @@ TEST_CASE("bicubic.gpu-vs-reference") {
             }
 }
 
-TEST_CASE("bicubic.gpu-magnify") {
+TEST_CASE("gpu-magnify") {
     // --magnify on the device: trilinear (manual: aniso's manual probes run the same level code) and aniso's
     // hardware probes (isotropic footprints: one probe) over LODs -4..3 on a 64² noise texture, and ewa (manual
     // taps for one kernel, hardware for the other) where it reads the cubic alone (LOD <= 0),

@@ -114,7 +114,7 @@ void check_rate(const char* file, int line, const std::string& what, double obse
 
 } // namespace
 
-TEST_CASE("stochastic.expectation") {
+TEST_CASE("expectation") {
     // bilinear, trilinear, aniso: the estimator's mean is the deterministic reference, to rounding; the
     // probabilities sum to 1 (a constant texture gives its value with variance 0), ewa too.
     Setup s;
@@ -148,7 +148,7 @@ TEST_CASE("stochastic.expectation") {
     }
 }
 
-TEST_CASE("stochastic.reference_convergence") {
+TEST_CASE("reference-convergence") {
     Setup s;
     for (const Family& f : kFamilies) {
         const Expected e = expected(s, options_for(f));
@@ -165,7 +165,7 @@ TEST_CASE("stochastic.reference_convergence") {
     }
 }
 
-TEST_CASE("stochastic.gpu_convergence") {
+TEST_CASE("gpu-convergence") {
     // The device's mean of N = 1, 4, 16 frames (prefixes of one 16-frame run: each prefix is a valid mean of its
     // own; blue: N = 4) against the reference's expectation; feline's probe choice is the reference's test; N = 64 is the reference's test (the device's frames cost ~10 ms
     // each on lavapipe). Manual forms: float vs double filtering is ~1e-6 (no bias term). Tap forms: the sampler

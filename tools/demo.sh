@@ -32,6 +32,13 @@ render triangles checker trilinear
 render triangles checker trilinear --derivatives ray
 render mesh zoneplate aniso
 render mesh mipcolors trilinear
+# Issue 16: bicubic magnification, the analytic truth that judges it, stochastic filtering, ray cones.
+for filter in bspline catmull-rom; do
+  render zoom zoneplate "$filter" --texture-size 64
+done
+render zoom zoneplate ground-truth --texture-size 64 --truth analytic --spp 64
+render slanted checker trilinear --stochastic blue --accumulate 16
+render reflect checker trilinear --texture-size 512 --derivatives cone
 # Environment maps (docs/ENVIRONMENT.md): the cube's corner from inside, and a mirror ball (cube and lat-long).
 render skybox cube-labels trilinear --texture-size 128
 render skybox checker ewa --texture-size 512

@@ -44,7 +44,6 @@ struct PushConstants {
                               // HARNESS_PUSH_SIZE is 128
 };
 static_assert(offsetof(PushConstants, wrap_mode) == HARNESS_PUSH_WRAP_MODE);
-static_assert(offsetof(PushConstants, stochastic) == HARNESS_PUSH_STOCHASTIC);
 static_assert(offsetof(PushConstants, lod_bias) == HARNESS_PUSH_LOD_BIAS);
 static_assert(offsetof(PushConstants, lod_min) == HARNESS_PUSH_LOD_MIN);
 static_assert(offsetof(PushConstants, lod_max) == HARNESS_PUSH_LOD_MAX);
@@ -69,6 +68,7 @@ static_assert(offsetof(PushConstants, layer) == HARNESS_PUSH_LAYER);
 static_assert(offsetof(PushConstants, compare_op) == HARNESS_PUSH_COMPARE_OP);
 static_assert(offsetof(PushConstants, dref) == HARNESS_PUSH_DREF);
 static_assert(offsetof(PushConstants, truth_analytic) == HARNESS_PUSH_TRUTH_ANALYTIC);
+static_assert(offsetof(PushConstants, stochastic) == HARNESS_PUSH_STOCHASTIC);
 static_assert(sizeof(PushConstants) == HARNESS_PUSH_SIZE);
 
 // SceneBlock in shaders/harness/scene.glsl (std140: vec4 members and vec4 arrays, 16 bytes each).

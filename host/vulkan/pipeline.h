@@ -1,6 +1,7 @@
 #pragma once
 // Pipelines from embedded SPIR-V, each specialised to one filter (the harness shaders' specialization
-// constants HARNESS_SPEC_FILTER and HARNESS_SPEC_MAGNIFY), so that a pipeline holds the code of one filter only.
+// constants HARNESS_SPEC_FILTER, HARNESS_SPEC_MAGNIFY and HARNESS_SPEC_STOCHASTIC), so that a pipeline holds the
+// code of one filter only.
 #include "core/filter.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
@@ -9,8 +10,8 @@
 
 namespace tf {
 
-// What a harness pipeline is specialised to: the filter and level 0's reconstruction (trilinear, aniso, ewa:
-// --magnify). Made from a Filter alone where the reconstruction is bilinear.
+// What a harness pipeline is specialised to: the filter, level 0's reconstruction (trilinear, aniso, ewa:
+// --magnify) and the stochastic forms (--stochastic). Made from a Filter alone for the deterministic bilinear default.
 struct FilterVariant {
     Filter filter = Filter::nearest;
     Reconstruction magnify = Reconstruction::bilinear;
