@@ -11,25 +11,13 @@
 
 #include "analytic_texture.glsl"
 
-// host/core/hash.h mix32 ("lowbias32"), bit for bit.
-uint truth_hash(uint x)
-{
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
-// 24 hash bits in [0, 1): exact in float, as on the CPU.
-float truth_unit(uint h) { return float(h >> 8) * (1.0 / 16777216.0); }
+#include "hash.glsl" // harness_mix32, harness_unit
 
 vec2 truth_sample(ivec2 pixel, int i, int side, int pixelFilter)
 {
-    uint h = truth_hash(uint(i) + truth_hash(uint(pixel.y) + truth_hash(uint(pixel.x))));
-    float a = (float(i % side) + truth_unit(h)) / float(side);
-    float b = (float(i / side) + truth_unit(truth_hash(h))) / float(side);
+    uint h = harness_mix32(uint(i) + harness_mix32(uint(pixel.y) + harness_mix32(uint(pixel.x))));
+    float a = (float(i % side) + harness_unit(h)) / float(side);
+    float b = (float(i / side) + harness_unit(harness_mix32(h))) / float(side);
     if (pixelFilter != HARNESS_PIXEL_FILTER_GAUSSIAN)
         return vec2(pixel) + vec2(a, b);
     float r = HARNESS_GROUND_TRUTH_SIGMA * sqrt(-2.0 * log(1.0 - a)); // 1 - a in (0, 1]: finite

@@ -4,32 +4,21 @@
 #define HARNESS_STOCHASTIC_NOISE_GLSL
 
 #include "config.h"
-
-uint noise_mix32(uint x) // host/core/hash.h mix32 ("lowbias32")
-{
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
-float noise_unit(uint h) { return float(h >> 8) * (1.0 / 16777216.0); }
+#include "hash.glsl"
 
 vec3 stochastic_xi(int packed, ivec2 pixel, uint lookup)
 {
     uint frame = uint(packed) >> 2, x = uint(pixel.x), y = uint(pixel.y);
     if ((packed & 3) == HARNESS_NOISE_WHITE) {
-        uint h = noise_mix32(lookup + noise_mix32(frame + noise_mix32(y + noise_mix32(x))));
-        return vec3(noise_unit(h), noise_unit(noise_mix32(h ^ 0x9e3779b9u)), noise_unit(noise_mix32(h ^ 0x7f4a7c15u)));
+        uint h = harness_mix32(lookup + harness_mix32(frame + harness_mix32(y + harness_mix32(x))));
+        return vec3(harness_unit(h), harness_unit(harness_mix32(h ^ 0x9e3779b9u)), harness_unit(harness_mix32(h ^ 0x7f4a7c15u)));
     }
     uint lk = lookup * 0x9e3779b9u;
     uint ox = x * 0xc13fa9a9u + y * 0x91e10da6u + lk;
     uint oy = y * 0xc13fa9a9u + x * 0x91e10da6u + lk;
     uint oz = (x + y) * 0xc13fa9a9u + x * 0x91e10da6u + lk;
-    return vec3(noise_unit(ox + frame * 0xd1b54a33u), noise_unit(oy + frame * 0xabc98389u),
-                noise_unit(oz + frame * 0x8cb92ba7u));
+    return vec3(harness_unit(ox + frame * 0xd1b54a33u), harness_unit(oy + frame * 0xabc98389u),
+                harness_unit(oz + frame * 0x8cb92ba7u));
 }
 
 #endif
