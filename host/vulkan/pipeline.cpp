@@ -1,6 +1,7 @@
 #include "vulkan/pipeline.h"
 #include "harness/config.h"
 #include "vulkan/resources.h"
+#include "vulkan/specialize_spirv.h"
 
 namespace tf {
 
@@ -34,6 +35,26 @@ VkPipelineShaderStageCreateInfo shader_stage(VkShaderStageFlagBits stage, VkShad
     return info;
 }
 
+// The stage's module specialised on the host (specialize_spirv.h), or, where the optimiser refused it, the
+// module as embedded with `specialization` for the driver to apply. Destroyed by `modules`.
+struct SpecializedModule {
+    VkShaderModule module = VK_NULL_HANDLE;
+    const VkSpecializationInfo* info = nullptr;
+};
+SpecializedModule specialized_module(const VulkanContext& context, ShaderCode code, FilterVariant variant,
+                                     const FilterSpecialization& specialization, Cleanup& modules)
+{
+    const std::vector<uint32_t> words = specialize_spirv(code, variant);
+    SpecializedModule m;
+    m.module = words.empty() ? create_shader_module(context, code.words, code.bytes)
+                             : create_shader_module(context, words.data(), words.size() * sizeof(uint32_t));
+    m.info = words.empty() ? &specialization.info : nullptr;
+    VkDevice device = context.device;
+    VkShaderModule module = m.module;
+    modules.add([=] { vkDestroyShaderModule(device, module, nullptr); });
+    return m;
+}
+
 } // namespace
 
 VkPipeline create_compute_pipeline(const VulkanContext& context, ShaderCode code, VkPipelineLayout layout,
@@ -41,11 +62,10 @@ VkPipeline create_compute_pipeline(const VulkanContext& context, ShaderCode code
 {
     VkDevice device = context.device;
     Cleanup modules; // a pipeline keeps what it needs of its modules: they go once it is made
-    VkShaderModule module = create_shader_module(context, code.words, code.bytes);
-    modules.add([=] { vkDestroyShaderModule(device, module, nullptr); });
     FilterSpecialization specialization(filter);
+    const SpecializedModule stage = specialized_module(context, code, filter, specialization, modules);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    info.stage = shader_stage(VK_SHADER_STAGE_COMPUTE_BIT, module, &specialization.info);
+    info.stage = shader_stage(VK_SHADER_STAGE_COMPUTE_BIT, stage.module, stage.info);
     info.layout = layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     TF_VK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
@@ -60,12 +80,11 @@ VkPipeline create_graphics_pipeline(const VulkanContext& context, const Graphics
     Cleanup modules;
     VkShaderModule vert = create_shader_module(context, desc.vertex.words, desc.vertex.bytes);
     modules.add([=] { vkDestroyShaderModule(device, vert, nullptr); });
-    VkShaderModule frag = create_shader_module(context, desc.fragment.words, desc.fragment.bytes);
-    modules.add([=] { vkDestroyShaderModule(device, frag, nullptr); });
     FilterSpecialization specialization(filter);
+    const SpecializedModule frag = specialized_module(context, desc.fragment, filter, specialization, modules);
     VkPipelineShaderStageCreateInfo stages[2] = {
         shader_stage(VK_SHADER_STAGE_VERTEX_BIT, vert, nullptr),
-        shader_stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag, &specialization.info)};
+        shader_stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag.module, frag.info)};
 
     const bool depth = desc.depth_format != VK_FORMAT_UNDEFINED;
     VkPipelineVertexInputStateCreateInfo no_vertices{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};

@@ -1,0 +1,30 @@
+#include "vulkan/specialize_spirv.h"
+#include "harness/config.h"
+#include <spirv-tools/optimizer.hpp>
+#include <unordered_map>
+
+namespace tf {
+
+std::vector<uint32_t> specialize_spirv(ShaderCode code, FilterVariant variant)
+{
+    // The same values as FilterSpecialization's map (pipeline.cpp); a module without one of the ids keeps it absent.
+    const std::unordered_map<uint32_t, std::vector<uint32_t>> values = {
+        {HARNESS_SPEC_FILTER, {uint32_t(int32_t(variant.filter))}},
+        {HARNESS_SPEC_MAGNIFY, {uint32_t(int32_t(variant.magnify))}},
+        {HARNESS_SPEC_STOCHASTIC, {variant.stochastic ? 1u : 0u}}};
+    spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_2); // the harness targets Vulkan 1.2's SPIR-V 1.5
+    optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
+    optimizer.RegisterPass(spvtools::CreateSetSpecConstantDefaultValuePass(values))
+        .RegisterPass(spvtools::CreateFreezeSpecConstantValuePass())
+        .RegisterPass(spvtools::CreateFoldSpecConstantOpAndCompositePass())
+        .RegisterPass(spvtools::CreateDeadBranchElimPass())
+        .RegisterPass(spvtools::CreateEliminateDeadFunctionsPass());
+    spvtools::OptimizerOptions options;
+    options.set_run_validator(false);
+    std::vector<uint32_t> out;
+    if (!optimizer.Run(code.words, code.bytes / sizeof(uint32_t), &out, options))
+        out.clear();
+    return out;
+}
+
+} // namespace tf
