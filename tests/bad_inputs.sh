@@ -347,6 +347,16 @@ sample_resources() {
     expect_error "sample: hw-aniso on shadow" "--resource shadow cannot run --filter hw-aniso" out.csv -- \
         "$TEXFILTER" sample --texture checker --filter hw-aniso --backend reference --lookups good.csv \
         --resource shadow -o out.csv
+    # sample --stochastic: the filters and resource kinds it takes, and a good one.
+    expect_success "sample: --stochastic white --accumulate 4 (reference)" ok_stochastic.csv -- \
+        "$TEXFILTER" sample --texture checker --filter trilinear --stochastic white --accumulate 4 \
+        --backend reference --lookups good.csv -o ok_stochastic.csv
+    expect_error "sample: --stochastic on sat" "--stochastic applies to bilinear, trilinear, aniso and ewa" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter sat --stochastic white --backend reference \
+        --lookups good.csv -o out.csv
+    expect_error "sample: --stochastic on an array" "sample --stochastic is for --resource combined" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter trilinear --stochastic blue --resource array \
+        --backend reference --lookups good.csv -o out.csv
 }
 
 diff_contract() {

@@ -227,3 +227,49 @@ TEST_CASE("gpu-convergence") {
     destroy_context(context);
     CHECK_LE("Vulkan validation messages (in-process)", double(validation_message_count()), 0.0);
 }
+
+TEST_CASE("sample-backends") {
+    // texfilter sample --stochastic: lookup row i draws the numbers of pixel (0, 0), lookup i, frame f on both
+    // backends, so the device and the reference pick the same texel except where xi lies within float rounding
+    // of a weight boundary (~1e-6 of the rows; 1 % is the cap, as gpu-convergence's). With N frames a row's mean
+    // is off only where one of its N picks flipped. The check can fail: a device that ignored the row index (every
+    // row the same numbers) or the frame would agree on frame 0 and not on the mean, and one that read the
+    // deterministic filter agrees with neither (it is asserted noisy below).
+    MipChain chain = make_procedural("noise", kSize);
+    std::vector<Lookup> lookups;
+    uint32_t h = 12345u;
+    auto unit = [&] { h = mix32(h); return double(h >> 8) / 16777216.0; };
+    for (int i = 0; i < 2048; ++i) { // footprints from magnified to ~16 texels, anisotropy up to ~8
+        const double u = unit() * 3.0 - 1.0, v = unit() * 3.0 - 1.0;
+        const double size = std::exp2(unit() * 6.0 - 2.0) / kSize, angle = unit() * 6.283185307179586;
+        const double ratio = 1.0 + 7.0 * unit();
+        lookups.push_back({u, v, size * std::cos(angle), size * std::sin(angle),
+                           -size / ratio * std::sin(angle), size / ratio * std::cos(angle)});
+    }
+    VulkanContext context = create_context(test::test_context_options());
+    {
+        GpuTexture texture = upload_texture(context, chain, false);
+        for (const Family& f : kFamilies) {
+            if (f.shape != AnisoShape::gpu) continue; // feline's axis sign may differ (gpu-convergence)
+            SamplerOptions deterministic = options_for(f);
+            deterministic.stochastic = false;
+            const std::vector<glm::dvec4> exact = reference_sample_all(chain, lookups, deterministic);
+            for (auto [noise, n] : {std::pair{Noise::white, 1}, std::pair{Noise::white, 8}, std::pair{Noise::blue, 8}}) {
+                const SamplerOptions o = options_for(f, noise, n);
+                const std::vector<glm::vec4> gpu = gpu_sample(context, texture, lookups, o, nullptr);
+                const std::vector<glm::dvec4> cpu = reference_sample_all(chain, lookups, o);
+                size_t differ = 0, noisy = 0;
+                for (size_t i = 0; i < lookups.size(); ++i) {
+                    differ += test::max_channel_diff(glm::dvec4(gpu[i]), cpu[i]) > 1e-5 ? 1 : 0;
+                    noisy += test::max_channel_diff(cpu[i], exact[i]) > 1e-3 ? 1 : 0;
+                }
+                const std::string what = std::string(f.name) + ", " + to_string(noise) + ", N " + std::to_string(n);
+                CHECK_LE(what + ": share of rows where device and reference differ", double(differ) / lookups.size(), 0.01);
+                CHECK_LE(what + ": share of rows off the deterministic filter (noise is there)", -double(noisy) / lookups.size(), -0.25);
+            }
+        }
+        destroy_texture(context, texture);
+    }
+    destroy_context(context);
+    CHECK_LE("Vulkan validation messages (in-process)", double(validation_message_count()), 0.0);
+}

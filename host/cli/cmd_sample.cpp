@@ -49,7 +49,8 @@ int run_sample(const std::vector<std::string>& argv)
     Args args = parse_args("sample", argv, specs, 0);
     if (args.has("--help")) {
         std::fputs(format_help("texfilter sample --texture T|PATH --filter F --lookups IN.csv "
-                               "[--resource K] [--backend vulkan|reference] [--stats] -o OUT.csv",
+                               "[--resource K] [--stochastic white|blue [--accumulate N]] [--backend vulkan|reference] [--stats] "
+                               "-o OUT.csv",
                                specs)
                        .c_str(),
                    stdout);
@@ -60,6 +61,9 @@ int run_sample(const std::vector<std::string>& argv)
         throw Error("bad value for --filter: ground-truth integrates over a scene's pixels, not around a lookup "
                     "(use render)");
     const ResourceOptions resource = resource_options_from(args);
+    if (options.stochastic && resource.resource != Resource::combined)
+        throw Error("sample --stochastic is for --resource combined (its CPU reference reads one MIP chain), not "
+                    "--resource " + to_string(resource.resource));
     Backend backend = backend_from(args);
     TextureSource source = texture_source_from(args);
     check_format_filter(source.format, options); // integer data and hardware filtering, before any work

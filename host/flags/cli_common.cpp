@@ -49,13 +49,15 @@ std::vector<FlagSpec> sampler_flags(SamplerFlags which)
     if (scenes) {
         flags.push_back({"--pixel-filter", "P", "ground-truth: box (over the pixel, default) or gaussian (sigma 0.5 px)"});
         flags.push_back({"--spp", "N", "ground-truth: samples a pixel, a square number 1..4096 (default 256)"});
-        flags.push_back({"--stochastic", "NOISE", "bilinear, trilinear, aniso, ewa: one texel (or, with --taps hardware, "
-                                                  "one tap) a lookup, chosen by its weight from white or blue noise"});
-        flags.push_back({"--accumulate", "N", "--stochastic: the mean of N frames, each with its own random numbers, "
-                                              "1..4096 (default 1: one noisy frame)"});
         flags.push_back({"--truth", "T", "ground-truth: what it integrates, texels (level 0 reconstructed bilinearly, "
                                          "default) or analytic (the function of checker, zoneplate or grid)"});
     }
+    // sample: row r takes the random numbers of pixel (0, 0), lookup r (render: its pixel, lookup 0).
+    flags.push_back({"--stochastic", "NOISE", std::string("bilinear, trilinear, aniso, ewa: one texel (or, with --taps "
+                                              "hardware, one tap) a lookup, chosen by its weight from white or blue "
+                                              "noise") + (scenes ? "" : " (row r: the numbers of pixel 0,0, lookup r)")});
+    flags.push_back({"--accumulate", "N", std::string("--stochastic: the mean of N frames, each with its own random "
+                                          "numbers, 1..4096 (default 1: one noisy ") + (scenes ? "frame)" : "value a row)")});
     flags.insert(flags.end(), {{"--lod-bias", "B", "added to the LOD (default 0)"},
                                {"--lod-min", "L", "lowest LOD used (default 0)"},
                                {"--lod-max", "L", "highest LOD used (default: the last level)"},

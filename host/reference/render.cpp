@@ -52,6 +52,8 @@ Image reference_render(const SceneParams& scene, const MipChain& chain, const Sa
 std::vector<glm::dvec4> reference_sample_all(const MipChain& chain, const std::vector<Lookup>& lookups,
                                              const SamplerOptions& options)
 {
+    if (options.stochastic)
+        return reference_sample_stochastic(chain, lookups, options);
     std::vector<glm::dvec4> out(lookups.size());
     const std::optional<SatLevels> sat = sat_levels_for(chain, options);
     const size_t chunk = 1024;

@@ -306,4 +306,24 @@ Image reference_render_stochastic(const SceneParams& scene, const MipChain& chai
     return out;
 }
 
+std::vector<glm::dvec4> reference_sample_stochastic(const MipChain& chain, const std::vector<Lookup>& lookups,
+                                                    const SamplerOptions& options)
+{
+    check_stochastic(options);
+    check_reference_taps(options);
+    std::vector<glm::dvec4> out(lookups.size());
+    const size_t chunk = 256;
+    parallel_for((lookups.size() + chunk - 1) / chunk, [&](size_t c) {
+        for (size_t i = c * chunk; i < std::min(lookups.size(), (c + 1) * chunk); ++i) {
+            glm::dvec4 sum(0.0);
+            for (int f = 0; f < options.accumulate; ++f)
+                sum += reference_stochastic_sample(
+                    chain, options, lookups[i],
+                    stochastic_xi(options.noise, 0, 0, options.stochastic_first + uint32_t(f), uint32_t(i)));
+            out[i] = sum / double(options.accumulate);
+        }
+    });
+    return out;
+}
+
 } // namespace tf

@@ -27,4 +27,9 @@ StochasticMoments reference_stochastic_moments(const MipChain& chain, const Samp
 Image reference_render_stochastic(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options,
                                   const RenderOptions& render);
 
+// reference_sample_all with options.stochastic (texfilter sample): lookup i the mean of options.accumulate
+// frames, stochastic_xi of pixel (0, 0), frame stochastic_first + f and lookup i, as the GPU's gpu_sample.
+std::vector<glm::dvec4> reference_sample_stochastic(const MipChain& chain, const std::vector<Lookup>& lookups,
+                                                    const SamplerOptions& options);
+
 } // namespace tf

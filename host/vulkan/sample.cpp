@@ -79,19 +79,30 @@ std::vector<glm::vec4> run_sample_pass(const VulkanContext& context, const std::
     const VkPipeline pipeline = create_compute_pipeline(context, code, pass.pipeline_layout, filter_variant(options), cleanup);
     PushConstants push = make_push_constants(options, count, glm::vec4(0.0f), glm::vec4(0.0f), HARNESS_GRADIENTS_FINE);
     adjust_push(push);
-    submit_and_wait(context, [&](VkCommandBuffer cb) {
-        if (prelude)
-            prelude(cb);
-        bind_pass(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline, pass, push);
-        vkCmdDispatch(cb, groups_x, uint32_t(groups_y), 1);
-        record_host_read(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
-    });
+    // --stochastic --accumulate N: one dispatch a frame (each its own random numbers), the mean summed in
+    // double as gpu_render's; the stats are the first frame's (every frame reads one texel or tap a lookup).
+    const int frames = options.stochastic ? options.accumulate : 1;
+    std::vector<glm::dvec4> sum(frames > 1 ? count : 0, glm::dvec4(0.0));
     std::vector<glm::vec4> results(count);
-    std::memcpy(results.data(), output.mapped, results.size() * sizeof(glm::vec4));
-    if (stats) {
-        stats->resize(count);
-        std::memcpy(stats->data(), counts.mapped, stats->size() * sizeof(LookupStats));
+    for (int f = 0; f < frames; ++f) {
+        push.stochastic = stochastic_push(options, options.stochastic_first + uint32_t(f));
+        submit_and_wait(context, [&](VkCommandBuffer cb) {
+            if (prelude && f == 0)
+                prelude(cb);
+            bind_pass(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline, pass, push);
+            vkCmdDispatch(cb, groups_x, uint32_t(groups_y), 1);
+            record_host_read(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
+        });
+        std::memcpy(results.data(), output.mapped, results.size() * sizeof(glm::vec4));
+        if (stats && f == 0) {
+            stats->resize(count);
+            std::memcpy(stats->data(), counts.mapped, stats->size() * sizeof(LookupStats));
+        }
+        for (size_t i = 0; i < sum.size(); ++i)
+            sum[i] += glm::dvec4(results[i]);
     }
+    for (size_t i = 0; i < sum.size(); ++i)
+        results[i] = glm::vec4(sum[i] / double(frames));
     return results;
 }
 
