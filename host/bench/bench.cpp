@@ -206,10 +206,19 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
                 write_pfm((fs::path(directory) / run.truth_analytic[kind]).string(), truths.analytic[0]);
             }
 
+            // The baseline and every filter timed in turn (time_frames_interleaved), so their ratios share conditions.
             SamplerOptions none;
             none.filter = Filter::none;
-            run.baseline[kind] = summarize_times(
-                time_frames(*create_renderer(context, texture, scene, none, render), config.warmup, config.frames, config.timer));
+            std::vector<std::unique_ptr<GpuRenderer>> renderers;
+            renderers.push_back(create_renderer(context, texture, scene, none, render));
+            for (const BenchFilter& filter : config.filters)
+                renderers.push_back(create_renderer(context, texture, scene, filter.options, render));
+            std::vector<GpuRenderer*> timed;
+            for (const auto& r : renderers)
+                timed.push_back(r.get());
+            const std::vector<std::vector<double>> times =
+                time_frames_interleaved(timed, config.warmup, config.frames, config.timer);
+            run.baseline[kind] = summarize_times(times[0]);
 
             std::vector<Lookup> lookups;
             for (const PixelLookup& p : reference_lookups(scene, Gradients::fine, render.rasterize))
@@ -217,13 +226,14 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
                     lookups.push_back(p.lookup);
 
             size_t first = run.results.size();
-            for (const BenchFilter& filter : config.filters) {
+            for (size_t i = 0; i < config.filters.size(); ++i) {
+                const BenchFilter& filter = config.filters[i];
                 BenchResult r;
                 r.scene = kind;
                 r.filter = filter;
                 r.stage = render.stage;
-                auto renderer = create_renderer(context, texture, scene, filter.options, render);
-                r.time = summarize_times(time_frames(*renderer, config.warmup, config.frames, config.timer));
+                GpuRenderer* renderer = renderers[i + 1].get();
+                r.time = summarize_times(times[i + 1]);
                 r.vs_baseline = r.time.median / run.baseline[kind].median;
                 std::vector<Image> frames = render_path(*renderer, scene, config.flicker_frames, texture_width);
                 r.rmse_box = display_rmse(frames[0], truth_box[0]);

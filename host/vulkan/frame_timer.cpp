@@ -12,14 +12,20 @@ namespace {
 // the timed frames to three: a pathological case (lavapipe's hw-aniso on some scenes takes seconds a frame)
 // must not hold the whole benchmark up. The first frame does not count as slow: lavapipe compiles a
 // pipeline's shaders at its first draw (0.5-4 s), which cut every such filter to three timed frames.
+constexpr double slow_ms = 250.0;
+
+double host_frame_ms(const GpuRenderer& r)
+{
+    auto start = std::chrono::steady_clock::now();
+    submit_and_wait(*r.context, [&](VkCommandBuffer cb) { record_frame(r, cb, VK_NULL_HANDLE, 0); });
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::vector<double> time_on_host(const GpuRenderer& r, int warmup, int frames)
 {
-    const double slow_ms = 250.0;
     std::vector<double> ms;
     for (int f = 0; f < warmup + frames && int(ms.size()) < frames; ++f) {
-        auto start = std::chrono::steady_clock::now();
-        submit_and_wait(*r.context, [&](VkCommandBuffer cb) { record_frame(r, cb, VK_NULL_HANDLE, 0); });
-        double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        double elapsed = host_frame_ms(r);
         if (f >= warmup)
             ms.push_back(elapsed);
         if (f > 0 && elapsed > slow_ms) {
@@ -27,6 +33,30 @@ std::vector<double> time_on_host(const GpuRenderer& r, int warmup, int frames)
             frames = std::min(frames, 3);
         }
     }
+    return ms;
+}
+
+// The wall clock's rounds: each renderer warms up alone (the slow-frame rule cuts its warm-up), then one frame
+// of each a round; a renderer with a slow frame stops after three timed ones.
+std::vector<std::vector<double>> time_on_host_in_turn(const std::vector<GpuRenderer*>& renderers, int warmup,
+                                                      int frames)
+{
+    std::vector<int> limit(renderers.size(), frames);
+    for (size_t i = 0; i < renderers.size(); ++i)
+        for (int f = 0; f < warmup; ++f)
+            if (double elapsed = host_frame_ms(*renderers[i]); f > 0 && elapsed > slow_ms) {
+                limit[i] = std::min(frames, 3);
+                break;
+            }
+    std::vector<std::vector<double>> ms(renderers.size());
+    for (int round = 0; round < frames; ++round)
+        for (size_t i = 0; i < renderers.size(); ++i) {
+            if (int(ms[i].size()) >= limit[i])
+                continue;
+            ms[i].push_back(host_frame_ms(*renderers[i]));
+            if (ms[i].back() > slow_ms)
+                limit[i] = std::min(limit[i], std::max(3, int(ms[i].size())));
+        }
     return ms;
 }
 
@@ -69,6 +99,19 @@ std::vector<double> time_frames(GpuRenderer& r, int warmup, int frames, FrameTim
     if (warmup < 0 || frames < 1)
         throw Error("time_frames: need at least one timed frame");
     return timer == FrameTimer::wall_clock ? time_on_host(r, warmup, frames) : time_with_timestamps(r, warmup, frames);
+}
+
+std::vector<std::vector<double>> time_frames_interleaved(const std::vector<GpuRenderer*>& renderers, int warmup,
+                                                         int frames, FrameTimer timer)
+{
+    if (warmup < 0 || frames < 1)
+        throw Error("time_frames: need at least one timed frame");
+    if (timer == FrameTimer::wall_clock)
+        return time_on_host_in_turn(renderers, warmup, frames);
+    std::vector<std::vector<double>> ms;
+    for (GpuRenderer* r : renderers)
+        ms.push_back(time_with_timestamps(*r, warmup, frames));
+    return ms;
 }
 
 FrameTimer parse_frame_timer(const std::string& name)

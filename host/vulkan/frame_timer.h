@@ -19,4 +19,12 @@ std::string to_string(FrameTimer timer);
 // (see vulkan/frame_timer.cpp): it may return fewer than `frames` times, never none.
 std::vector<double> time_frames(GpuRenderer& renderer, int warmup, int frames, FrameTimer timer);
 
+// time_frames for several renderers that are compared with each other (a scene's baseline and filters). The wall
+// clock takes their frames in turn, one of each a round after each one's warm-up, so that whatever else the
+// machine does at a moment (another process, a frequency step) falls on all of them alike instead of on the one
+// being timed then; timestamps (a GPU's own clock) time each renderer's frames in one submit, as time_frames.
+// Result i is renderers[i]'s times.
+std::vector<std::vector<double>> time_frames_interleaved(const std::vector<GpuRenderer*>& renderers, int warmup,
+                                                         int frames, FrameTimer timer);
+
 } // namespace tf
