@@ -8,6 +8,7 @@
 #include "vulkan/render.h"
 #include "io/pfm.h"
 #include "reference/render.h"
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -174,6 +175,42 @@ std::vector<BenchFilter> bench_filters()
     return filters;
 }
 
+namespace {
+
+// The frame times of a scene's baseline (result 0) and of each filter (result i + 1), taken in turn. All of them
+// alive at once would hold every renderer's targets (~32 bytes a pixel each: at 4096x4096, 0.5 GiB a filter), so
+// at most 1 GiB of them is: a large image times the filters in groups, each group in turn with the baseline,
+// whose times from every group are pooled.
+std::vector<std::vector<double>> time_scene_filters(const VulkanContext& context, const GpuTexture& texture,
+                                                    const SceneParams& scene, const RenderOptions& render,
+                                                    const BenchConfig& config, RenderPipelineCache& pipelines)
+{
+    const size_t filters = config.filters.size();
+    const size_t per_renderer = size_t(config.width) * size_t(config.height) * 32;
+    const size_t group = std::clamp<size_t>((size_t(1) << 30) / std::max<size_t>(per_renderer, 1), 2, filters + 1) - 1;
+    SamplerOptions none;
+    none.filter = Filter::none;
+    const std::unique_ptr<GpuRenderer> baseline = create_renderer(context, texture, scene, none, render, &pipelines);
+    std::vector<std::vector<double>> times(filters + 1);
+    for (size_t begin = 0; begin < filters; begin += group) {
+        std::vector<std::unique_ptr<GpuRenderer>> renderers;
+        std::vector<GpuRenderer*> timed = {baseline.get()};
+        for (size_t i = begin; i < std::min(begin + group, filters); ++i) {
+            renderers.push_back(create_renderer(context, texture, scene, config.filters[i].options, render, &pipelines));
+            timed.push_back(renderers.back().get());
+        }
+        const std::vector<std::vector<double>> t = time_frames_interleaved(timed, config.warmup, config.frames, config.timer);
+        times[0].insert(times[0].end(), t[0].begin(), t[0].end());
+        for (size_t k = 1; k < t.size(); ++k)
+            times[begin + k] = t[k];
+    }
+    if (filters == 0)
+        times[0] = time_frames(*baseline, config.warmup, config.frames, config.timer);
+    return times;
+}
+
+} // namespace
+
 BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, const MipChain& chain,
                    const std::string& directory)
 {
@@ -206,18 +243,10 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
                 write_pfm((fs::path(directory) / run.truth_analytic[kind]).string(), truths.analytic[0]);
             }
 
-            // The baseline and every filter timed in turn (time_frames_interleaved), so their ratios share conditions.
-            SamplerOptions none;
-            none.filter = Filter::none;
-            std::vector<std::unique_ptr<GpuRenderer>> renderers;
-            renderers.push_back(create_renderer(context, texture, scene, none, render));
-            for (const BenchFilter& filter : config.filters)
-                renderers.push_back(create_renderer(context, texture, scene, filter.options, render));
-            std::vector<GpuRenderer*> timed;
-            for (const auto& r : renderers)
-                timed.push_back(r.get());
-            const std::vector<std::vector<double>> times =
-                time_frames_interleaved(timed, config.warmup, config.frames, config.timer);
+            // The baseline and the filters timed in turn (time_frames_interleaved), so their ratios share
+            // conditions; each filter's pipeline made once (for its timing and its images).
+            RenderPipelineCache pipelines;
+            const std::vector<std::vector<double>> times = time_scene_filters(context, texture, scene, render, config, pipelines);
             run.baseline[kind] = summarize_times(times[0]);
 
             std::vector<Lookup> lookups;
@@ -232,7 +261,7 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
                 r.scene = kind;
                 r.filter = filter;
                 r.stage = render.stage;
-                GpuRenderer* renderer = renderers[i + 1].get();
+                auto renderer = create_renderer(context, texture, scene, filter.options, render, &pipelines);
                 r.time = summarize_times(times[i + 1]);
                 r.vs_baseline = r.time.median / run.baseline[kind].median;
                 std::vector<Image> frames = render_path(*renderer, scene, config.flicker_frames, texture_width);
