@@ -21,21 +21,6 @@ double host_frame_ms(const GpuRenderer& r)
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::vector<double> time_on_host(const GpuRenderer& r, int warmup, int frames)
-{
-    std::vector<double> ms;
-    for (int f = 0; f < warmup + frames && int(ms.size()) < frames; ++f) {
-        double elapsed = host_frame_ms(r);
-        if (f >= warmup)
-            ms.push_back(elapsed);
-        if (f > 0 && elapsed > slow_ms) {
-            warmup = std::min(warmup, f + 1);
-            frames = std::min(frames, 3);
-        }
-    }
-    return ms;
-}
-
 // The wall clock's rounds: each renderer warms up alone (the slow-frame rule cuts its warm-up), then one frame
 // of each a round; a renderer with a slow frame stops after three timed ones.
 std::vector<std::vector<double>> time_on_host_in_turn(const std::vector<GpuRenderer*>& renderers, int warmup,
@@ -54,7 +39,8 @@ std::vector<std::vector<double>> time_on_host_in_turn(const std::vector<GpuRende
             if (int(ms[i].size()) >= limit[i])
                 continue;
             ms[i].push_back(host_frame_ms(*renderers[i]));
-            if (ms[i].back() > slow_ms)
+            const bool first_frame = warmup == 0 && ms[i].size() == 1; // the compile's, as in the warm-up
+            if (!first_frame && ms[i].back() > slow_ms)
                 limit[i] = std::min(limit[i], std::max(3, int(ms[i].size())));
         }
     return ms;
@@ -96,9 +82,7 @@ std::vector<double> time_with_timestamps(const GpuRenderer& r, int warmup, int f
 
 std::vector<double> time_frames(GpuRenderer& r, int warmup, int frames, FrameTimer timer)
 {
-    if (warmup < 0 || frames < 1)
-        throw Error("time_frames: need at least one timed frame");
-    return timer == FrameTimer::wall_clock ? time_on_host(r, warmup, frames) : time_with_timestamps(r, warmup, frames);
+    return time_frames_interleaved({&r}, warmup, frames, timer)[0];
 }
 
 std::vector<std::vector<double>> time_frames_interleaved(const std::vector<GpuRenderer*>& renderers, int warmup,
