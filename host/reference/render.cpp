@@ -52,14 +52,15 @@ Image reference_render(const SceneParams& scene, const MipChain& chain, const Sa
 std::vector<glm::dvec4> reference_sample_all(const MipChain& chain, const std::vector<Lookup>& lookups,
                                              const SamplerOptions& options)
 {
-    if (options.stochastic)
-        return reference_sample_stochastic(chain, lookups, options);
+    if (options.stochastic) // --stochastic: row i the mean of its frames, as gpu_sample's
+        check_reference_stochastic(options);
     std::vector<glm::dvec4> out(lookups.size());
     const std::optional<SatLevels> sat = sat_levels_for(chain, options);
     const size_t chunk = 1024;
     parallel_for((lookups.size() + chunk - 1) / chunk, [&](size_t c) {
         for (size_t i = c * chunk; i < std::min(lookups.size(), (c + 1) * chunk); ++i)
-            out[i] = reference_sample(chain, options, lookups[i], sat ? &*sat : nullptr);
+            out[i] = options.stochastic ? reference_stochastic_mean(chain, options, lookups[i], 0, 0, uint32_t(i))
+                                        : reference_sample(chain, options, lookups[i], sat ? &*sat : nullptr);
     });
     return out;
 }

@@ -280,11 +280,27 @@ StochasticMoments reference_stochastic_moments(const MipChain& chain, const Samp
     return m;
 }
 
-Image reference_render_stochastic(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options,
-                                  const RenderOptions& render)
+void check_reference_stochastic(const SamplerOptions& options)
 {
     check_stochastic(options);
     check_reference_taps(options);
+}
+
+glm::dvec4 reference_stochastic_mean(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup, int px,
+                                     int py, uint32_t lookup_index)
+{
+    glm::dvec4 sum(0.0);
+    for (int f = 0; f < options.accumulate; ++f)
+        sum += reference_stochastic_sample(
+            chain, options, lookup,
+            stochastic_xi(options.noise, px, py, options.stochastic_first + uint32_t(f), lookup_index));
+    return sum / double(options.accumulate);
+}
+
+Image reference_render_stochastic(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options,
+                                  const RenderOptions& render)
+{
+    check_reference_stochastic(options);
     const int width = scene.kind_size.y, height = scene.kind_size.z;
     const std::vector<PixelLookup> lookups = reference_lookups(scene, render.gradients, render.rasterize);
     Image out = make_image(width, height);
@@ -295,32 +311,7 @@ Image reference_render_stochastic(const SceneParams& scene, const MipChain& chai
                 out.texels[i] = scene.background;
                 continue;
             }
-            glm::dvec4 sum(0.0);
-            for (int f = 0; f < options.accumulate; ++f)
-                sum += reference_stochastic_sample(
-                    chain, options, lookups[i].lookup,
-                    stochastic_xi(options.noise, x, int(y), options.stochastic_first + uint32_t(f), 0u));
-            out.texels[i] = glm::vec4(sum / double(options.accumulate));
-        }
-    });
-    return out;
-}
-
-std::vector<glm::dvec4> reference_sample_stochastic(const MipChain& chain, const std::vector<Lookup>& lookups,
-                                                    const SamplerOptions& options)
-{
-    check_stochastic(options);
-    check_reference_taps(options);
-    std::vector<glm::dvec4> out(lookups.size());
-    const size_t chunk = 256;
-    parallel_for((lookups.size() + chunk - 1) / chunk, [&](size_t c) {
-        for (size_t i = c * chunk; i < std::min(lookups.size(), (c + 1) * chunk); ++i) {
-            glm::dvec4 sum(0.0);
-            for (int f = 0; f < options.accumulate; ++f)
-                sum += reference_stochastic_sample(
-                    chain, options, lookups[i],
-                    stochastic_xi(options.noise, 0, 0, options.stochastic_first + uint32_t(f), uint32_t(i)));
-            out[i] = sum / double(options.accumulate);
+            out.texels[i] = glm::vec4(reference_stochastic_mean(chain, options, lookups[i].lookup, x, int(y), 0u));
         }
     });
     return out;

@@ -27,9 +27,13 @@ StochasticMoments reference_stochastic_moments(const MipChain& chain, const Samp
 Image reference_render_stochastic(const SceneParams& scene, const MipChain& chain, const SamplerOptions& options,
                                   const RenderOptions& render);
 
-// reference_sample_all with options.stochastic (texfilter sample): lookup i the mean of options.accumulate
-// frames, stochastic_xi of pixel (0, 0), frame stochastic_first + f and lookup i, as the GPU's gpu_sample.
-std::vector<glm::dvec4> reference_sample_stochastic(const MipChain& chain, const std::vector<Lookup>& lookups,
-                                                    const SamplerOptions& options);
+// Throws tf::Error where the options have no stochastic reference: check_stochastic's cases, ewa's tap form.
+void check_reference_stochastic(const SamplerOptions& options);
+
+// The mean of options.accumulate frames of one lookup: frames stochastic_first.., the numbers
+// stochastic_xi(noise, px, py, frame, lookup_index). render: the pixel and lookup 0; sample (reference_sample_all):
+// pixel (0, 0) and the row, as the GPU's gpu_sample. Check the options first (check_reference_stochastic).
+glm::dvec4 reference_stochastic_mean(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup, int px,
+                                     int py, uint32_t lookup_index);
 
 } // namespace tf
