@@ -140,7 +140,7 @@ TEST_CASE("chunks-combine-to-full")
             double bound = gamma(total), chunk_off = 0.0;
             for (const Chunk& chunk : split) {
                 const PushConstants range = make_push_constants(truth(pixel_filter, side, chunk), 0, glm::vec4(0.0f),
-                                                                glm::vec4(0.0f), renderer->push.gradients);
+                                                                glm::vec4(0.0f));
                 renderer->push.truth_first = range.truth_first;
                 renderer->push.truth_count = range.truth_count;
                 chunks.push_back(render_frame(*renderer, scene));

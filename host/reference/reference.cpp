@@ -218,8 +218,12 @@ glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options
     case Filter::sat:
     case Filter::sat_assembly:
         return reference_sat(chain, options, lookup, sat ? *sat : reference_sat_levels(chain.levels[0]));
-    case Filter::none: // the baseline: the scene's uv as colour, no texture
-        return glm::dvec4(lookup.u - std::floor(lookup.u), lookup.v - std::floor(lookup.v), 0.5, 1.0);
+    case Filter::none: { // the baseline: the scene's uv as colour, no texture; blue 0.5 where the gradients
+        // are finite (the shader consumes them so that their cost is in the baseline)
+        const bool finite = std::isfinite(lookup.dudx) && std::isfinite(lookup.dvdx) && std::isfinite(lookup.dudy) &&
+                            std::isfinite(lookup.dvdy);
+        return glm::dvec4(lookup.u - std::floor(lookup.u), lookup.v - std::floor(lookup.v), finite ? 0.5 : 0.0, 1.0);
+    }
     case Filter::nearest:
     case Filter::hw_nearest:
     case Filter::bilinear:

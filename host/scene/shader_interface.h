@@ -27,10 +27,10 @@ struct PushConstants {
     float alpha;
     float max_aniso;
     int32_t boxes;
-    int32_t gradients;    // HARNESS_GRADIENTS_* (tf::Gradients)
+    int32_t free_48;      // free: the gradients are a specialization constant (tf::FilterVariant)
     int32_t truth_side;   // ground-truth: samples a pixel = side^2
     int32_t pixel_filter; // HARNESS_PIXEL_FILTER_* (tf::PixelFilter)
-    int32_t view;         // render: HARNESS_VIEW_* (tf::DebugView); the vec4s then start 16-byte aligned
+    int32_t free_60;      // free: the debug view is a specialization constant; the vec4s then start 16-byte aligned
     float sat_offset[4];  // sat: SatTable::offset, ::scale (per channel)
     float sat_scale[4];
     int32_t truth_first;      // ground-truth: samples [first, first + count) of the grid (the viewer's
@@ -55,10 +55,10 @@ static_assert(offsetof(PushConstants, taps) == HARNESS_PUSH_TAPS);
 static_assert(offsetof(PushConstants, alpha) == HARNESS_PUSH_ALPHA);
 static_assert(offsetof(PushConstants, max_aniso) == HARNESS_PUSH_MAX_ANISO);
 static_assert(offsetof(PushConstants, boxes) == HARNESS_PUSH_BOXES);
-static_assert(offsetof(PushConstants, gradients) == HARNESS_PUSH_GRADIENTS);
+static_assert(offsetof(PushConstants, free_48) == HARNESS_PUSH_FREE_48);
 static_assert(offsetof(PushConstants, truth_side) == HARNESS_PUSH_TRUTH_SIDE);
 static_assert(offsetof(PushConstants, pixel_filter) == HARNESS_PUSH_PIXEL_FILTER);
-static_assert(offsetof(PushConstants, view) == HARNESS_PUSH_VIEW);
+static_assert(offsetof(PushConstants, free_60) == HARNESS_PUSH_FREE_60);
 static_assert(offsetof(PushConstants, sat_offset) == HARNESS_PUSH_SAT_OFFSET);
 static_assert(offsetof(PushConstants, sat_scale) == HARNESS_PUSH_SAT_SCALE);
 static_assert(offsetof(PushConstants, truth_first) == HARNESS_PUSH_TRUTH_FIRST);
@@ -122,10 +122,10 @@ static_assert(int(AnalyticKind::none) == HARNESS_ANALYTIC_NONE && int(AnalyticKi
               "tf::AnalyticKind: PushConstants.truthAnalytic");
 static_assert(int(Gradients::fine) == HARNESS_GRADIENTS_FINE && int(Gradients::coarse) == HARNESS_GRADIENTS_COARSE &&
               int(Gradients::ray) == HARNESS_GRADIENTS_RAY && int(Gradients::cone) == HARNESS_GRADIENTS_CONE,
-              "tf::Gradients: PushConstants.gradients");
+              "tf::Gradients: HARNESS_SPEC_GRADIENTS");
 static_assert(int(DebugView::color) == HARNESS_VIEW_COLOR && int(DebugView::lod) == HARNESS_VIEW_LOD &&
               int(DebugView::anisotropy) == HARNESS_VIEW_ANISOTROPY &&
               int(DebugView::fetches) == HARNESS_VIEW_FETCHES && int(DebugView::data) == HARNESS_VIEW_DATA,
-              "tf::DebugView: PushConstants.view");
+              "tf::DebugView: HARNESS_SPEC_VIEW");
 
 } // namespace tf

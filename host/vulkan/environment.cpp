@@ -101,7 +101,7 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
     r.kind = RenderKind::fragment;
     r.width = uint32_t(scene.kind_size.y);
     r.height = uint32_t(scene.kind_size.z);
-    r.push = make_push_constants(options, 0, glm::vec4(0.0f), glm::vec4(0.0f), int(render.gradients));
+    r.push = make_push_constants(options, 0, glm::vec4(0.0f), glm::vec4(0.0f));
     r.uniforms = create_host_buffer(context, sizeof(SceneParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     cleanup.add([&context, &r] { destroy_buffer(context, r.uniforms); });
     std::memcpy(r.uniforms.mapped, &scene, sizeof(SceneParams));
@@ -133,9 +133,11 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
         {HARNESS_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, r.uniforms.buffer, sizeof(SceneParams)}};
     r.pass = create_pass_with_images(context, images, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                                      VK_SHADER_STAGE_FRAGMENT_BIT, buffers, cleanup);
+    FilterVariant variant = options.filter;
+    variant.gradients = int(render.gradients); // tf::Gradients takes HARNESS_GRADIENTS_* (shader_interface.h)
     if (cache)
         for (const EnvironmentPipelineCache::Entry& e : cache->entries)
-            if (e.map == environment.map && e.filter == options.filter && e.width == r.width && e.height == r.height) {
+            if (e.map == environment.map && e.filter == variant && e.width == r.width && e.height == r.height) {
                 r.pipeline = e.pipeline;
                 return renderer;
             }
@@ -146,10 +148,10 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
     desc.vertex = harness_shader(HarnessShader::render_vert, TextureFormat::rgba32f);
     const SpirvWords fragment = environment.map == EnvMap::cube ? env_spirv_cube() : env_spirv_latlong();
     desc.fragment = {fragment.words, fragment.bytes};
-    r.pipeline = create_graphics_pipeline(context, desc, r.pass.pipeline_layout, options.filter,
+    r.pipeline = create_graphics_pipeline(context, desc, r.pass.pipeline_layout, variant,
                                           cache ? cache->cleanup : cleanup);
     if (cache)
-        cache->entries.push_back({environment.map, options.filter, r.width, r.height, r.pipeline});
+        cache->entries.push_back({environment.map, variant, r.width, r.height, r.pipeline});
     return renderer;
 }
 

@@ -131,7 +131,7 @@ void bind_pass(VkCommandBuffer command_buffer, VkPipelineBindPoint bind_point, V
 }
 
 PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, glm::vec4 sat_offset,
-                                  glm::vec4 sat_scale, int gradients, int view)
+                                  glm::vec4 sat_scale)
 {
     // Ground truth: the range resolved and checked here (a range past the grid is refused, naming it); the
     // shader clamps it again, so whatever reaches it stays bounded.
@@ -142,8 +142,8 @@ PushConstants make_push_constants(const SamplerOptions& options, uint32_t count,
     const bool analytic = ground_truth && options.truth == Truth::analytic;
     PushConstants push{int32_t(options.wrap), options.lod_bias, options.lod_min, options.lod_max,
                        count, options.band, options.probes, int32_t(options.aniso_shape), int32_t(options.taps),
-                       options.alpha, options.max_aniso, options.boxes, gradients,
-                       options.truth_side, int32_t(options.pixel_filter), view,
+                       options.alpha, options.max_aniso, options.boxes, 0,
+                       options.truth_side, int32_t(options.pixel_filter), 0,
                        {sat_offset.x, sat_offset.y, sat_offset.z, sat_offset.w},
                        {sat_scale.x, sat_scale.y, sat_scale.z, sat_scale.w},
                        truth.first, truth.count, 1.0f, 0};

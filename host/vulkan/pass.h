@@ -49,8 +49,7 @@ Pass create_pass_with_images(const VulkanContext& context, const std::vector<Pas
 void bind_pass(VkCommandBuffer command_buffer, VkPipelineBindPoint bind_point, VkPipeline pipeline, const Pass& pass,
                const PushConstants& push);
 
-// view: HARNESS_VIEW_* (render's debug views; sample shows colour).
 PushConstants make_push_constants(const SamplerOptions& options, uint32_t count, glm::vec4 sat_offset,
-                                  glm::vec4 sat_scale, int gradients, int view = HARNESS_VIEW_COLOR);
+                                  glm::vec4 sat_scale);
 
 } // namespace tf

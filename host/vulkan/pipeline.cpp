@@ -7,18 +7,21 @@ namespace tf {
 
 namespace {
 
-// The filter as HARNESS_SPEC_FILTER, the reconstruction as HARNESS_SPEC_MAGNIFY, --stochastic as
-// HARNESS_SPEC_STOCHASTIC (shaders that declare only the first ignore the others); info points into the struct, so keep it alive until the pipeline is made.
+// The variant as HARNESS_SPEC_FILTER, _MAGNIFY, _STOCHASTIC, _VIEW and _GRADIENTS (shaders that declare only
+// some ignore the others); info points into the struct, so keep it alive until the pipeline is made.
 struct FilterSpecialization {
-    int32_t ids[3];
-    VkSpecializationMapEntry entries[3];
+    int32_t ids[5];
+    VkSpecializationMapEntry entries[5];
     VkSpecializationInfo info;
 
     explicit FilterSpecialization(FilterVariant variant)
-        : ids{int32_t(variant.filter), int32_t(variant.magnify), variant.stochastic ? 1 : 0},
+        : ids{int32_t(variant.filter), int32_t(variant.magnify), variant.stochastic ? 1 : 0, variant.view,
+              variant.gradients},
           entries{{HARNESS_SPEC_FILTER, 0, sizeof(int32_t)}, {HARNESS_SPEC_MAGNIFY, sizeof(int32_t), sizeof(int32_t)},
-                  {HARNESS_SPEC_STOCHASTIC, 2 * sizeof(int32_t), sizeof(int32_t)}},
-          info{3, entries, sizeof(ids), ids}
+                  {HARNESS_SPEC_STOCHASTIC, 2 * sizeof(int32_t), sizeof(int32_t)},
+                  {HARNESS_SPEC_VIEW, 3 * sizeof(int32_t), sizeof(int32_t)},
+                  {HARNESS_SPEC_GRADIENTS, 4 * sizeof(int32_t), sizeof(int32_t)}},
+          info{5, entries, sizeof(ids), ids}
     {
     }
     FilterSpecialization(const FilterSpecialization&) = delete;

@@ -1,8 +1,10 @@
 #pragma once
 // Pipelines from embedded SPIR-V, each specialised to one filter (the harness shaders' specialization
-// constants HARNESS_SPEC_FILTER, HARNESS_SPEC_MAGNIFY and HARNESS_SPEC_STOCHASTIC), so that a pipeline holds the
-// code of one filter only.
+// constants HARNESS_SPEC_FILTER, HARNESS_SPEC_MAGNIFY and HARNESS_SPEC_STOCHASTIC) and, for render, to one
+// debug view and one gradient form (HARNESS_SPEC_VIEW, HARNESS_SPEC_GRADIENTS), so that a pipeline holds the
+// code of one filter only and a frame runs only what it shows.
 #include "core/filter.h"
+#include "harness/config.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
 #include <cstddef>
@@ -11,11 +13,14 @@
 namespace tf {
 
 // What a harness pipeline is specialised to: the filter, level 0's reconstruction (trilinear, aniso, ewa:
-// --magnify) and the stochastic forms (--stochastic). Made from a Filter alone for the deterministic bilinear default.
+// --magnify), the stochastic forms (--stochastic) and render's view and gradients (render.cpp sets them). Made
+// from a Filter alone for the deterministic bilinear default, colour view, fine quad gradients.
 struct FilterVariant {
     Filter filter = Filter::nearest;
     Reconstruction magnify = Reconstruction::bilinear;
     bool stochastic = false; // --stochastic: HARNESS_SPEC_STOCHASTIC 1, the one-texel forms
+    int view = HARNESS_VIEW_COLOR;           // render --view: HARNESS_VIEW_* (tf::DebugView)
+    int gradients = HARNESS_GRADIENTS_FINE;  // render --derivatives: HARNESS_GRADIENTS_* (tf::Gradients)
     FilterVariant(Filter f) : filter(f) {} // NOLINT: implicit, most pipelines vary by filter alone
     FilterVariant(Filter f, Reconstruction m, bool s = false) : filter(f), magnify(m), stochastic(s) {}
     bool operator==(const FilterVariant&) const = default;

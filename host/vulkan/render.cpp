@@ -14,14 +14,6 @@ namespace tf {
 
 namespace {
 
-int gradients_id(Gradients gradients)
-{
-    return gradients == Gradients::coarse ? HARNESS_GRADIENTS_COARSE
-           : gradients == Gradients::ray  ? HARNESS_GRADIENTS_RAY
-           : gradients == Gradients::cone ? HARNESS_GRADIENTS_CONE
-                                          : HARNESS_GRADIENTS_FINE;
-}
-
 RenderKind render_kind(const SamplerOptions& options, const RenderOptions& render)
 {
     if (render.stage == Stage::compute)
@@ -46,8 +38,7 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
     r.width = uint32_t(scene.kind_size.y);
     r.height = uint32_t(scene.kind_size.z);
     r.background = {{scene.background.r, scene.background.g, scene.background.b, scene.background.a}};
-    r.push = make_push_constants(options, 0, texture.sat_offset, texture.sat_scale, gradients_id(render.gradients),
-                                 int(render.view));
+    r.push = make_push_constants(options, 0, texture.sat_offset, texture.sat_scale);
 
     r.uniforms = create_host_buffer(context, sizeof(SceneParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     cleanup.add([&context, &r] { destroy_buffer(context, r.uniforms); });
@@ -71,10 +62,13 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
         r.vertices = create_mesh_vertices(context, scene, cleanup);
     }
     r.pass = create_pass(context, texture, options, stages, push_stages, buffers, cleanup);
-    r.pipeline = cache ? cached_render_pipeline(context, *cache, r.kind, r.pass.pipeline_layout, filter_variant(options), r.width,
+    FilterVariant variant = filter_variant(options);
+    variant.view = int(render.view);           // tf::DebugView and tf::Gradients take the
+    variant.gradients = int(render.gradients); // HARNESS_VIEW_* and HARNESS_GRADIENTS_* values (shader_interface.h)
+    r.pipeline = cache ? cached_render_pipeline(context, *cache, r.kind, r.pass.pipeline_layout, variant, r.width,
                                                 r.height, texture.format)
-                       : create_render_pipeline(context, r.kind, r.pass.pipeline_layout, filter_variant(options), r.width,
-                                                r.height, cleanup, texture.format);
+                       : create_render_pipeline(context, r.kind, r.pass.pipeline_layout, variant, r.width, r.height,
+                                                cleanup, texture.format);
     return renderer;
 }
 

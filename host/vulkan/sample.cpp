@@ -77,7 +77,7 @@ std::vector<glm::vec4> run_sample_pass(const VulkanContext& context, const std::
                                  {HARNESS_BINDING_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, counts.buffer}},
                                 cleanup);
     const VkPipeline pipeline = create_compute_pipeline(context, code, pass.pipeline_layout, filter_variant(options), cleanup);
-    PushConstants push = make_push_constants(options, count, glm::vec4(0.0f), glm::vec4(0.0f), HARNESS_GRADIENTS_FINE);
+    PushConstants push = make_push_constants(options, count, glm::vec4(0.0f), glm::vec4(0.0f));
     adjust_push(push);
     // --stochastic --accumulate N: one dispatch a frame (each its own random numbers), the mean summed in
     // double as gpu_render's; the stats are the first frame's (every frame reads one texel or tap a lookup).

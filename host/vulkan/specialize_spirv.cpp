@@ -11,7 +11,9 @@ std::vector<uint32_t> specialize_spirv(ShaderCode code, FilterVariant variant)
     const std::unordered_map<uint32_t, std::vector<uint32_t>> values = {
         {HARNESS_SPEC_FILTER, {uint32_t(int32_t(variant.filter))}},
         {HARNESS_SPEC_MAGNIFY, {uint32_t(int32_t(variant.magnify))}},
-        {HARNESS_SPEC_STOCHASTIC, {variant.stochastic ? 1u : 0u}}};
+        {HARNESS_SPEC_STOCHASTIC, {variant.stochastic ? 1u : 0u}},
+        {HARNESS_SPEC_VIEW, {uint32_t(int32_t(variant.view))}},
+        {HARNESS_SPEC_GRADIENTS, {uint32_t(int32_t(variant.gradients))}}};
     spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_2); // the harness targets Vulkan 1.2's SPIR-V 1.5
     optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
     optimizer.RegisterPass(spvtools::CreateSetSpecConstantDefaultValuePass(values))

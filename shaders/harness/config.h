@@ -133,10 +133,10 @@
 #define HARNESS_PUSH_ALPHA 36
 #define HARNESS_PUSH_MAX_ANISO 40
 #define HARNESS_PUSH_BOXES 44
-#define HARNESS_PUSH_GRADIENTS 48
+#define HARNESS_PUSH_FREE_48 48       // free (the gradients are HARNESS_SPEC_GRADIENTS)
 #define HARNESS_PUSH_TRUTH_SIDE 52
 #define HARNESS_PUSH_PIXEL_FILTER 56
-#define HARNESS_PUSH_VIEW 60       // render: HARNESS_VIEW_*
+#define HARNESS_PUSH_FREE_60 60    // free (the debug view is HARNESS_SPEC_VIEW)
 #define HARNESS_PUSH_SAT_OFFSET 64 // vec4: 16-byte aligned
 #define HARNESS_PUSH_SAT_SCALE 80
 #define HARNESS_PUSH_TRUTH_FIRST 96  // ground-truth: the first sample of the range a frame takes (viewer)
@@ -166,6 +166,8 @@
 #define HARNESS_SPEC_FILTER 0 // specialization constant id of the filter (HARNESS_FILTER_*)
 #define HARNESS_SPEC_MAGNIFY 1 // specialization constant id of level 0's reconstruction (HARNESS_RECONSTRUCT_*)
 #define HARNESS_SPEC_STOCHASTIC 2 // specialization constant id: 1 = the stochastic forms (stochastic.glsl), 0 = not
+#define HARNESS_SPEC_VIEW 3 // specialization constant id of render's debug view (HARNESS_VIEW_*)
+#define HARNESS_SPEC_GRADIENTS 4 // specialization constant id of render's gradients (HARNESS_GRADIENTS_*)
 
 // --stochastic: the random numbers of the one-texel forms (tf::Noise; shaders/harness/stochastic_noise.glsl,
 // host/core/stochastic_noise.h): white (an integer hash) or blue (a Cranley-Patterson rotated R3 sequence).

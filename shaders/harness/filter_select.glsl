@@ -224,7 +224,8 @@ vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
         return tf_sat_assembly(u_satLow, u_satHigh, uv HARNESS_SAT_X, dUVdx, dUVdy, s, pc.satOffset, pc.satScale,
                                pc.boxes);
 #endif
-    case HARNESS_FILTER_NONE: return vec4(fract(uv), 0.5, 1.0); // the scene without the texture: baseline cost
+    case HARNESS_FILTER_NONE: // the scene without the texture, its gradients made too: the baseline cost
+        return vec4(fract(uv), tf_finite(dUVdx) && tf_finite(dUVdy) ? 0.5 : 0.0, 1.0);
     case HARNESS_FILTER_GROUND_TRUTH: return vec4(0.0);         // per pixel, not per lookup: see ground_truth.glsl
     default:
         TF_COUNT_HW_LOOKUPS(1);
@@ -232,7 +233,7 @@ vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
     }
 }
 
-// What a render pixel shows (pc.view): the filtered colour, or a debug view of its lookup (texfilter/
+// What a render pixel shows (VIEW_ID, a specialization constant): the filtered colour, or a debug view of its lookup (texfilter/
 // debug.glsl). The filter always runs, so the fetches are this lookup's; the LOD is the one its family
 // samples at. The host refuses views for ground-truth and none (no lookup).
 vec4 harness_shade(vec2 uv, vec2 dUVdx, vec2 dUVdy)
@@ -240,7 +241,7 @@ vec4 harness_shade(vec2 uv, vec2 dUVdx, vec2 dUVdy)
     dUVdx *= pc.gradientScale; // exact at 1
     dUVdy *= pc.gradientScale;
     vec4 color = harness_filter(uv, dUVdx, dUVdy);
-    if (pc.view == HARNESS_VIEW_COLOR)
+    if (VIEW_ID == HARNESS_VIEW_COLOR)
         return color;
     int family = FILTER_ID == HARNESS_FILTER_ANISO ? TF_DEBUG_ANISO
                  : FILTER_ID == HARNESS_FILTER_EWA ? TF_DEBUG_EWA
@@ -250,7 +251,7 @@ vec4 harness_shade(vec2 uv, vec2 dUVdx, vec2 dUVdy)
                                         pc.anisoShape,
                                         pc.maxAniso);
     float work = float(fetchCount + hwLookupCount);
-    switch (pc.view) {
+    switch (VIEW_ID) {
     case HARNESS_VIEW_LOD: return vec4(tf_debug_lod_color(f.lod), 1.0);
     case HARNESS_VIEW_ANISOTROPY: return vec4(tf_debug_anisotropy_color(f.ratio), 1.0);
     case HARNESS_VIEW_FETCHES: return vec4(tf_debug_heat(work, HARNESS_VIEW_FETCHES_MAX), 1.0);

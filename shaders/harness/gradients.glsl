@@ -1,4 +1,4 @@
-// Harness only: the uv gradients a render asked for (pc.gradients), for a ray-cast hit: quads (seam-free
+// Harness only: the uv gradients a render asked for (GRADIENTS_ID), for a ray-cast hit: quads (seam-free
 // where the scene's uv wraps), ray differentials or ray cones. Quad derivatives must run in uniform control
 // flow, so every form is computed and one is kept.
 #ifndef HARNESS_GRADIENTS_GLSL

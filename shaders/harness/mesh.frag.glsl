@@ -11,7 +11,7 @@ void main()
 {
     tf_Gradients fine = tf_quad_gradients_fine(uv);
     tf_Gradients coarse = tf_quad_gradients_coarse(uv);
-    tf_Gradients g = pc.gradients == HARNESS_GRADIENTS_COARSE ? coarse : fine;
+    tf_Gradients g = GRADIENTS_ID == HARNESS_GRADIENTS_COARSE ? coarse : fine;
     harnessPixel = ivec2(gl_FragCoord.xy);
     outColor = harness_shade(uv, g.dUVdx, g.dUVdy);
 }

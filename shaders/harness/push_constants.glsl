@@ -15,6 +15,12 @@ layout(constant_id = HARNESS_SPEC_MAGNIFY) const int MAGNIFY_ID = HARNESS_RECONS
 // bilinear, trilinear, aniso, ewa: 1 = their one-texel stochastic forms (--stochastic), a constant so that the
 // deterministic pipelines hold none of that code.
 layout(constant_id = HARNESS_SPEC_STOCHASTIC) const int STOCHASTIC_ID = 0;
+// render: the debug view and the gradients, constants too, so that a frame runs only the code it shows: as
+// push constants, lavapipe (which runs every side of every if) computed the debug views' footprint (60 % of
+// a no-texture frame) and every gradient form (ray differentials, cones) in every frame, and the views'
+// fetch counters cost manual filters ~8 % more (docs/BENCHMARKS.md).
+layout(constant_id = HARNESS_SPEC_VIEW) const int VIEW_ID = HARNESS_VIEW_COLOR;
+layout(constant_id = HARNESS_SPEC_GRADIENTS) const int GRADIENTS_ID = HARNESS_GRADIENTS_FINE;
 
 // tf::PushConstants (host/scene/shader_interface.h): both sides take the offsets from config.h.
 layout(push_constant) uniform PushConstants {
@@ -30,10 +36,8 @@ layout(push_constant) uniform PushConstants {
     layout(offset = HARNESS_PUSH_ALPHA) float alpha;          // ewa
     layout(offset = HARNESS_PUSH_MAX_ANISO) float maxAniso;   // ewa
     layout(offset = HARNESS_PUSH_BOXES) int boxes;            // sat-assembly
-    layout(offset = HARNESS_PUSH_GRADIENTS) int gradients;    // render: HARNESS_GRADIENTS_*
     layout(offset = HARNESS_PUSH_TRUTH_SIDE) int truthSide;   // ground-truth: samples a pixel = side^2
     layout(offset = HARNESS_PUSH_PIXEL_FILTER) int pixelFilter; // ground-truth: HARNESS_PIXEL_FILTER_*
-    layout(offset = HARNESS_PUSH_VIEW) int view;              // render: HARNESS_VIEW_*
     // sat: per channel, the value of quantisation level 0 and the span of levels 0..65535
     // (SatTable::offset, ::scale; see sat.glsl)
     layout(offset = HARNESS_PUSH_SAT_OFFSET) vec4 satOffset;

@@ -27,11 +27,11 @@ void main()
     Hit h = scene_hit(scene, centre);
     // All lanes (those past the image's edge too) take part in the quad operations.
     // Seam-free differences where the scene's uv wraps: those of uv and of its half-period shift (gradients.glsl).
-    int mode = pc.gradients == HARNESS_GRADIENTS_COARSE ? TF_DERIVATIVES_COARSE : TF_DERIVATIVES_FINE;
+    int mode = GRADIENTS_ID == HARNESS_GRADIENTS_COARSE ? TF_DERIVATIVES_COARSE : TF_DERIVATIVES_FINE;
     tf_Gradients quad = scene_quad_gradients(scene, tf_compute_quad_gradients(h.uv, mode),
                                              tf_compute_quad_gradients(half_period_shift(h.uv), mode));
-    tf_Gradients g = pc.gradients == HARNESS_GRADIENTS_RAY    ? ray_gradients(scene, centre, h)
-                     : pc.gradients == HARNESS_GRADIENTS_CONE ? cone_gradients(scene, centre, h)
+    tf_Gradients g = GRADIENTS_ID == HARNESS_GRADIENTS_RAY    ? ray_gradients(scene, centre, h)
+                     : GRADIENTS_ID == HARNESS_GRADIENTS_CONE ? cone_gradients(scene, centre, h)
                                                               : quad;
     vec3 q = uv_or_none(h);
     [[unroll]] for (int step = 0; step < 2; ++step)

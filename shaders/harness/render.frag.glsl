@@ -22,9 +22,9 @@ void main()
     vec2 shifted = half_period_shift(h.uv);
     tf_Gradients fine = scene_quad_gradients(scene, tf_quad_gradients_fine(h.uv), tf_quad_gradients_fine(shifted));
     tf_Gradients coarse = scene_quad_gradients(scene, tf_quad_gradients_coarse(h.uv), tf_quad_gradients_coarse(shifted));
-    tf_Gradients g = pc.gradients == HARNESS_GRADIENTS_COARSE ? coarse
-                     : pc.gradients == HARNESS_GRADIENTS_RAY  ? ray_gradients(scene, gl_FragCoord.xy, h)
-                     : pc.gradients == HARNESS_GRADIENTS_CONE ? cone_gradients(scene, gl_FragCoord.xy, h)
+    tf_Gradients g = GRADIENTS_ID == HARNESS_GRADIENTS_COARSE ? coarse
+                     : GRADIENTS_ID == HARNESS_GRADIENTS_RAY  ? ray_gradients(scene, gl_FragCoord.xy, h)
+                     : GRADIENTS_ID == HARNESS_GRADIENTS_CONE ? cone_gradients(scene, gl_FragCoord.xy, h)
                                                               : fine;
     // A neighbour's q from fine differences: exact where this lane's q is 0 (the only case adoption uses).
     bvec2 odd = equal(ivec2(gl_FragCoord.xy) & 1, ivec2(1));

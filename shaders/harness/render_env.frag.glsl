@@ -31,13 +31,13 @@ void main()
     EnvHit h = env_hit(scene, gl_FragCoord.xy);
     // Quad derivatives in uniform control flow: every form, then the one asked for.
     vec3 fineX = dFdxFine(h.dir), fineY = dFdyFine(h.dir), coarseX = dFdxCoarse(h.dir), coarseY = dFdyCoarse(h.dir);
-    vec3 dx = pc.gradients == HARNESS_GRADIENTS_COARSE ? coarseX
-              : pc.gradients == HARNESS_GRADIENTS_RAY  ? h.dirDx
-              : pc.gradients == HARNESS_GRADIENTS_CONE ? h.coneDx
+    vec3 dx = GRADIENTS_ID == HARNESS_GRADIENTS_COARSE ? coarseX
+              : GRADIENTS_ID == HARNESS_GRADIENTS_RAY  ? h.dirDx
+              : GRADIENTS_ID == HARNESS_GRADIENTS_CONE ? h.coneDx
                                                        : fineX;
-    vec3 dy = pc.gradients == HARNESS_GRADIENTS_COARSE ? coarseY
-              : pc.gradients == HARNESS_GRADIENTS_RAY  ? h.dirDy
-              : pc.gradients == HARNESS_GRADIENTS_CONE ? h.coneDy
+    vec3 dy = GRADIENTS_ID == HARNESS_GRADIENTS_COARSE ? coarseY
+              : GRADIENTS_ID == HARNESS_GRADIENTS_RAY  ? h.dirDy
+              : GRADIENTS_ID == HARNESS_GRADIENTS_CONE ? h.coneDy
                                                        : fineY;
     outColor = harness_env_filter(h.dir, dx * pc.gradientScale, dy * pc.gradientScale);
 }
