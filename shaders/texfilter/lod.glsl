@@ -27,11 +27,10 @@
 // lodMax), 0, levels − 1) exactly. host/reference/reference.cpp clamp_lod follows the same rule.
 float tfi_clamp_lod_levels(float lambda, tf_Sampler s, int levels)
 {
+    // Selects, not ifs: lavapipe runs both sides of an if under a mask anyway, and the masks cost more.
     float lod = isnan(lambda) ? 1.0 / 0.0 : lambda;
-    if (!isnan(s.lodMin))
-        lod = max(lod, s.lodMin);
-    if (!isnan(s.lodMax))
-        lod = min(lod, s.lodMax);
+    lod = isnan(s.lodMin) ? lod : max(lod, s.lodMin);
+    lod = isnan(s.lodMax) ? lod : min(lod, s.lodMax);
     return clamp(lod, 0.0, float(max(levels, 1) - 1)); // lod is not NaN here
 }
 
@@ -85,14 +84,12 @@ int tf_mip_level_nearest(float lod)
 // Unclamped log2(rho) + bias; +Inf for non-finite gradients, -Inf for zero gradients.
 float tf_lod_unclamped(TFI_T, vec2 dUVdx, vec2 dUVdy, float lodBias)
 {
-    if (!tf_finite(dUVdx) || !tf_finite(dUVdy))
-        return 1.0 / 0.0;
     vec2 size0 = vec2(TFI_SIZE0);
     vec2 ax = dUVdx * size0;
     vec2 ay = dUVdy * size0;
     // Squared lengths, so one log2 serves both: log2(sqrt(x)) = 0.5 log2(x). Overflow gives +Inf: fine.
     float rho2 = max(dot(ax, ax), dot(ay, ay));
-    return 0.5 * log2(rho2) + lodBias;
+    return tf_finite(dUVdx) && tf_finite(dUVdy) ? 0.5 * log2(rho2) + lodBias : 1.0 / 0.0;
 }
 
 float tfi_clamp_lod(float lambda, tf_Sampler s, TFI_T)
