@@ -41,10 +41,10 @@
 // Blend weight of the coarser level for LOD fraction f in [0, 1) and band in [0, 1] (see above).
 float tf_brilinear_weight(float f, float band)
 {
-    if (!(band > 0.0))
-        return f > 0.5 ? 1.0 : 0.0; // B <= 0 (or NaN): the nearest level, ties to the finer
-    float b = min(band, 1.0);
-    return clamp((f - (1.0 - b) * 0.5) / b, 0.0, 1.0);
+    float nearest = f > 0.5 ? 1.0 : 0.0; // B <= 0 (or NaN): the nearest level, ties to the finer
+    float b = band > 0.0 ? min(band, 1.0) : 1.0;
+    // A select, not an early return: SIMD implementations that run both sides pay for the masks.
+    return band > 0.0 ? clamp((f - (1.0 - b) * 0.5) / b, 0.0, 1.0) : nearest;
 }
 
 #define TFI_FAMILY TFI_FAMILY_BRILINEAR

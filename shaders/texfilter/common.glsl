@@ -67,6 +67,11 @@
 #if (TF_RESOURCES & (2 | 4 | 8 | 16 | 32 | 64 | 128)) != 0
 #extension GL_EXT_samplerless_texture_functions : require
 #endif
+// TFI_UNROLL before a loop of constant trip count whose body indexes local arrays by the loop counter: unrolled,
+// the indices are constants and the arrays registers; left rolled, a SIMD implementation (lavapipe) indexes
+// them through memory, one lane at a time (the SAT's corner loops: a third of its time). A hint, no capability.
+#extension GL_EXT_control_flow_attributes : enable
+#define TFI_UNROLL [[unroll]]
 
 // Bindless: the qualifier every texture and sampled-image operand inside the includes is wrapped in.
 #ifndef TF_NONUNIFORM

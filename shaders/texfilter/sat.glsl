@@ -249,8 +249,10 @@ vec4 tfi_sat_box(TFI_SAT_T, vec2 lo, vec2 hi TFI_SAT_X, ivec2 size, int wrapMode
     } while (++turn < turns);
     vec4 sum = vec4(0.0);
     tfi_SatInt previous[3]; // x differences E(px[k+1], y) − E(px[k], y) of the previous corner row
-    for (int l = 0; l < 4; ++l) {
-        for (int k = 0; k < 3; ++k) {
+    // Unrolled (common.glsl TFI_UNROLL): e[] and previous[] then live in registers. Rolled, lavapipe indexed them
+    // through memory a lane at a time, a third of tf_sat's time (docs/BENCHMARKS.md); +270 SPIR-V instructions.
+    TFI_UNROLL for (int l = 0; l < 4; ++l) {
+        TFI_UNROLL for (int k = 0; k < 3; ++k) {
             tfi_SatInt d = tfi_sat_sub(e[4 * l + k + 1], e[4 * l + k]);
             if (l > 0) // block [px[k], px[k+1]) x [py[l-1], py[l]): exact, then weighted in float
                 sum += (wx[k] * wy[l - 1]) * tfi_sat_to_float(tfi_sat_sub(d, previous[k]));
