@@ -30,6 +30,7 @@
 #include "reference/reference.h"
 #include "reference/render.h"
 #include "reference/resources.h"
+#include "reference/stochastic.h"
 #include "support.h"
 #include "vulkan/resource_images.h"
 
@@ -385,6 +386,58 @@ void check_pcf_hardware(Filter hw, Filter manual)
           std::to_string(partial) + " lookups partly lit (nearest: lit)");
 }
 
+// sample --stochastic on a resource kind: row i draws the numbers of pixel (0, 0), lookup i, as with combined
+// (test_stochastic.cpp sample-backends), so the device and the reference of that kind pick the same texels except
+// where xi lies within float rounding of a weight boundary: at most 1 % of the rows may differ by more than 1e-5
+// (the cap sample-backends uses). It can fail: at least a quarter of the rows must be off the deterministic filter
+// (the estimate is noisy: it really is the stochastic form), and on a layered kind a reference that read another
+// texture must differ on most rows, as must one that drew another row's numbers (the row order of a bindless
+// batch, which reads its lookups' textures in groups, kept).
+void check_stochastic(Resource resource, Filter filter, int layers = 4, int layer = 2)
+{
+    if (resource == Resource::bindless && skip(!has_bindless(), "shaderSampledImageArrayNonUniformIndexing (bindless)"))
+        return;
+    Case c = make_case(resource, filter, Taps::manual, layers, layer);
+    c.options.stochastic = true;
+    c.options.noise = Noise::white;
+    c.options.accumulate = 8;
+    c.flags += " --stochastic white --accumulate 8";
+    const test::SampleResult gpu = gpu_run(c);
+    const std::vector<MipChain> chains = chains_of(c);
+    const std::vector<Lookup>& ls = lookups();
+    const std::vector<glm::dvec4> cpu = reference_sample_resource(chains, ls, c.options, c.resource);
+    SamplerOptions deterministic = c.options;
+    deterministic.stochastic = false;
+    const std::vector<glm::dvec4> exact = reference_sample_resource(chains, ls, deterministic, c.resource);
+    const std::string name = c.flags + resource_flags(c.resource);
+    CHECK(gpu.colors.size() == ls.size(), name);
+    if (gpu.colors.size() != ls.size())
+        return;
+    auto share = [&](const std::vector<glm::dvec4>& a, const std::vector<glm::dvec4>& b, double tolerance) {
+        size_t n = 0;
+        for (size_t i = 0; i < ls.size(); ++i)
+            n += max_channel_diff(a[i], b[i]) > tolerance ? 1 : 0;
+        return double(n) / double(ls.size());
+    };
+    const double differ = share(gpu.colors, cpu, 1e-5), noisy = share(cpu, exact, 1e-3);
+    std::printf("%-90s rows differing %.4f, off the deterministic filter %.3f\n", name.c_str(), differ, noisy);
+    CHECK(differ <= 0.01, name + ": share of rows where device and reference differ: " + test::show(differ));
+    CHECK(noisy >= 0.25, name + ": share of rows off the deterministic filter (noise is there): " + test::show(noisy));
+    if (is_layered(resource)) {
+        ResourceOptions other = c.resource;
+        if (resource == Resource::bindless)
+            other.layer = (c.resource.layer + 1) % c.resource.layers;
+        else
+            other.layer = c.resource.layer == 0 ? 1 : 0;
+        const double caught = share(gpu.colors, reference_sample_resource(chains, ls, c.options, other), 1e-5);
+        CHECK(caught >= 0.5, name + ": a reference on other textures differs on only " + test::show(caught));
+    }
+    SamplerOptions shifted = c.options; // the same lookups drawing the next frames' numbers
+    shifted.stochastic_first = 8;
+    const double reseeded = share(gpu.colors, reference_sample_resource(chains, ls, shifted, c.resource), 1e-5);
+    CHECK(reseeded >= 0.25, name + ": other random numbers change only " + test::show(reseeded) + " of the rows");
+}
+
 } // namespace
 
 TEST_SUITE_BEGIN("gpu");
@@ -412,4 +465,35 @@ TEST_CASE("shadow-ewa-hardware-taps") { check_shadow(Filter::ewa, Taps::hardware
 TEST_CASE("pcf-nearest-vs-hw-nearest") { check_pcf_hardware(Filter::hw_nearest, Filter::nearest); }
 TEST_CASE("pcf-bilinear-vs-hw-bilinear") { check_pcf_hardware(Filter::hw_bilinear, Filter::bilinear); }
 TEST_CASE("pcf-trilinear-vs-hw-trilinear") { check_pcf_hardware(Filter::hw_trilinear, Filter::trilinear); }
+TEST_CASE("stochastic-separate-trilinear") { check_stochastic(Resource::separate, Filter::trilinear); }
+TEST_CASE("stochastic-array-aniso") { check_stochastic(Resource::array, Filter::aniso); }
+TEST_CASE("stochastic-separate-array-bilinear") { check_stochastic(Resource::separate_array, Filter::bilinear, 4, 3); }
+TEST_CASE("stochastic-bindless-trilinear") { check_stochastic(Resource::bindless, Filter::trilinear, 4, 1); }
+TEST_CASE("stochastic-shadow-trilinear") { check_stochastic(Resource::shadow, Filter::trilinear); }
+TEST_CASE("stochastic-shadow-ewa") { check_stochastic(Resource::shadow, Filter::ewa); }
+
+// The bindless reference (CPU only, so it runs where the device has no bindless): its lookups are filtered in
+// groups by the texture they read, and lookup i must still draw row i's numbers, as the device's does. Row k
+// of a group (the numbering before the fix) would draw other numbers on most rows.
+TEST_CASE("stochastic-bindless-reference-rows")
+{
+    Case c = make_case(Resource::bindless, Filter::trilinear, Taps::manual, 4, 1);
+    c.options.stochastic = true;
+    c.options.accumulate = 4;
+    const std::vector<MipChain> chains = chains_of(c);
+    const std::vector<Lookup>& ls = lookups();
+    const std::vector<glm::dvec4> grouped = reference_sample_resource(chains, ls, c.options, c.resource);
+    size_t wrong = 0, group_numbering = 0;
+    std::vector<uint32_t> position(chains.size(), 0); // a lookup's row within its texture's group
+    for (size_t i = 0; i < ls.size(); ++i) {
+        const size_t t = size_t(texture_index(c.resource, i));
+        const glm::dvec4 own = reference_stochastic_mean(chains[t], c.options, ls[i], 0, 0, uint32_t(i));
+        const glm::dvec4 in_group = reference_stochastic_mean(chains[t], c.options, ls[i], 0, 0, position[t]++);
+        wrong += max_channel_diff(grouped[i], own) > 0.0 ? 1 : 0;
+        group_numbering += max_channel_diff(in_group, own) > 1e-5 ? 1 : 0;
+    }
+    CHECK(wrong == 0, std::to_string(wrong) + " rows do not draw their own row's numbers");
+    CHECK(double(group_numbering) / double(ls.size()) >= 0.5,
+          "numbering rows within their group changes only " + std::to_string(group_numbering) + " rows");
+}
 TEST_SUITE_END();

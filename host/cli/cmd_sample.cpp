@@ -61,9 +61,6 @@ int run_sample(const std::vector<std::string>& argv)
         throw Error("bad value for --filter: ground-truth integrates over a scene's pixels, not around a lookup "
                     "(use render)");
     const ResourceOptions resource = resource_options_from(args);
-    if (options.stochastic && resource.resource != Resource::combined)
-        throw Error("sample --stochastic is for --resource combined (its CPU reference reads one MIP chain), not "
-                    "--resource " + to_string(resource.resource));
     Backend backend = backend_from(args);
     TextureSource source = texture_source_from(args);
     check_format_filter(source.format, options); // integer data and hardware filtering, before any work

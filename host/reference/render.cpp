@@ -3,6 +3,7 @@
 #include "reference/footprint.h"
 #include "reference/ground_truth.h"
 #include "reference/stochastic.h"
+#include "texture/error.h"
 #include "texture/threads.h"
 #include <algorithm>
 #include <optional>
@@ -50,8 +51,11 @@ Image reference_render(const SceneParams& scene, const MipChain& chain, const Sa
 }
 
 std::vector<glm::dvec4> reference_sample_all(const MipChain& chain, const std::vector<Lookup>& lookups,
-                                             const SamplerOptions& options)
+                                             const SamplerOptions& options, const std::vector<uint32_t>* rows)
 {
+    if (rows && rows->size() != lookups.size())
+        throw Error("reference_sample_all: " + std::to_string(rows->size()) + " row indices for " +
+                    std::to_string(lookups.size()) + " lookups");
     if (options.stochastic) // --stochastic: row i the mean of its frames, as gpu_sample's
         check_reference_stochastic(options);
     std::vector<glm::dvec4> out(lookups.size());
@@ -59,7 +63,8 @@ std::vector<glm::dvec4> reference_sample_all(const MipChain& chain, const std::v
     const size_t chunk = 1024;
     parallel_for((lookups.size() + chunk - 1) / chunk, [&](size_t c) {
         for (size_t i = c * chunk; i < std::min(lookups.size(), (c + 1) * chunk); ++i)
-            out[i] = options.stochastic ? reference_stochastic_mean(chain, options, lookups[i], 0, 0, uint32_t(i))
+            out[i] = options.stochastic ? reference_stochastic_mean(chain, options, lookups[i], 0, 0,
+                                                                    rows ? (*rows)[i] : uint32_t(i))
                                         : reference_sample(chain, options, lookups[i], sat ? &*sat : nullptr);
     });
     return out;

@@ -37,9 +37,12 @@ std::vector<glm::dvec4> reference_sample_resource(const std::vector<MipChain>& c
         if (rows[t].empty())
             continue;
         std::vector<Lookup> group;
-        for (size_t i : rows[t])
+        std::vector<uint32_t> rows_read; // --stochastic: each lookup draws its own row's numbers, as on the device
+        for (size_t i : rows[t]) {
             group.push_back(lookups[i]);
-        const std::vector<glm::dvec4> out = reference_sample_all(chains[t], group, options);
+            rows_read.push_back(uint32_t(i));
+        }
+        const std::vector<glm::dvec4> out = reference_sample_all(chains[t], group, options, &rows_read);
         for (size_t k = 0; k < rows[t].size(); ++k)
             colors[rows[t][k]] = out[k];
     }
