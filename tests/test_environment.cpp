@@ -19,6 +19,7 @@
 #include "texture/mip.h"
 #include "vulkan/environment.h"
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 
@@ -366,6 +367,118 @@ TEST_CASE("latlong-seam-and-pole")
     CHECK(pole, "no view came near the +y pole");
 }
 
+// The cubics on the maps, bspline and catmull-rom (level 0, 16 texel reads, past a face's edge or a pole by the
+// map's rule on the device and in the reference alike), on every pixel of both scenes and both maps. The bound
+// is the reference's own spread when the pixel's direction moves by its float error (direction_error) along each
+// axis, plus 16 reads' float rounding: that covers the reconstruction's slope and, near a cube edge, the device
+// choosing the other face of a float tie (a cubic on a face's extended plane is continuous across the edge only
+// to ~1e-4 of the contrast here: the off-face texels do not lie on the neighbour's grid). It can fail: a texel
+// read from the wrong face or across the pole is off by the contrast, far beyond the spread. On the lat-long map
+// the device's atan error is added (as in latlong-seam-and-pole). One more term on the cube: a texel k >= 2 past both edges of a corner, diagonally (|di| = |dj|), is read through a direction that
+// lies exactly between the two side faces, so float and double may take it from either: its weight |w_i w_j|
+// times the contrast (tie_weight).
+// |k(d)| of the kernel at the four taps i0-1..i0+2 for fraction t (bicubic.glsl's math).
+std::array<double, 4> cubic_weights(double t, Filter filter)
+{
+    auto k = [&](double d) {
+        d = std::abs(d);
+        if (filter == Filter::bspline)
+            return d < 1 ? (4 - 6 * d * d + 3 * d * d * d) / 6 : d < 2 ? (2 - d) * (2 - d) * (2 - d) / 6 : 0.0;
+        return d < 1 ? 1.5 * d * d * d - 2.5 * d * d + 1 : d < 2 ? -0.5 * d * d * d + 2.5 * d * d - 4 * d + 2 : 0.0;
+    };
+    return {std::abs(k(1 + t)), std::abs(k(t)), std::abs(k(1 - t)), std::abs(k(2 - t))};
+}
+
+// The summed |weight| of the cubic's taps that sit diagonally k >= 2 texels past a corner of the lookup's face.
+double tie_weight(const glm::dvec3& dir, int n, Filter filter)
+{
+    EnvLookup l;
+    l.dir = dir;
+    int face = 0;
+    const Lookup uv = cube_face_lookup(l, face);
+    const double x = uv.u * n - 0.5, y = uv.v * n - 0.5;
+    const double ix = std::floor(x), iy = std::floor(y);
+    const std::array<double, 4> wx = cubic_weights(x - ix, filter), wy = cubic_weights(y - iy, filter);
+    auto past = [&](long long i) { return i < 0 ? -i : i >= n ? i - n + 1 : 0; }; // texels past an edge
+    double sum = 0;
+    for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) {
+            const long long px = past((long long)ix - 1 + a), py = past((long long)iy - 1 + b);
+            if (px >= 2 && px == py)
+                sum += wx[size_t(a)] * wy[size_t(b)];
+        }
+    return sum;
+}
+// --magnify: trilinear with level 0's cubic is that cubic wherever λ <= 0, as everywhere in the skybox here
+// (~0.25-0.5 texel a pixel), bit for bit on the device and in the reference.
+TEST_CASE("cubic-magnification")
+{
+    const int n = 16;
+    std::vector<EnvironmentMap> maps = {cube_env("cube-hash", n)};
+    EnvironmentMap latlong;
+    latlong.map = EnvMap::latlong;
+    latlong.latlong = build_mip_chain(latlong_from_cube(maps[0].cube, 4 * n));
+    maps.push_back(latlong);
+    const double contrast = largest_texel(maps[0].cube);
+    for (const EnvironmentMap& env : maps)
+        for (SceneKind kind : {SceneKind::skybox, SceneKind::reflect}) {
+            const SceneParams scene = make_scene(kind, 64, 64, n);
+            const std::vector<double> dir_error = direction_error(env, scene);
+            for (Filter filter : {Filter::bspline, Filter::catmull_rom}) {
+                const SamplerOptions o = with_filter(filter);
+                const Image gpu = render_gpu(env, scene, o);
+                auto reference_at = [&](const glm::dvec3& dir) {
+                    EnvLookup l;
+                    l.dir = dir;
+                    return env.map == EnvMap::cube ? reference_cube_sample(env.cube, o, l)
+                                                   : reference_latlong_sample(env.latlong, o, l);
+                };
+                test::limit_failure_lines(8);
+                double worst = 0;
+                for (size_t i = 0; i < gpu.texels.size(); ++i) {
+                    const glm::dvec3 d = glm::normalize(reference_env_direction(scene, double(i % 64) + 0.5, double(i / 64) + 0.5));
+                    const glm::dvec4 ref = reference_at(d);
+                    double spread = 0;
+                    for (int axis = 0; axis < 3; ++axis)
+                        for (double sign : {-1.0, 1.0}) {
+                            glm::dvec3 moved = d;
+                            moved[axis] += sign * 2.0 * dir_error[i];
+                            spread = std::max(spread, test::max_channel_diff(reference_at(moved), ref));
+                        }
+                    const double ties = env.map == EnvMap::cube ? tie_weight(d, n, filter) * contrast : 0.0;
+                    // lat-long: the device's atan itself (Vulkan: 4096 ULP of a result <= π), in texels of the
+                    // 4n x 2n map, times the steepest slope (B-spline 1, Catmull-Rom 1.5 a texel) on two axes.
+                    const double angles = env.map == EnvMap::latlong
+                                              ? 2.0 * (filter == Filter::bspline ? 1.0 : 1.5) *
+                                                    (4.0 * n / (2.0 * M_PI) + 2.0 * n / M_PI) * 4096.0 *
+                                                    std::ldexp(1.0, -22) * contrast
+                                              : 0.0;
+                    const double tol = spread + ties + angles + 32 * std::ldexp(1.0, -24) * contrast;
+                    const double e = test::max_channel_diff(glm::dvec4(gpu.texels[i]), ref);
+                    worst = std::max(worst, e / tol);
+                    CHECK(e <= tol, to_string(env.map) + " " + to_string(kind) + " " + to_string(filter) + " pixel " +
+                                        std::to_string(i) + ": gpu " + test::show(glm::dvec4(gpu.texels[i])) +
+                                        " reference " + test::show(ref) + " tolerance " + test::show(tol));
+                }
+                std::printf("%s %s %s: worst error / tolerance %.3f\n", to_string(env.map).c_str(),
+                            to_string(kind).c_str(), to_string(filter).c_str(), worst);
+            }
+            if (kind != SceneKind::skybox)
+                continue;
+            SamplerOptions magnified = with_filter(Filter::trilinear);
+            magnified.magnify = Reconstruction::catmull_rom;
+            const Image cubic_gpu = render_gpu(env, scene, with_filter(Filter::catmull_rom));
+            const Image magnified_gpu = render_gpu(env, scene, magnified);
+            CHECK(cubic_gpu.texels == magnified_gpu.texels,
+                  to_string(env.map) + ": trilinear --magnify catmull-rom differs from catmull-rom where λ <= 0 (device)");
+            CHECK(render_reference(env, scene, with_filter(Filter::catmull_rom)).texels ==
+                      render_reference(env, scene, magnified).texels,
+                  to_string(env.map) + ": trilinear --magnify catmull-rom differs from catmull-rom where λ <= 0 (reference)");
+            CHECK(cubic_gpu.texels != render_gpu(env, scene, with_filter(Filter::trilinear)).texels,
+                  to_string(env.map) + ": trilinear without --magnify equals the cubic (the check could not fail)");
+        }
+}
+
 // What the environment scenes refuse, before any work.
 TEST_CASE("refusals")
 {
@@ -374,6 +487,13 @@ TEST_CASE("refusals")
     CHECK_THROWS_WITH(render_gpu(env, scene, with_filter(Filter::sat)), "no environment-map form");
     CHECK_THROWS_WITH(render_gpu(env, scene, with_filter(Filter::brilinear)), "no environment-map form");
     CHECK_THROWS_WITH(render_reference(env, scene, with_filter(Filter::sat_assembly)), "no environment-map form");
+    SamplerOptions hardware_cubic = with_filter(Filter::bspline); // the cubics read texels by the map's rule only
+    hardware_cubic.taps = Taps::hardware;
+    CHECK_THROWS_WITH(render_gpu(env, scene, hardware_cubic), "--taps manual only");
+    SamplerOptions magnified = with_filter(Filter::ewa);
+    magnified.magnify = Reconstruction::bspline;
+    magnified.taps = Taps::hardware;
+    CHECK_THROWS_WITH(render_reference(env, scene, magnified), "--taps manual only");
 }
 
 TEST_SUITE_END();

@@ -93,9 +93,6 @@ int run_render(const std::vector<std::string>& argv)
     if (environment) { // before any work
         check_environment_filter(options);
         check_environment_truth(options);
-        if (options.stochastic)
-            throw Error("--stochastic is not available on the environment scenes (skybox, reflect): its one-texel forms "
-                        "are 2D only (shaders/texfilter/stochastic.glsl)");
         if (render.view != DebugView::color)
             throw Error("--view " + to_string(render.view) + " is not available on the environment scenes (skybox, "
                         "reflect): use --view color");

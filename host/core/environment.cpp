@@ -21,22 +21,42 @@ EnvMap parse_env_map(const std::string& name)
 
 std::string to_string(EnvMap map) { return map == EnvMap::cube ? "cube" : "latlong"; }
 
+namespace {
+
+// The cubics (bspline, catmull-rom, --magnify) read level 0's texels past a face's edge or a pole by the map's
+// own rule; hardware taps cannot: a cube sampler filters across faces on their own grids, a lat-long one
+// clamps at the poles.
+bool cubic(const SamplerOptions& options)
+{
+    return options.filter == Filter::bspline || options.filter == Filter::catmull_rom ||
+           options.magnify != Reconstruction::bilinear;
+}
+
+} // namespace
+
 bool has_environment_form(const SamplerOptions& options)
 {
     const Filter filter = options.filter;
     return filter != Filter::brilinear && filter != Filter::sat && filter != Filter::sat_assembly &&
-           filter != Filter::bspline && filter != Filter::catmull_rom && options.magnify == Reconstruction::bilinear;
+           !(cubic(options) && options.taps == Taps::hardware) && !options.stochastic;
 }
 
 void check_environment_filter(const SamplerOptions& options)
 {
     const Filter filter = options.filter;
-    if (options.magnify == Reconstruction::bilinear && !has_environment_form(options))
+    if (filter == Filter::brilinear || filter == Filter::sat || filter == Filter::sat_assembly)
         throw Error("--filter " + to_string(filter) + " has no environment-map form (cube.glsl and latlong.glsl: "
-                    "nearest, bilinear, nearest-mip, bilinear-mip, trilinear, aniso, ewa, hw-*, ground-truth, none)");
-    if (options.magnify != Reconstruction::bilinear)
-        throw Error("--magnify " + to_string(options.magnify) + " has no environment-map form: the cube and lat-long "
-                    "filters reconstruct every level bilinearly");
+                    "nearest, bilinear, nearest-mip, bilinear-mip, trilinear, aniso, ewa, bspline, catmull-rom, hw-*, "
+                    "ground-truth, none)");
+    if (options.stochastic)
+        throw Error("--stochastic is not available on the environment scenes (skybox, reflect): its one-texel forms "
+                    "are 2D only (shaders/texfilter/stochastic.glsl)");
+    if (cubic(options) && options.taps == Taps::hardware)
+        throw Error(std::string(filter == Filter::bspline || filter == Filter::catmull_rom
+                                    ? "--filter " + to_string(filter)
+                                    : "--magnify " + to_string(options.magnify)) +
+                    " on an environment map reads its texels with --taps manual only: a cube sampler's taps filter "
+                    "across faces on their own grids and a lat-long sampler clamps at the poles");
 }
 
 Image latlong_from_cube(const CubeMap& cube, int width)

@@ -28,7 +28,7 @@ void destroy_environment(const VulkanContext& context, GpuEnvironment& environme
 struct EnvironmentPipelineCache {
     struct Entry {
         EnvMap map;
-        FilterVariant filter; // the filter and the gradients
+        FilterVariant filter; // the filter, --magnify and the gradients
         uint32_t width, height;
         VkPipeline pipeline;
     };

@@ -12,6 +12,9 @@ uint hwLookupCount = 0u;
 #define TF_COUNT_FETCHES(n) fetchCount += uint(n)
 #define TF_COUNT_HW_LOOKUPS(n) hwLookupCount += uint(n)
 
+#include "push_constants.glsl" // before the includes: TF_MAGNIFY reads MAGNIFY_ID
+#define TF_MAGNIFY MAGNIFY_ID
+
 #if HARNESS_ENV == HARNESS_ENV_CUBE
 #define TF_RESOURCES TF_RESOURCE_CUBE
 #include "texfilter/cube.glsl"
@@ -28,8 +31,6 @@ layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform sampler2D u_env; // t
 #else
 #error "HARNESS_ENV: HARNESS_ENV_CUBE or HARNESS_ENV_LATLONG"
 #endif
-
-#include "push_constants.glsl"
 
 #if HARNESS_ENV == HARNESS_ENV_CUBE
 #define HARNESS_ENV_CALL(name) name##_cube
@@ -52,6 +53,8 @@ vec4 harness_env_filter(vec3 d, vec3 dx, vec3 dy)
     switch (FILTER_ID) {
     case HARNESS_FILTER_NEAREST: return HARNESS_ENV_CALL(tf_nearest)(HARNESS_ENV_MANUAL, d, s);
     case HARNESS_FILTER_BILINEAR: return HARNESS_ENV_CALL(tf_bilinear)(HARNESS_ENV_MANUAL, d, s);
+    case HARNESS_FILTER_BSPLINE: return HARNESS_ENV_CALL(tf_bspline)(HARNESS_ENV_MANUAL, d, s); // manual taps only
+    case HARNESS_FILTER_CATMULL_ROM: return HARNESS_ENV_CALL(tf_catmull_rom)(HARNESS_ENV_MANUAL, d, s);
     case HARNESS_FILTER_NEAREST_MIP: return HARNESS_ENV_CALL(tf_nearest_mip)(HARNESS_ENV_MANUAL, d, dx, dy, s);
     case HARNESS_FILTER_BILINEAR_MIP: return HARNESS_ENV_CALL(tf_bilinear_mip)(HARNESS_ENV_MANUAL, d, dx, dy, s);
     case HARNESS_FILTER_TRILINEAR: return HARNESS_ENV_CALL(tf_trilinear)(HARNESS_ENV_MANUAL, d, dx, dy, s);

@@ -8,8 +8,10 @@
 //          vec4 tf_ewa_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha,
 //                           float maxAniso);
 //          also tf_nearest_cube / tf_bilinear_cube (tex, dir, s: level 0), tf_nearest_mip_cube /
-//          tf_bilinear_mip_cube (tex, dir, dDirdx, dDirdy, s), and tf_aniso_cube_hw / tf_ewa_cube_hw (the same
-//          taps through the hardware's seamless bilinear/trilinear filter).
+//          tf_bilinear_mip_cube (tex, dir, dDirdx, dDirdy, s), tf_bspline_cube / tf_catmull_rom_cube (tex, dir, s:
+//          level 0 through bicubic.glsl's cubics, 16 texel reads, seamless as every form), and tf_aniso_cube_hw /
+//          tf_ewa_cube_hw (the same taps through the hardware's seamless bilinear/trilinear filter). TF_MAGNIFY
+//          (common.glsl) applies to tf_trilinear_cube, tf_aniso_cube and tf_ewa_cube as to their 2D families.
 //          Every cube kind (TF_RESOURCE_CUBE, TF_RESOURCE_CUBE_ARRAY): samplerCube; textureCube tex, sampler smp;
 //          samplerCubeArray and textureCubeArray + sampler with `int layer` right after dir; bindless with
 //          TF_NONUNIFORM (common.glsl), e.g. tf_ewa_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer,
@@ -98,6 +100,18 @@ vec4 tf_bilinear_cube(TFI_T, vec3 dir TFI_CUBE_X, tf_Sampler s)
 {
     TFI_CUBE_BEGIN(vec3(0.0), vec3(0.0));
     return tf_bilinear_level(TFI_A, c.uv TFI_XA, 0, t.wrap);
+}
+
+vec4 tf_bspline_cube(TFI_T, vec3 dir TFI_CUBE_X, tf_Sampler s)
+{
+    TFI_CUBE_BEGIN(vec3(0.0), vec3(0.0));
+    return tf_cubic_level(TFI_A, c.uv TFI_XA, 0, t.wrap, TF_RECONSTRUCT_BSPLINE);
+}
+
+vec4 tf_catmull_rom_cube(TFI_T, vec3 dir TFI_CUBE_X, tf_Sampler s)
+{
+    TFI_CUBE_BEGIN(vec3(0.0), vec3(0.0));
+    return tf_cubic_level(TFI_A, c.uv TFI_XA, 0, t.wrap, TF_RECONSTRUCT_CATMULL_ROM);
 }
 
 vec4 tf_nearest_mip_cube(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s)
