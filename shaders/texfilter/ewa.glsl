@@ -147,6 +147,54 @@ vec2 tfi_ewa_rows(vec3 M, float fy)
     return vec2(ceil(fy - hy - 0.5 - TFI_EWA_SPAN_MARGIN), floor(fy + hy - 0.5 + TFI_EWA_SPAN_MARGIN));
 }
 
+// The 2x2-block walk of the hardware-tap forms (tfi_ewa_level_hw, and stochastic.glsl's one-tap EWA, which
+// picks one block of the same walk): blocks start at even offsets from the level's texel grid (parity), rows of
+// blocks from firstRow, `rows` of them (at most TF_EWA_MAX_TEXELS / 2 + 1: K texels touch at most K/2 + 1 blocks).
+const int TFI_EWA_MAX_BLOCKS = TF_EWA_MAX_TEXELS / 2 + 1;
+struct tfi_EwaBlocks {
+    vec2 parity;
+    float firstRow;
+    int rows;
+};
+
+tfi_EwaBlocks tfi_ewa_blocks(vec3 M, vec2 base, vec2 frac)
+{
+    vec2 parity = base - 2.0 * floor(0.5 * base); // blocks start at offsets o with base + o even
+    vec2 rowSpan = tfi_ewa_rows(M, frac.y);
+    float firstRow = 2.0 * floor(0.5 * (rowSpan.x + parity.y)) - parity.y;
+    int rows = int(clamp(floor(0.5 * (rowSpan.y - firstRow)) + 1.0, 0.0, float(TFI_EWA_MAX_BLOCKS)));
+    return tfi_EwaBlocks(parity, firstRow, rows);
+}
+
+// The block row whose texel rows are at offsets dy0 and dy0 + 1 from the centre: its first block column
+// (firstCol) and the number of blocks, 0 where neither texel row meets the ellipse.
+int tfi_ewa_block_columns(vec3 M, float det, vec2 frac, float parityX, float dy0, out float firstCol)
+{
+    vec2 span0 = tfi_ewa_row_span(M, det, frac.x, dy0), span1 = tfi_ewa_row_span(M, det, frac.x, dy0 + 1.0);
+    float lo = min(span0.x <= span0.y ? span0.x : 1e30, span1.x <= span1.y ? span1.x : 1e30);
+    float hi = max(span0.x <= span0.y ? span0.y : -1e30, span1.x <= span1.y ? span1.y : -1e30);
+    firstCol = 2.0 * floor(0.5 * (lo + parityX)) - parityX;
+    int cols = int(clamp(floor(0.5 * (hi - firstCol)) + 1.0, 0.0, float(TFI_EWA_MAX_BLOCKS)));
+    return lo > hi ? 0 : cols;
+}
+
+// The block whose first texel is at offset (dx0, dy0) from the centre: its total weight, and in ab the
+// bilinear fraction that reproduces its four weights ((1-a)(1-b), a(1-b), (1-a)b, ab = w/total when separable;
+// a lookup at texel coordinate 2b + ½ + a reads the block's first texel at 2b with fraction a). ab means
+// nothing where total is 0 (callers skip those blocks).
+float tfi_ewa_block(vec3 M, float det, float alpha, float dx0, float dy0, out vec2 ab)
+{
+    float dx1 = dx0 + 1.0, dy1 = dy0 + 1.0;
+    vec4 r2 = vec4(tfi_ewa_r2(M, det, dx0, dy0), tfi_ewa_r2(M, det, dx1, dy0), tfi_ewa_r2(M, det, dx0, dy1),
+                   tfi_ewa_r2(M, det, dx1, dy1));
+    vec4 w = vec4(tfi_ewa_weight(r2.x, alpha), tfi_ewa_weight(r2.y, alpha), tfi_ewa_weight(r2.z, alpha),
+                  tfi_ewa_weight(r2.w, alpha));
+    w = mix(vec4(0.0), w, lessThan(r2, vec4(1.0))); // w00, w10, w01, w11
+    float total = w.x + w.y + w.z + w.w;
+    ab = vec2(w.y + w.w, w.z + w.w) / total;
+    return total;
+}
+
 // Weighted moments of one level's texels about the lookup's centre, d = texel centre - centre (in
 // tfi_ewa_level's whitened coordinates): w = sum w, wd = sum w·d, wdd = sum w·(dx², dx·dy, dy²),
 // t = sum w·(value - pivot), tx, ty = sum w·dx·(value - pivot), sum w·dy·(value - pivot); pivot = the first texel's value (so that the sums
@@ -331,47 +379,31 @@ vec4 tfi_ewa_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape s
 // are symmetric.
 vec4 tfi_ewa_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha)
 {
-    const int maxBlocks = TF_EWA_MAX_TEXELS / 2 + 1; // K texels touch at most K/2+1 blocks
     vec3 M;
     float det;
     vec2 base, frac;
     tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, M, det, base, frac);
     vec2 size = vec2(tf_level_size(TFI_A, level));
-    vec2 parity = base - 2.0 * floor(0.5 * base); // blocks start at offsets o with base + o even
-    vec2 rowSpan = tfi_ewa_rows(M, frac.y);
-    float firstRow = 2.0 * floor(0.5 * (rowSpan.x + parity.y)) - parity.y;
-    int blockRows = int(clamp(floor(0.5 * (rowSpan.y - firstRow)) + 1.0, 0.0, float(maxBlocks)));
+    tfi_EwaBlocks blocks = tfi_ewa_blocks(M, base, frac);
     vec4 sum = vec4(0.0);
     float weights = 0.0;
     vec2 moment = vec2(0.0), shift = vec2(0.0);
     for (int pass = 0; pass < 2; ++pass) {
-        for (int k = 0; k < maxBlocks; ++k) {
-            if (k >= blockRows)
+        for (int k = 0; k < TFI_EWA_MAX_BLOCKS; ++k) {
+            if (k >= blocks.rows)
                 break;
-            float j0 = firstRow + 2.0 * float(k);
-            float dy0 = j0 + 0.5 - frac.y, dy1 = dy0 + 1.0;
-            vec2 span0 = tfi_ewa_row_span(M, det, frac.x, dy0), span1 = tfi_ewa_row_span(M, det, frac.x, dy1);
-            float lo = min(span0.x <= span0.y ? span0.x : 1e30, span1.x <= span1.y ? span1.x : 1e30);
-            float hi = max(span0.x <= span0.y ? span0.y : -1e30, span1.x <= span1.y ? span1.y : -1e30);
-            if (lo > hi)
-                continue;
-            float firstCol = 2.0 * floor(0.5 * (lo + parity.x)) - parity.x;
-            int cols = int(clamp(floor(0.5 * (hi - firstCol)) + 1.0, 0.0, float(maxBlocks)));
-            for (int n = 0; n < maxBlocks; ++n) {
+            float j0 = blocks.firstRow + 2.0 * float(k);
+            float dy0 = j0 + 0.5 - frac.y;
+            float firstCol;
+            int cols = tfi_ewa_block_columns(M, det, frac, blocks.parity.x, dy0, firstCol);
+            for (int n = 0; n < TFI_EWA_MAX_BLOCKS; ++n) {
                 if (n >= cols)
                     break;
                 float i0 = firstCol + 2.0 * float(n);
-                float dx0 = i0 + 0.5 - frac.x, dx1 = dx0 + 1.0;
-                vec4 r2 = vec4(tfi_ewa_r2(M, det, dx0, dy0), tfi_ewa_r2(M, det, dx1, dy0), tfi_ewa_r2(M, det, dx0, dy1),
-                               tfi_ewa_r2(M, det, dx1, dy1));
-                vec4 w = vec4(tfi_ewa_weight(r2.x, alpha), tfi_ewa_weight(r2.y, alpha), tfi_ewa_weight(r2.z, alpha),
-                              tfi_ewa_weight(r2.w, alpha));
-                w = mix(vec4(0.0), w, lessThan(r2, vec4(1.0))); // w00, w10, w01, w11
-                float total = w.x + w.y + w.z + w.w;
+                float dx0 = i0 + 0.5 - frac.x;
+                vec2 ab;
+                float total = tfi_ewa_block(M, det, alpha, dx0, dy0, ab);
                 if (total > 0.0) {
-                    // Bilinear weights (1-a)(1-b), a(1-b), (1-a)b, ab reproduce w/total when separable:
-                    // texel coordinate 2b + ½ + a puts the lookup's first texel at 2b with fraction a.
-                    vec2 ab = vec2(w.y + w.w, w.z + w.w) / total;
                     if (pass == 0) {
                         moment += total * (vec2(dx0, dy0) + ab);
                         weights += total;

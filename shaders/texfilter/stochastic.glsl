@@ -197,46 +197,32 @@ vec4 tfi_ewa_stochastic_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, 
         TF_COUNT_HW_LOOKUPS(1);
         return TFI_LOOKUP(vec2(0.5), float(level));
     }
-    const int maxBlocks = TF_EWA_MAX_TEXELS / 2 + 1;
     vec3 M;
     float det;
     vec2 base, frac;
     tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, M, det, base, frac);
     vec2 size = vec2(tf_level_size(TFI_A, level));
-    vec2 parity = base - 2.0 * floor(0.5 * base);
-    vec2 rowSpan = tfi_ewa_rows(M, frac.y);
-    float firstRow = 2.0 * floor(0.5 * (rowSpan.x + parity.y)) - parity.y;
-    int blockRows = int(clamp(floor(0.5 * (rowSpan.y - firstRow)) + 1.0, 0.0, float(maxBlocks)));
+    tfi_EwaBlocks blocks = tfi_ewa_blocks(M, base, frac); // ewa.glsl's walk, the hardware taps' blocks
     float weights = 0.0, target = 0.0, below = 0.0;
     vec2 moment = vec2(0.0), tap = base + 0.5; // tap: texel coordinate of the chosen block's centroid
     for (int pass = 0; pass < 2; ++pass) {
         bool found = false;
-        for (int k = 0; k < maxBlocks; ++k) {
-            if (k >= blockRows || found)
+        for (int k = 0; k < TFI_EWA_MAX_BLOCKS; ++k) {
+            if (k >= blocks.rows || found)
                 break;
-            float j0 = firstRow + 2.0 * float(k);
-            float dy0 = j0 + 0.5 - frac.y, dy1 = dy0 + 1.0;
-            vec2 span0 = tfi_ewa_row_span(M, det, frac.x, dy0), span1 = tfi_ewa_row_span(M, det, frac.x, dy1);
-            float lo = min(span0.x <= span0.y ? span0.x : 1e30, span1.x <= span1.y ? span1.x : 1e30);
-            float hi = max(span0.x <= span0.y ? span0.y : -1e30, span1.x <= span1.y ? span1.y : -1e30);
-            if (lo > hi)
-                continue;
-            float firstCol = 2.0 * floor(0.5 * (lo + parity.x)) - parity.x;
-            int cols = int(clamp(floor(0.5 * (hi - firstCol)) + 1.0, 0.0, float(maxBlocks)));
-            for (int n = 0; n < maxBlocks; ++n) {
+            float j0 = blocks.firstRow + 2.0 * float(k);
+            float dy0 = j0 + 0.5 - frac.y;
+            float firstCol;
+            int cols = tfi_ewa_block_columns(M, det, frac, blocks.parity.x, dy0, firstCol);
+            for (int n = 0; n < TFI_EWA_MAX_BLOCKS; ++n) {
                 if (n >= cols)
                     break;
                 float i0 = firstCol + 2.0 * float(n);
-                float dx0 = i0 + 0.5 - frac.x, dx1 = dx0 + 1.0;
-                vec4 r2 = vec4(tfi_ewa_r2(M, det, dx0, dy0), tfi_ewa_r2(M, det, dx1, dy0), tfi_ewa_r2(M, det, dx0, dy1),
-                               tfi_ewa_r2(M, det, dx1, dy1));
-                vec4 w = vec4(tfi_ewa_weight(r2.x, alpha), tfi_ewa_weight(r2.y, alpha), tfi_ewa_weight(r2.z, alpha),
-                              tfi_ewa_weight(r2.w, alpha));
-                w = mix(vec4(0.0), w, lessThan(r2, vec4(1.0)));
-                float total = w.x + w.y + w.z + w.w;
+                float dx0 = i0 + 0.5 - frac.x;
+                vec2 ab;
+                float total = tfi_ewa_block(M, det, alpha, dx0, dy0, ab);
                 if (!(total > 0.0))
                     continue;
-                vec2 ab = vec2(w.y + w.w, w.z + w.w) / total;
                 if (pass == 0) {
                     moment += total * (vec2(dx0, dy0) + ab);
                     weights += total;
