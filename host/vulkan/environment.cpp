@@ -133,8 +133,7 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
         {HARNESS_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, r.uniforms.buffer, sizeof(SceneParams)}};
     r.pass = create_pass_with_images(context, images, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                                      VK_SHADER_STAGE_FRAGMENT_BIT, buffers, cleanup);
-    FilterVariant variant = filter_variant(options); // the filter and --magnify (--stochastic is refused above)
-    variant.gradients = int(render.gradients); // tf::Gradients takes HARNESS_GRADIENTS_* (shader_interface.h)
+    const FilterVariant variant = render_variant(options, render); // --stochastic and views are refused above
     if (cache)
         for (const EnvironmentPipelineCache::Entry& e : cache->entries)
             if (e.map == environment.map && e.filter == variant && e.width == r.width && e.height == r.height) {

@@ -7,22 +7,21 @@ namespace tf {
 
 namespace {
 
-// The variant as HARNESS_SPEC_FILTER, _MAGNIFY, _STOCHASTIC, _VIEW and _GRADIENTS (shaders that declare only
-// some ignore the others); info points into the struct, so keep it alive until the pipeline is made.
+// The variant's spec_constants as a VkSpecializationInfo (shaders that declare only some ignore the others);
+// info points into the struct, so keep it alive until the pipeline is made.
 struct FilterSpecialization {
-    int32_t ids[5];
-    VkSpecializationMapEntry entries[5];
+    std::array<int32_t, 5> values;
+    std::array<VkSpecializationMapEntry, 5> entries;
     VkSpecializationInfo info;
 
     explicit FilterSpecialization(FilterVariant variant)
-        : ids{int32_t(variant.filter), int32_t(variant.magnify), variant.stochastic ? 1 : 0, variant.view,
-              variant.gradients},
-          entries{{HARNESS_SPEC_FILTER, 0, sizeof(int32_t)}, {HARNESS_SPEC_MAGNIFY, sizeof(int32_t), sizeof(int32_t)},
-                  {HARNESS_SPEC_STOCHASTIC, 2 * sizeof(int32_t), sizeof(int32_t)},
-                  {HARNESS_SPEC_VIEW, 3 * sizeof(int32_t), sizeof(int32_t)},
-                  {HARNESS_SPEC_GRADIENTS, 4 * sizeof(int32_t), sizeof(int32_t)}},
-          info{5, entries, sizeof(ids), ids}
     {
+        const std::array<SpecConstant, 5> constants = spec_constants(variant);
+        for (size_t k = 0; k < constants.size(); ++k) {
+            values[k] = constants[k].value;
+            entries[k] = {constants[k].id, uint32_t(k * sizeof(int32_t)), sizeof(int32_t)};
+        }
+        info = {uint32_t(entries.size()), entries.data(), sizeof(values), values.data()};
     }
     FilterSpecialization(const FilterSpecialization&) = delete;
 };

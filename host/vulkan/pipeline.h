@@ -7,6 +7,7 @@
 #include "harness/config.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -28,6 +29,21 @@ struct FilterVariant {
 inline FilterVariant filter_variant(const SamplerOptions& options)
 {
     return {options.filter, options.magnify, options.stochastic};
+}
+
+// The variant as the harness's specialization constants: (HARNESS_SPEC_* id, value), one list for the
+// VkSpecializationInfo (pipeline.cpp) and the host-side specialisation (specialize_spirv.cpp).
+struct SpecConstant {
+    uint32_t id;
+    int32_t value;
+};
+inline std::array<SpecConstant, 5> spec_constants(FilterVariant v)
+{
+    return {{{HARNESS_SPEC_FILTER, int32_t(v.filter)},
+             {HARNESS_SPEC_MAGNIFY, int32_t(v.magnify)},
+             {HARNESS_SPEC_STOCHASTIC, v.stochastic ? 1 : 0},
+             {HARNESS_SPEC_VIEW, v.view},
+             {HARNESS_SPEC_GRADIENTS, v.gradients}}};
 }
 
 struct ShaderCode {

@@ -24,6 +24,14 @@ RenderKind render_kind(const SamplerOptions& options, const RenderOptions& rende
 
 } // namespace
 
+FilterVariant render_variant(const SamplerOptions& options, const RenderOptions& render)
+{
+    FilterVariant variant = filter_variant(options);
+    variant.view = int(render.view); // shader_interface.h checks the values
+    variant.gradients = int(render.gradients);
+    return variant;
+}
+
 std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const GpuTexture& texture,
                                              const SceneParams& scene, const SamplerOptions& options,
                                              const RenderOptions& render, RenderPipelineCache* cache)
@@ -62,9 +70,7 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
         r.vertices = create_mesh_vertices(context, scene, cleanup);
     }
     r.pass = create_pass(context, texture, options, stages, push_stages, buffers, cleanup);
-    FilterVariant variant = filter_variant(options);
-    variant.view = int(render.view);           // tf::DebugView and tf::Gradients take the
-    variant.gradients = int(render.gradients); // HARNESS_VIEW_* and HARNESS_GRADIENTS_* values (shader_interface.h)
+    const FilterVariant variant = render_variant(options, render);
     r.pipeline = cache ? cached_render_pipeline(context, *cache, r.kind, r.pass.pipeline_layout, variant, r.width,
                                                 r.height, texture.format)
                        : create_render_pipeline(context, r.kind, r.pass.pipeline_layout, variant, r.width, r.height,

@@ -27,6 +27,10 @@ struct GpuRenderer {
     Cleanup cleanup; // last member, so it runs first: destroys everything above in reverse order of creation
 };
 
+// The pipeline variant of a render: the sampler options' filter_variant with the render's debug view and
+// gradient form (tf::DebugView and tf::Gradients take the HARNESS_VIEW_* and HARNESS_GRADIENTS_* values).
+FilterVariant render_variant(const SamplerOptions& options, const RenderOptions& render);
+
 // cache: reuse a pipeline made earlier for the same kind, filter and size (null: the renderer's own).
 std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const GpuTexture& texture,
                                              const SceneParams& scene, const SamplerOptions& options,

@@ -1,5 +1,4 @@
 #include "vulkan/specialize_spirv.h"
-#include "harness/config.h"
 #include <spirv-tools/optimizer.hpp>
 #include <unordered_map>
 
@@ -7,13 +6,10 @@ namespace tf {
 
 std::vector<uint32_t> specialize_spirv(ShaderCode code, FilterVariant variant)
 {
-    // The same values as FilterSpecialization's map (pipeline.cpp); a module without one of the ids keeps it absent.
-    const std::unordered_map<uint32_t, std::vector<uint32_t>> values = {
-        {HARNESS_SPEC_FILTER, {uint32_t(int32_t(variant.filter))}},
-        {HARNESS_SPEC_MAGNIFY, {uint32_t(int32_t(variant.magnify))}},
-        {HARNESS_SPEC_STOCHASTIC, {variant.stochastic ? 1u : 0u}},
-        {HARNESS_SPEC_VIEW, {uint32_t(int32_t(variant.view))}},
-        {HARNESS_SPEC_GRADIENTS, {uint32_t(int32_t(variant.gradients))}}};
+    // The variant's spec_constants (pipeline.h); a module without one of the ids keeps it absent.
+    std::unordered_map<uint32_t, std::vector<uint32_t>> values;
+    for (const SpecConstant& c : spec_constants(variant))
+        values[c.id] = {uint32_t(c.value)};
     spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_2); // the harness targets Vulkan 1.2's SPIR-V 1.5
     optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
     optimizer.RegisterPass(spvtools::CreateSetSpecConstantDefaultValuePass(values))

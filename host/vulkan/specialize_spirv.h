@@ -1,6 +1,6 @@
 #pragma once
 // The harness's SPIR-V specialised on the host before the driver sees it: its specialization constants
-// (HARNESS_SPEC_FILTER, _MAGNIFY, _STOCHASTIC) frozen to one FilterVariant and the code they rule out removed.
+// (spec_constants, vulkan/pipeline.h) frozen to one FilterVariant and the code they rule out removed.
 //
 // Why: the harness shaders hold every filter behind those constants (240 KB of SPIR-V for render.frag). A
 // driver may inline every function before it folds them: lavapipe (Mesa 22.3) spent ~0.9 s of NIR work a
