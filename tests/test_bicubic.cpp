@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -122,6 +123,58 @@ TEST_CASE("polynomial-reproduction") {
     CHECK_LE("catmull-rom on a quadratic: |result - p(x - 1/2)|", cr, texel_rounding);
     CHECK_LE("bspline on a line: |result - p(x - 1/2)|", bs_line, texel_rounding);
     CHECK_LE("bspline on a quadratic: |result - (p(x - 1/2) + c/3)|", bs_quad, texel_rounding);
+}
+
+namespace {
+
+// A tap source that answers each hardware tap with its own position (u, v, 1, 0) and counts the taps.
+struct TapLog {
+    int taps = 0;
+};
+glm::dvec4 position_tap(const void* map, int, double u, double v) {
+    ++static_cast<TapLog*>(const_cast<void*>(map))->taps;
+    return {u, v, 1.0, 0.0};
+}
+
+} // namespace
+
+TEST_CASE("reference-tap-form") {
+    // reference_cubic_taps, the merged taps the hardware forms read, against the texel sum they stand for:
+    // (1) through a 2D texture (each tap a bilinear blend of its pair) it is reference_cubic: weights in
+    // double, one product and sum per term, 16 texels of size <= 1: a few ulp. (2) Answering each tap with its
+    // own position: both kernels reproduce constants and lines, so the taps' weights must sum to 1 and their
+    // weighted positions to the lookup's own (x - 1/2 in texels, the centres at i + 1/2), with 4 taps for the
+    // B-spline and 9 for Catmull-Rom. A tap off its pair's weighted centre or weighted wrongly fails (2).
+    const int size = 16;
+    MipChain chain = make_procedural("noise", size);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> coord(-1.5, 2.5);
+    for (Reconstruction r : kCubics) {
+        double texel_sum = 0, unity = 0, moment = 0;
+        int wrong_count = 0;
+        for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror})
+            for (int level : {0, 1})
+                for (int k = 0; k < 200; ++k) {
+                    const double u = coord(rng), v = coord(rng);
+                    texel_sum = std::max(texel_sum, max_abs(reference_cubic_taps(chain, level, u, v, wrap, r) -
+                                                            reference_cubic(chain, level, u, v, wrap, r)));
+                    TapLog log;
+                    const TexelSource positions{nullptr, &log, position_tap};
+                    const glm::dvec4 p = reference_cubic_taps(chain, level, u, v, wrap, r, positions);
+                    wrong_count += log.taps != (r == Reconstruction::bspline ? 4 : 9);
+                    const double w = size >> level;
+                    const double ur = reduce_uv(u, wrap), vr = reduce_uv(v, wrap);
+                    unity = std::max(unity, std::abs(p.z - 1.0));
+                    moment = std::max(moment, std::max(std::abs(p.x - ur), std::abs(p.y - vr)) * w);
+                }
+        const std::string name = to_string(r);
+        CHECK_LE(name + ": |taps - texel sum| through a 2D texture (1200 lookups)", texel_sum, 64 * 0x1p-52);
+        CHECK_LE(name + ": lookups with the wrong number of taps", wrong_count, 0.0);
+        CHECK_LE(name + ": |sum of tap weights - 1|", unity, 16 * 0x1p-52);
+        // Positions below 64 texels; each term rounds a few times (÷w, ×w, the product, the sum) and the
+        // |weights| sum to < 1.3: 16 ulp of 64.
+        CHECK_LE(name + ": |weighted tap position - lookup| in texels", moment, 16 * 64 * 0x1p-52);
+    }
 }
 
 TEST_CASE("magnify-limits") {

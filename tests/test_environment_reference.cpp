@@ -112,6 +112,16 @@ std::vector<Config> environment_filters() {
     add("ewa", Filter::ewa, none);
     add("ewa-hw-taps", Filter::ewa, [](tf::SamplerOptions& o) { o.taps = tf::Taps::hardware; });
     add("ewa-alpha3-aniso4", Filter::ewa, [](tf::SamplerOptions& o) { o.alpha = 3, o.max_aniso = 4; });
+    add("bspline", Filter::bspline, none);
+    add("catmull-rom", Filter::catmull_rom, none);
+    add("bspline-hw-taps", Filter::bspline, [](tf::SamplerOptions& o) { o.taps = tf::Taps::hardware; });
+    add("catmull-rom-hw-taps", Filter::catmull_rom, [](tf::SamplerOptions& o) { o.taps = tf::Taps::hardware; });
+    add("aniso-hw-taps-magnify-bspline", Filter::aniso, [](tf::SamplerOptions& o) {
+        o.taps = tf::Taps::hardware, o.magnify = tf::Reconstruction::bspline;
+    });
+    add("ewa-hw-taps-magnify-catmull-rom", Filter::ewa, [](tf::SamplerOptions& o) {
+        o.taps = tf::Taps::hardware, o.magnify = tf::Reconstruction::catmull_rom;
+    });
     return configs;
 }
 
@@ -454,7 +464,8 @@ TEST_CASE("seamless")
     const Path paths[] = {{{1, 0.4, 0.8}, {0.8, 0.45, 1}}, {{1, 0.8, 0.9}, {0.9, 1.2, 1.1}}, {{0.3, -1, -0.8}, {0.35, -0.8, -1}}};
     std::vector<Config> configs;
     for (const Config& c : environment_filters())
-        if (c.options.filter == Filter::trilinear || c.options.filter == Filter::aniso || c.options.filter == Filter::ewa)
+        if (c.options.filter == Filter::trilinear || c.options.filter == Filter::aniso || c.options.filter == Filter::ewa ||
+            c.options.filter == Filter::bspline || c.options.filter == Filter::catmull_rom)
             configs.push_back(c);
     for (Config& config : configs) {
         config.options.lod_max = 0;

@@ -21,24 +21,11 @@ EnvMap parse_env_map(const std::string& name)
 
 std::string to_string(EnvMap map) { return map == EnvMap::cube ? "cube" : "latlong"; }
 
-namespace {
-
-// The cubics (bspline, catmull-rom, --magnify) read level 0's texels past a face's edge or a pole by the map's
-// own rule; hardware taps cannot: a cube sampler filters across faces on their own grids, a lat-long one
-// clamps at the poles.
-bool cubic(const SamplerOptions& options)
-{
-    return options.filter == Filter::bspline || options.filter == Filter::catmull_rom ||
-           options.magnify != Reconstruction::bilinear;
-}
-
-} // namespace
-
 bool has_environment_form(const SamplerOptions& options)
 {
     const Filter filter = options.filter;
     return filter != Filter::brilinear && filter != Filter::sat && filter != Filter::sat_assembly &&
-           !(cubic(options) && options.taps == Taps::hardware) && !options.stochastic;
+           !options.stochastic;
 }
 
 void check_environment_filter(const SamplerOptions& options)
@@ -51,12 +38,6 @@ void check_environment_filter(const SamplerOptions& options)
     if (options.stochastic)
         throw Error("--stochastic is not available on the environment scenes (skybox, reflect): its one-texel forms "
                     "are 2D only (shaders/texfilter/stochastic.glsl)");
-    if (cubic(options) && options.taps == Taps::hardware)
-        throw Error(std::string(filter == Filter::bspline || filter == Filter::catmull_rom
-                                    ? "--filter " + to_string(filter)
-                                    : "--magnify " + to_string(options.magnify)) +
-                    " on an environment map reads its texels with --taps manual only: a cube sampler's taps filter "
-                    "across faces on their own grids and a lat-long sampler clamps at the poles");
 }
 
 Image latlong_from_cube(const CubeMap& cube, int width)

@@ -86,13 +86,15 @@ glm::dvec4 read_latlong_sampler(const void* map, int level, long long i, long lo
 
 glm::dvec4 tap_latlong(const void* map, int level, double u, double v) {
     const MipChain& chain = *static_cast<const MipChain*>(map);
-    return reference_bilinear(chain, level, u, v, Wrap::repeat, {read_latlong_sampler, &chain});
+    // Only u is periodic: a tap past the -y pole (v > 1) must clamp there, not come back round to v = 0 as a
+    // whole-period reduction of v would take it (repeat's reduce_uv maps 1.02 to -0.98).
+    return reference_bilinear(chain, level, reduce_uv(u, Wrap::repeat), v, Wrap::clamp, {read_latlong_sampler, &chain});
 }
 
 // The filters a lookup has on an environment map; the others throw, naming the filter.
 void check_lookup_filter(const SamplerOptions& options) {
     const Filter filter = options.filter;
-    check_environment_filter(options); // brilinear, the SAT filters, the cubics, --magnify: no environment form
+    check_environment_filter(options); // brilinear, the SAT filters, --stochastic: no environment form
     if (filter == Filter::hw_aniso)
         throw Error("hw-aniso has no CPU reference: anisotropic filtering is implementation-defined in Vulkan");
     if (filter == Filter::ground_truth)

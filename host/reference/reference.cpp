@@ -179,17 +179,17 @@ glm::dvec4 reference_sample_texels(const MipChain& chain, const SamplerOptions& 
         // a bilinear hardware tap through the texel source's tap where it has one: the cube's device taps).
         const double share = magnified_share(chain, options, reduced);
         if (share == 0.0) return reference_ewa(chain, options, reduced, texels);
-        const bool device_tap = options.taps == Taps::hardware && options.magnify == Reconstruction::bilinear;
         const glm::dvec4 magnified =
-            device_tap ? reference_hardware_tap(chain, 0, reduced.u, reduced.v, options.wrap, texels)
-                       : reference_cubic(chain, 0, reduced.u, reduced.v, options.wrap, options.magnify, texels);
+            reference_magnified(chain, reduced.u, reduced.v, options.wrap, options.magnify, options.taps, texels);
         return share == 1.0 ? magnified
                             : (1.0 - share) * reference_ewa(chain, options, reduced, texels) + share * magnified;
     }
     case Filter::bspline:
-        return reference_cubic(chain, 0, reduced.u, reduced.v, options.wrap, Reconstruction::bspline, texels);
+        return reference_magnified(chain, reduced.u, reduced.v, options.wrap, Reconstruction::bspline, options.taps,
+                                   texels);
     case Filter::catmull_rom:
-        return reference_cubic(chain, 0, reduced.u, reduced.v, options.wrap, Reconstruction::catmull_rom, texels);
+        return reference_magnified(chain, reduced.u, reduced.v, options.wrap, Reconstruction::catmull_rom,
+                                   options.taps, texels);
     case Filter::brilinear:
     case Filter::sat:
     case Filter::sat_assembly:

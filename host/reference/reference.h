@@ -74,11 +74,22 @@ glm::dvec4 reference_hardware_tap(const MipChain& chain, int level, double u, do
 // Cubic reconstruction of level `level` (reference/bicubic.cpp): sum over the texels i, j within the kernel's
 // support of k(x - (i + 1/2)) k(y - (j + 1/2)) texel(i, j), x = u·w_l. cubic_kernel is k: the B-spline, Catmull-Rom
 // (Mitchell-Netravali B = 1, C = 0 and B = 0, C = 1/2) or, for bilinear, the tent (then reference_cubic is
-// reference_bilinear). The hardware-tap forms compute the same sum (their only difference is the device's
-// sub-texel rounding).
+// reference_bilinear).
 double cubic_kernel(double d, Reconstruction kernel);
 glm::dvec4 reference_cubic(const MipChain& chain, int level, double u, double v, Wrap wrap, Reconstruction kernel,
                            const TexelSource& texels = {});
+// The same sum as the hardware-tap forms read it (--taps hardware): per axis, neighbouring texels whose
+// weights share a sign become one bilinear tap at their weighted centre, weighted by their sum (B-spline: two
+// pairs; Catmull-Rom: the middle pair and the two outer texels alone), each tap read by reference_hardware_tap.
+// Through a 2D sampler that is reference_cubic again (a tap blends its pair by the same ratio); a cube's taps
+// past a face edge are re-projected and filtered there, a lat-long sampler clamps at the poles (environment.cpp),
+// so near those the tap form differs from the texel sum, as the device's does. Bilinear: one tap.
+glm::dvec4 reference_cubic_taps(const MipChain& chain, int level, double u, double v, Wrap wrap,
+                                Reconstruction kernel, const TexelSource& texels = {});
+// Level 0 under `kernel` as a filter with `taps` reads it: reference_cubic_taps for hardware taps, else
+// reference_cubic.
+glm::dvec4 reference_magnified(const MipChain& chain, double u, double v, Wrap wrap, Reconstruction kernel, Taps taps,
+                               const TexelSource& texels = {});
 // The share of level 0 in trilinear at this lookup's LOD, 1 - clamp(lambda, 0, 1): how far ewa moves towards
 // the magnification filter of level 0 (bilinear, or --magnify's cubic; shaders/texfilter/ewa.glsl).
 double magnified_share(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);

@@ -53,8 +53,12 @@ vec4 harness_env_filter(vec3 d, vec3 dx, vec3 dy)
     switch (FILTER_ID) {
     case HARNESS_FILTER_NEAREST: return HARNESS_ENV_CALL(tf_nearest)(HARNESS_ENV_MANUAL, d, s);
     case HARNESS_FILTER_BILINEAR: return HARNESS_ENV_CALL(tf_bilinear)(HARNESS_ENV_MANUAL, d, s);
-    case HARNESS_FILTER_BSPLINE: return HARNESS_ENV_CALL(tf_bspline)(HARNESS_ENV_MANUAL, d, s); // manual taps only
-    case HARNESS_FILTER_CATMULL_ROM: return HARNESS_ENV_CALL(tf_catmull_rom)(HARNESS_ENV_MANUAL, d, s);
+    case HARNESS_FILTER_BSPLINE:
+        return hardwareTaps ? HARNESS_ENV_CALL_HW(tf_bspline)(HARNESS_ENV_HW, d, s)
+                            : HARNESS_ENV_CALL(tf_bspline)(HARNESS_ENV_MANUAL, d, s);
+    case HARNESS_FILTER_CATMULL_ROM:
+        return hardwareTaps ? HARNESS_ENV_CALL_HW(tf_catmull_rom)(HARNESS_ENV_HW, d, s)
+                            : HARNESS_ENV_CALL(tf_catmull_rom)(HARNESS_ENV_MANUAL, d, s);
     case HARNESS_FILTER_NEAREST_MIP: return HARNESS_ENV_CALL(tf_nearest_mip)(HARNESS_ENV_MANUAL, d, dx, dy, s);
     case HARNESS_FILTER_BILINEAR_MIP: return HARNESS_ENV_CALL(tf_bilinear_mip)(HARNESS_ENV_MANUAL, d, dx, dy, s);
     case HARNESS_FILTER_TRILINEAR: return HARNESS_ENV_CALL(tf_trilinear)(HARNESS_ENV_MANUAL, d, dx, dy, s);

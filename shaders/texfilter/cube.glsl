@@ -10,8 +10,10 @@
 //          also tf_nearest_cube / tf_bilinear_cube (tex, dir, s: level 0), tf_nearest_mip_cube /
 //          tf_bilinear_mip_cube (tex, dir, dDirdx, dDirdy, s), tf_bspline_cube / tf_catmull_rom_cube (tex, dir, s:
 //          level 0 through bicubic.glsl's cubics, 16 texel reads, seamless as every form), and tf_aniso_cube_hw /
-//          tf_ewa_cube_hw (the same taps through the hardware's seamless bilinear/trilinear filter). TF_MAGNIFY
-//          (common.glsl) applies to tf_trilinear_cube, tf_aniso_cube and tf_ewa_cube as to their 2D families.
+//          tf_ewa_cube_hw / tf_bspline_cube_hw / tf_catmull_rom_cube_hw (the same filters from the hardware's
+//          seamless bilinear/trilinear taps: 4 taps for the B-spline, 9 for Catmull-Rom). TF_MAGNIFY
+//          (common.glsl) applies to tf_trilinear_cube, tf_aniso_cube(_hw) and tf_ewa_cube(_hw) as to their 2D
+//          families.
 //          Every cube kind (TF_RESOURCE_CUBE, TF_RESOURCE_CUBE_ARRAY): samplerCube; textureCube tex, sampler smp;
 //          samplerCubeArray and textureCubeArray + sampler with `int layer` right after dir; bindless with
 //          TF_NONUNIFORM (common.glsl), e.g. tf_ewa_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer,
@@ -23,6 +25,10 @@
 //          ellipse: trilinear.glsl, aniso.glsl, ewa.glsl), every texel past the face's edges read from the cube
 //          where the direction through its centre points (the adjacent face's edge texel one texel past an
 //          edge; the mean of the three corner texels one texel past a corner). s.wrap is ignored.
+//          _hw forms place each tap on the face's plane as the 2D family does and read it at the direction
+//          through that point: a tap past an edge is filtered on the face that direction hits, on that face's
+//          own grid, so within ~2 texels of an edge the hardware cubics are close to, not equal to, the manual
+//          ones (docs/ENVIRONMENT.md, "Hardware taps", has the measured gap).
 // Needs:   a cube image with a full MIP chain per face. Manual forms read each texel with textureLod at its
 //          centre's direction: the sampler bound (or `smp`) must filter NEAREST (min, mag, mipmapMode) with no
 //          LOD bias and no LOD clamp narrower than the levels (textureSize and textureQueryLevels give the
@@ -112,6 +118,18 @@ vec4 tf_catmull_rom_cube(TFI_T, vec3 dir TFI_CUBE_X, tf_Sampler s)
 {
     TFI_CUBE_BEGIN(vec3(0.0), vec3(0.0));
     return tf_cubic_level(TFI_A, c.uv TFI_XA, 0, t.wrap, TF_RECONSTRUCT_CATMULL_ROM);
+}
+
+vec4 tf_bspline_cube_hw(TFI_T, vec3 dir TFI_CUBE_X, tf_Sampler s)
+{
+    TFI_CUBE_BEGIN(vec3(0.0), vec3(0.0));
+    return tf_cubic_level_hw(TFI_A, c.uv TFI_XA, 0, t.wrap, TF_RECONSTRUCT_BSPLINE);
+}
+
+vec4 tf_catmull_rom_cube_hw(TFI_T, vec3 dir TFI_CUBE_X, tf_Sampler s)
+{
+    TFI_CUBE_BEGIN(vec3(0.0), vec3(0.0));
+    return tf_cubic_level_hw(TFI_A, c.uv TFI_XA, 0, t.wrap, TF_RECONSTRUCT_CATMULL_ROM);
 }
 
 vec4 tf_nearest_mip_cube(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s)

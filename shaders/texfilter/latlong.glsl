@@ -10,9 +10,10 @@
 //          also tf_nearest_latlong / tf_bilinear_latlong (tex, dir, s: level 0), tf_nearest_mip_latlong /
 //          tf_bilinear_mip_latlong (tex, dir, dDirdx, dDirdy, s), tf_bspline_latlong / tf_catmull_rom_latlong (tex,
 //          dir, s: level 0 through bicubic.glsl's cubics, 16 texel fetches, across the seam and the poles as every
-//          manual form), tf_aniso_latlong_hw / tf_ewa_latlong_hw (hardware taps: the sampler repeats in u and
-//          clamps in v, so these do not cross a pole). TF_MAGNIFY (common.glsl) applies to tf_trilinear_latlong,
-//          tf_aniso_latlong and tf_ewa_latlong as to their 2D families.
+//          manual form), tf_aniso_latlong_hw / tf_ewa_latlong_hw / tf_bspline_latlong_hw /
+//          tf_catmull_rom_latlong_hw (hardware taps, 4 for the B-spline and 9 for Catmull-Rom: the sampler
+//          repeats in u and clamps in v, so these do not cross a pole). TF_MAGNIFY (common.glsl) applies to
+//          tf_trilinear_latlong, tf_aniso_latlong(_hw) and tf_ewa_latlong(_hw) as to their 2D families.
 //          tf_LatLongLookup tf_latlong_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy): the uv and uv gradients.
 // Math:    +y up: u = ½ + atan(d.x, −d.z)/2π, v = acos(d.y/|d|)/π (computed as atan(ρ, d.y)/π); the gradients are the mapping's Jacobian
 //          times the direction derivatives (never a difference of uv, so no seam at u = 0/1); then the 2D
@@ -95,6 +96,18 @@ vec4 tf_catmull_rom_latlong(TFI_T, vec3 dir, tf_Sampler s)
 {
     TFI_LATLONG_BEGIN(vec3(0.0), vec3(0.0));
     return tf_cubic_level(TFI_A, c.uv TFI_XA, 0, t.wrap, TF_RECONSTRUCT_CATMULL_ROM);
+}
+
+vec4 tf_bspline_latlong_hw(TFI_T, vec3 dir, tf_Sampler s)
+{
+    TFI_LATLONG_BEGIN(vec3(0.0), vec3(0.0));
+    return tf_cubic_level_hw(TFI_A, c.uv TFI_XA, 0, t.wrap, TF_RECONSTRUCT_BSPLINE);
+}
+
+vec4 tf_catmull_rom_latlong_hw(TFI_T, vec3 dir, tf_Sampler s)
+{
+    TFI_LATLONG_BEGIN(vec3(0.0), vec3(0.0));
+    return tf_cubic_level_hw(TFI_A, c.uv TFI_XA, 0, t.wrap, TF_RECONSTRUCT_CATMULL_ROM);
 }
 
 vec4 tf_nearest_mip_latlong(TFI_T, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s)
