@@ -256,8 +256,8 @@ bad_flag_values() {
         "${stoch[@]}" --accumulate 8 -o out.png
     expect_error "--stochastic ewa --taps hardware on the reference" "has no CPU reference" out.png -- \
         "$TEXFILTER" render --scene zoom --texture checker --filter ewa --taps hardware --stochastic white "${REF[@]}" -o out.png
-    expect_error "--stochastic on an environment scene" "--stochastic is not available on the environment scenes" \
-        out.png -- "$TEXFILTER" render --scene skybox --texture checker --filter trilinear --stochastic white "${REF[@]}" -o out.png
+    expect_error "--stochastic nearest on an environment scene" "--stochastic applies to bilinear, trilinear, aniso and ewa" \
+        out.png -- "$TEXFILTER" render --scene skybox --texture checker --filter nearest --stochastic white "${REF[@]}" -o out.png
     # Quad derivatives: bad values, and combinations the mesh scene cannot do.
     expect_error "--stage bogus" --stage out.png -- "${RENDER[@]}" --stage bogus -o out.png
     expect_error "--derivatives bogus" --derivatives out.png -- "${RENDER[@]}" --derivatives bogus -o out.png

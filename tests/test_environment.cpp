@@ -13,6 +13,7 @@
 #include "reference/env_cast.h"
 #include "reference/env_render.h"
 #include "reference/environment.h"
+#include "reference/stochastic.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 #include "support.h"
@@ -108,6 +109,17 @@ std::vector<double> direction_error(const EnvironmentMap& env, const SceneParams
         out[i] = glm::length(got - ref);
     }
     return out;
+}
+
+// cube-hash with n-texel faces, and the 4n x 2n lat-long map resampled from it.
+std::vector<EnvironmentMap> hash_maps(int n)
+{
+    std::vector<EnvironmentMap> maps = {cube_env("cube-hash", n)};
+    EnvironmentMap latlong;
+    latlong.map = EnvMap::latlong;
+    latlong.latlong = build_mip_chain(latlong_from_cube(maps[0].cube, 4 * n));
+    maps.push_back(latlong);
+    return maps;
 }
 
 double largest_texel(const CubeMap& cube)
@@ -437,11 +449,7 @@ double tap_weight_sum(const glm::dvec3& dir, const EnvironmentMap& env, int n, F
 TEST_CASE("cubic-magnification")
 {
     const int n = 16;
-    std::vector<EnvironmentMap> maps = {cube_env("cube-hash", n)};
-    EnvironmentMap latlong;
-    latlong.map = EnvMap::latlong;
-    latlong.latlong = build_mip_chain(latlong_from_cube(maps[0].cube, 4 * n));
-    maps.push_back(latlong);
+    const std::vector<EnvironmentMap> maps = hash_maps(n);
     const double contrast = largest_texel(maps[0].cube);
     const double step = std::ldexp(1.0, -int(test::test_device_info().sub_texel_precision_bits));
     for (const EnvironmentMap& env : maps)
@@ -526,6 +534,93 @@ TEST_CASE("cubic-magnification")
         }
 }
 
+// --stochastic on the maps (the 2D estimators of stochastic.glsl on the face or the lat-long uv, every texel and
+// tap read by the map's rule). Reference: the estimator's expectation is the deterministic filter (bilinear,
+// trilinear, aniso; aniso --taps hardware too) to double rounding, on every pixel of both scenes and both maps,
+// edges, corners, seam and pole included; on a constant map every family (ewa too) gives the constant with no
+// variance (the probabilities sum to 1). Device: the mean of 4 frames equals the reference's mean of the same
+// frames wherever the picks agree. A pick flips only where xi lies within the float error of a weight boundary
+// (~1e-6 of the pixels), so at most 1 % of the pixels may differ by more than: manual, the float rounding of a
+// mean of texel copies (1e-5); hardware taps, the sub-texel rounding (2 steps a tap), the level blend
+// (mipmapPrecisionBits, aniso's trilinear taps), and the taps' move under the direction's float error (as in
+// seamless-bilinear). The check sees the noise: most pixels' 4-frame mean differs from the deterministic filter.
+TEST_CASE("stochastic")
+{
+    const int n = 16;
+    const std::vector<EnvironmentMap> maps = hash_maps(n);
+    const double contrast = largest_texel(maps[0].cube);
+    const DeviceInfo& info = test::test_device_info();
+    const double step = std::ldexp(1.0, -int(info.sub_texel_precision_bits));
+    const double blend = 2.0 * std::ldexp(1.0, -int(info.mipmap_precision_bits));
+    struct Case {
+        Filter filter;
+        Taps taps;
+    };
+    const Case cases[] = {{Filter::bilinear, Taps::manual}, {Filter::trilinear, Taps::manual},
+                          {Filter::trilinear, Taps::hardware}, {Filter::aniso, Taps::manual},
+                          {Filter::aniso, Taps::hardware}, {Filter::ewa, Taps::manual}};
+    for (const EnvironmentMap& env : maps)
+        for (SceneKind kind : {SceneKind::skybox, SceneKind::reflect}) {
+            const SceneParams scene = make_scene(kind, 64, 64, n);
+            const std::vector<EnvLookup> lookups = reference_env_lookups(scene, Gradients::fine);
+            const std::vector<double> dir_error = direction_error(env, scene);
+            EnvironmentMap flat = constant_env(env.map, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+            for (const Case& c : cases) {
+                SamplerOptions o = with_filter(c.filter);
+                o.taps = c.taps;
+                o.stochastic = true;
+                o.accumulate = 4;
+                const bool tap_trilinear = c.filter == Filter::trilinear && c.taps == Taps::hardware;
+                const std::string what = to_string(env.map) + " " + to_string(kind) + " " + to_string(c.filter) +
+                                         (c.taps == Taps::hardware ? " taps" : "");
+                SamplerOptions deterministic = o;
+                deterministic.stochastic = false;
+                deterministic.accumulate = 1;
+                auto moments = [&](const EnvironmentMap& m, const EnvLookup& l) {
+                    return m.map == EnvMap::cube ? reference_cube_stochastic_moments(m.cube, o, l)
+                                                 : reference_latlong_stochastic_moments(m.latlong, o, l);
+                };
+                double expectation = 0, constant = 0;
+                for (const EnvLookup& l : lookups) {
+                    // ewa's expectation is its weighted mean, not its fit (stochastic.glsl); trilinear's taps on a
+                    // lat-long map clamp at a pole, where the manual filter reads across it.
+                    if (c.filter != Filter::ewa && !(tap_trilinear && env.map == EnvMap::latlong))
+                        expectation = std::max(expectation, test::max_channel_diff(
+                                                                moments(env, l).mean,
+                                                                reference_environment_sample(env, deterministic, l)));
+                    const StochasticMoments m = moments(flat, l);
+                    constant = std::max({constant, test::max_channel_diff(m.mean, glm::dvec4(0.25, 0.5, 0.75, 1.0)),
+                                         test::max_channel_diff(m.variance, glm::dvec4(0.0))});
+                }
+                CHECK(expectation <= 1e-12, what + ": |E[one texel] - deterministic| " + test::show(expectation));
+                CHECK(constant <= 1e-12, what + ": constant map, |E - constant| or variance " + test::show(constant));
+
+                const Image gpu = render_gpu(env, scene, o);
+                const Image ref = render_reference(env, scene, o);
+                const Image fixed = render_reference(env, scene, deterministic);
+                int differ = 0, noisy = 0;
+                for (size_t i = 0; i < gpu.texels.size(); ++i) {
+                    const double moved = 2.0 * 2.1 * n * dir_error[i] * contrast;
+                    const double tol = c.taps == Taps::hardware
+                                           ? 2.0 * step * contrast + (c.filter == Filter::aniso ? blend * contrast : 0.0) +
+                                                 moved + 1e-5
+                                           : 1e-5;
+                    differ += test::max_channel_diff(glm::dvec4(gpu.texels[i]), glm::dvec4(ref.texels[i])) > tol;
+                    noisy += test::max_channel_diff(glm::dvec4(ref.texels[i]), glm::dvec4(fixed.texels[i])) > 1e-3;
+                }
+                const double share = double(differ) / double(gpu.texels.size());
+                std::printf("%s: device vs reference, 4 frames: %d pixels differ (%.4f %%); %d of %zu noisy\n",
+                            what.c_str(), differ, 100.0 * share, noisy, gpu.texels.size());
+                CHECK(share <= 0.01, what + ": " + std::to_string(differ) + " pixels differ from the reference's picks");
+                // Trilinear's taps choose only a level: none to choose where the skybox magnifies (λ <= 0 everywhere),
+                // on the mirror where frac(λ) > 0.
+                const double least = !tap_trilinear ? 0.5 : kind == SceneKind::reflect ? 0.1 : 0.0;
+                CHECK(noisy >= least * double(gpu.texels.size()),
+                      what + ": only " + std::to_string(noisy) + " pixels noisy (the check could not see a wrong pick)");
+            }
+        }
+}
+
 // What the environment scenes refuse, before any work.
 TEST_CASE("refusals")
 {
@@ -534,10 +629,12 @@ TEST_CASE("refusals")
     CHECK_THROWS_WITH(render_gpu(env, scene, with_filter(Filter::sat)), "no environment-map form");
     CHECK_THROWS_WITH(render_gpu(env, scene, with_filter(Filter::brilinear)), "no environment-map form");
     CHECK_THROWS_WITH(render_reference(env, scene, with_filter(Filter::sat_assembly)), "no environment-map form");
-    SamplerOptions stochastic = with_filter(Filter::trilinear); // the one-texel forms are 2D only
+    SamplerOptions stochastic = with_filter(Filter::nearest); // as in 2D: bilinear, trilinear, aniso, ewa only
     stochastic.stochastic = true;
-    CHECK_THROWS_WITH(render_gpu(env, scene, stochastic), "--stochastic is not available");
-    CHECK_THROWS_WITH(render_reference(env, scene, stochastic), "--stochastic is not available");
+    CHECK_THROWS_WITH(render_gpu(env, scene, stochastic), "--stochastic applies to bilinear, trilinear, aniso and ewa");
+    stochastic.filter = Filter::ewa; // the block taps have no CPU reference, on the maps as in 2D
+    stochastic.taps = Taps::hardware;
+    CHECK_THROWS_WITH(render_reference(env, scene, stochastic), "has no CPU reference");
 }
 
 TEST_SUITE_END();

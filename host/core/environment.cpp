@@ -24,8 +24,7 @@ std::string to_string(EnvMap map) { return map == EnvMap::cube ? "cube" : "latlo
 bool has_environment_form(const SamplerOptions& options)
 {
     const Filter filter = options.filter;
-    return filter != Filter::brilinear && filter != Filter::sat && filter != Filter::sat_assembly &&
-           !options.stochastic;
+    return filter != Filter::brilinear && filter != Filter::sat && filter != Filter::sat_assembly;
 }
 
 void check_environment_filter(const SamplerOptions& options)
@@ -35,9 +34,6 @@ void check_environment_filter(const SamplerOptions& options)
         throw Error("--filter " + to_string(filter) + " has no environment-map form (cube.glsl and latlong.glsl: "
                     "nearest, bilinear, nearest-mip, bilinear-mip, trilinear, aniso, ewa, bspline, catmull-rom, hw-*, "
                     "ground-truth, none)");
-    if (options.stochastic)
-        throw Error("--stochastic is not available on the environment scenes (skybox, reflect): its one-texel forms "
-                    "are 2D only (shaders/texfilter/stochastic.glsl)");
 }
 
 Image latlong_from_cube(const CubeMap& cube, int width)

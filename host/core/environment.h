@@ -20,8 +20,8 @@ EnvMap parse_env_map(const std::string& name); // "cube", "latlong"; throws tf::
 std::string to_string(EnvMap map);
 
 // The filters the environment maps have (every family of cube.glsl / latlong.glsl, the hw-* modes, the
-// ground truth, none): brilinear and the SAT filters throw tf::Error naming the filter, and so does
-// --stochastic.
+// ground truth, none; --stochastic as in 2D, check_stochastic): brilinear and the SAT filters throw tf::Error
+// naming the filter.
 void check_environment_filter(const SamplerOptions& options);
 bool has_environment_form(const SamplerOptions& options); // check_environment_filter would not throw
 

@@ -97,18 +97,9 @@ glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options,
         const double t = (k + 0.5) / p.count - 0.5;
         const double weight = p.gaussian ? std::exp(-2 * (2 * t) * (2 * t)) : 1.0;
         const double u = lookup.u + t * p.axis.x, v = lookup.v + t * p.axis.y;
-        if (options.taps == Taps::hardware && texels.tap) { // the device's trilinear: two of its taps
-            // (level 0 through --magnify's taps where it asks for a cubic)
-            const double d = std::clamp(p.lod, 0.0, double(chain.levels.size() - 1));
-            const int lo = int(std::floor(d));
-            sum += weight * blend_levels(lo, d - lo, [&](int level) {
-                       return level == 0 ? reference_magnified(chain, u, v, options.wrap, options.magnify, Taps::hardware,
-                                                               texels)
-                                         : reference_hardware_tap(chain, level, u, v, options.wrap, texels);
-                   });
-        } else {
-            sum += weight * reference_trilinear_at(chain, p.lod, u, v, options.wrap, texels, options.magnify);
-        }
+        sum += weight * (options.taps == Taps::hardware // the device's trilinear: two of its taps
+                             ? reference_hardware_trilinear(chain, p.lod, u, v, options.wrap, texels, options.magnify)
+                             : reference_trilinear_at(chain, p.lod, u, v, options.wrap, texels, options.magnify));
         weights += weight;
     }
     return sum / weights;

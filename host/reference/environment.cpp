@@ -6,6 +6,7 @@
 #include "core/environment.h"
 
 #include "reference/reference.h"
+#include "reference/stochastic.h"
 #include "texture/error.h"
 
 #include <algorithm>
@@ -104,12 +105,30 @@ void check_lookup_filter(const SamplerOptions& options) {
 // `none` (the benchmark's baseline, no texture): the unit direction as a colour, as render_env.frag.glsl shows it.
 glm::dvec4 none_color(const glm::dvec3& dir) { return glm::dvec4(0.5 * glm::normalize(dir) + 0.5, 1.0); }
 
-// The 2D lookup under the map's uv reduction, through its texel source.
-glm::dvec4 sample_2d(const MipChain& chain, const SamplerOptions& options, Wrap reduction, const Lookup& lookup,
-                     const TexelSource& texels) {
+// The 2D lookup a direction lookup becomes, with the texture it runs on, the uv reduction (a face's uv is in
+// [0, 1]: clamp's is a no-op there and keeps far probes bounded; lat-long repeats) and the map's texel source:
+// run(chain, reduction, lookup, texels). The direction must be usable.
+template <typename Run>
+auto on_cube_face(const CubeMap& cube, const EnvLookup& lookup, Run run) {
+    int face = 0;
+    const Lookup l = cube_face_lookup(lookup, face);
+    const CubeFace map{&cube, face};
+    return run(cube.faces[size_t(face)], Wrap::clamp, l, TexelSource{read_cube_face, &map, tap_cube_face});
+}
+template <typename Run>
+auto on_latlong(const MipChain& chain, const EnvLookup& lookup, Run run) {
+    return run(chain, Wrap::repeat, latlong_lookup(lookup), TexelSource{read_latlong, &chain, tap_latlong});
+}
+
+// The options of the 2D family on the map: the sampler's wrap mode replaced by the map's uv reduction.
+SamplerOptions on_map(const SamplerOptions& options, Wrap reduction) {
     SamplerOptions two_d = options;
-    two_d.wrap = reduction; // the sampler's wrap mode is ignored; only the uv reduction uses this
-    return reference_sample_texels(chain, two_d, lookup, texels);
+    two_d.wrap = reduction;
+    return two_d;
+}
+
+void check_cube(const CubeMap& cube, const char* who) {
+    for (int f = 0; f < cube_face_count; ++f) face_chain(cube, f, who);
 }
 
 } // namespace
@@ -177,14 +196,12 @@ Lookup latlong_lookup(const EnvLookup& lookup) {
 
 glm::dvec4 reference_cube_sample(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup) {
     check_lookup_filter(options);
-    for (int f = 0; f < cube_face_count; ++f) face_chain(cube, f, "reference_cube_sample");
+    check_cube(cube, "reference_cube_sample");
     if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
     if (options.filter == Filter::none) return none_color(lookup.dir);
-    int face = 0;
-    const Lookup l = cube_face_lookup(lookup, face);
-    const CubeFace map{&cube, face};
-    // Face uv is in [0, 1]: the clamp reduction is a no-op there and keeps far probes bounded.
-    return sample_2d(cube.faces[size_t(face)], options, Wrap::clamp, l, {read_cube_face, &map, tap_cube_face});
+    return on_cube_face(cube, lookup, [&](const MipChain& chain, Wrap reduction, const Lookup& l, const TexelSource& t) {
+        return reference_sample_texels(chain, on_map(options, reduction), l, t);
+    });
 }
 
 glm::dvec4 reference_latlong_sample(const MipChain& chain, const SamplerOptions& options, const EnvLookup& lookup) {
@@ -192,11 +209,53 @@ glm::dvec4 reference_latlong_sample(const MipChain& chain, const SamplerOptions&
     if (chain.levels.empty()) throw Error("reference_latlong_sample: empty MIP chain");
     if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
     if (options.filter == Filter::none) return none_color(lookup.dir);
-    return sample_2d(chain, options, Wrap::repeat, latlong_lookup(lookup), {read_latlong, &chain, tap_latlong});
+    return on_latlong(chain, lookup, [&](const MipChain& c, Wrap reduction, const Lookup& l, const TexelSource& t) {
+        return reference_sample_texels(c, on_map(options, reduction), l, t);
+    });
+}
+
+glm::dvec4 reference_cube_stochastic_sample(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup,
+                                            Xi xi) {
+    check_reference_stochastic(options);
+    check_cube(cube, "reference_cube_stochastic_sample");
+    if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
+    return on_cube_face(cube, lookup, [&](const MipChain& chain, Wrap reduction, const Lookup& l, const TexelSource& t) {
+        return reference_stochastic_sample(chain, on_map(options, reduction), l, xi, t);
+    });
+}
+
+glm::dvec4 reference_latlong_stochastic_sample(const MipChain& chain, const SamplerOptions& options,
+                                               const EnvLookup& lookup, Xi xi) {
+    check_reference_stochastic(options);
+    if (chain.levels.empty()) throw Error("reference_latlong_stochastic_sample: empty MIP chain");
+    if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
+    return on_latlong(chain, lookup, [&](const MipChain& c, Wrap reduction, const Lookup& l, const TexelSource& t) {
+        return reference_stochastic_sample(c, on_map(options, reduction), l, xi, t);
+    });
+}
+
+StochasticMoments reference_cube_stochastic_moments(const CubeMap& cube, const SamplerOptions& options,
+                                                    const EnvLookup& lookup) {
+    check_reference_stochastic(options);
+    check_cube(cube, "reference_cube_stochastic_moments");
+    if (!usable_direction(lookup.dir)) return {};
+    return on_cube_face(cube, lookup, [&](const MipChain& chain, Wrap reduction, const Lookup& l, const TexelSource& t) {
+        return reference_stochastic_moments(chain, on_map(options, reduction), l, t);
+    });
+}
+
+StochasticMoments reference_latlong_stochastic_moments(const MipChain& chain, const SamplerOptions& options,
+                                                       const EnvLookup& lookup) {
+    check_reference_stochastic(options);
+    if (chain.levels.empty()) throw Error("reference_latlong_stochastic_moments: empty MIP chain");
+    if (!usable_direction(lookup.dir)) return {};
+    return on_latlong(chain, lookup, [&](const MipChain& c, Wrap reduction, const Lookup& l, const TexelSource& t) {
+        return reference_stochastic_moments(c, on_map(options, reduction), l, t);
+    });
 }
 
 glm::dvec4 reference_cube_bilinear0(const CubeMap& cube, const glm::dvec3& dir) {
-    for (int f = 0; f < cube_face_count; ++f) face_chain(cube, f, "reference_cube_bilinear0");
+    check_cube(cube, "reference_cube_bilinear0");
     if (!usable_direction(dir)) return glm::dvec4(0.0);
     const CubeFacePoint p = cube_face_point(dir);
     const CubeFace map{&cube, p.face};

@@ -144,6 +144,17 @@ glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, d
     });
 }
 
+glm::dvec4 reference_hardware_trilinear(const MipChain& chain, double lod, double u, double v, Wrap wrap,
+                                        const TexelSource& texels, Reconstruction finest) {
+    if (!texels.tap) return reference_trilinear_at(chain, lod, u, v, wrap, texels, finest);
+    const double d = std::clamp(lod, 0.0, double(chain.levels.size() - 1));
+    const int lo = int(std::floor(d));
+    return blend_levels(lo, d - lo, [&](int level) {
+        return level == 0 ? reference_magnified(chain, u, v, wrap, finest, Taps::hardware, texels)
+                          : reference_hardware_tap(chain, level, u, v, wrap, texels);
+    });
+}
+
 glm::dvec4 reference_sample_texels(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
                                    const TexelSource& texels) {
     if (chain.levels.empty()) throw Error("reference_sample: empty MIP chain");

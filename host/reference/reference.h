@@ -98,6 +98,11 @@ double magnified_share(const MipChain& chain, const SamplerOptions& options, con
 // reconstructed by `finest` (--magnify), the others bilinearly.
 glm::dvec4 reference_trilinear_at(const MipChain& chain, double lod, double u, double v, Wrap wrap,
                                   const TexelSource& texels = {}, Reconstruction finest = Reconstruction::bilinear);
+// The device's trilinear tap at a given LOD (clamped): two of its bilinear taps blended, each through the texel
+// source's tap (a cube's re-projected taps); level 0 through `finest`'s hardware taps (reference_magnified).
+// Without a tap in the source: reference_trilinear_at (a 2D sampler's tap is the bilinear blend itself).
+glm::dvec4 reference_hardware_trilinear(const MipChain& chain, double lod, double u, double v, Wrap wrap,
+                                        const TexelSource& texels, Reconstruction finest = Reconstruction::bilinear);
 
 // The filter families of reference/aniso.cpp, reference/ewa.cpp and reference/sat.cpp (see those files
 // and the matching shaders/texfilter/*.glsl headers for the math). uv is finite when these are called.

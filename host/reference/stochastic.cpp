@@ -21,8 +21,10 @@ constexpr int kEwaMaxTexels = 95; // TF_EWA_MAX_TEXELS's default
 constexpr double kEwaSupport = 2.0; // R²
 constexpr double kEwaHalfBox = 0.5 * (kEwaMaxTexels - 1) - 1.0 / 64.0;
 
-glm::dvec4 texel(const MipChain& chain, int level, long long i, long long j, Wrap wrap)
+// Texel (i, j) of `level`: through the texel source where it has a rule (the environment maps), else wrapped.
+glm::dvec4 texel(const MipChain& chain, int level, long long i, long long j, Wrap wrap, const TexelSource& texels)
 {
+    if (texels.read) return texels.read(texels.map, level, i, j);
     const Image& img = chain.levels[size_t(level)];
     return glm::dvec4(img.at(wrap_texel(i, img.width, wrap), wrap_texel(j, img.height, wrap)));
 }
@@ -39,17 +41,20 @@ BilinearSplit split(const MipChain& chain, int level, double u, double v)
     const double fx = std::floor(x), fy = std::floor(y);
     return {(long long)fx, (long long)fy, x - fx, y - fy};
 }
-glm::dvec4 pick_bilinear(const MipChain& chain, int level, double u, double v, Wrap wrap, Xi xi)
+glm::dvec4 pick_bilinear(const MipChain& chain, int level, double u, double v, Wrap wrap, Xi xi,
+                         const TexelSource& texels)
 {
     const BilinearSplit s = split(chain, level, u, v);
-    return texel(chain, level, s.i0 + (xi.x < s.a ? 1 : 0), s.j0 + (xi.y < s.b ? 1 : 0), wrap);
+    return texel(chain, level, s.i0 + (xi.x < s.a ? 1 : 0), s.j0 + (xi.y < s.b ? 1 : 0), wrap, texels);
 }
-void visit_bilinear(const MipChain& chain, int level, double u, double v, Wrap wrap, double p, const Visit& visit)
+void visit_bilinear(const MipChain& chain, int level, double u, double v, Wrap wrap, double p, const Visit& visit,
+                    const TexelSource& texels)
 {
     const BilinearSplit s = split(chain, level, u, v);
     for (int dj = 0; dj < 2; ++dj)
         for (int di = 0; di < 2; ++di)
-            visit(p * (di ? s.a : 1.0 - s.a) * (dj ? s.b : 1.0 - s.b), texel(chain, level, s.i0 + di, s.j0 + dj, wrap));
+            visit(p * (di ? s.a : 1.0 - s.a) * (dj ? s.b : 1.0 - s.b),
+                  texel(chain, level, s.i0 + di, s.j0 + dj, wrap, texels));
 }
 
 // The two-level choice at a clamped lod: the coarser with probability frac(lod); `rest` is xi's unused part.
@@ -69,20 +74,22 @@ void visit_levels(double lod, double p, PerLevel per_level)
 }
 
 // One trilinear probe at lod: a level, then a texel (manual) or that level's exact bilinear tap (hardware).
-glm::dvec4 pick_trilinear(const MipChain& chain, double lod, double u, double v, Wrap wrap, Xi xi, bool hardware)
+glm::dvec4 pick_trilinear(const MipChain& chain, double lod, double u, double v, Wrap wrap, Xi xi, bool hardware,
+                          const TexelSource& texels)
 {
     double rest;
     const int level = pick_level(lod, xi.z, rest);
-    return hardware ? reference_hardware_tap(chain, level, u, v, wrap, {}) : pick_bilinear(chain, level, u, v, wrap, xi);
+    return hardware ? reference_hardware_tap(chain, level, u, v, wrap, texels)
+                    : pick_bilinear(chain, level, u, v, wrap, xi, texels);
 }
 void visit_trilinear(const MipChain& chain, double lod, double u, double v, Wrap wrap, double p, bool hardware,
-                     const Visit& visit)
+                     const Visit& visit, const TexelSource& texels)
 {
     visit_levels(lod, p, [&](int level, double q) {
         if (hardware)
-            visit(q, reference_hardware_tap(chain, level, u, v, wrap, {}));
+            visit(q, reference_hardware_tap(chain, level, u, v, wrap, texels));
         else
-            visit_bilinear(chain, level, u, v, wrap, q, visit);
+            visit_bilinear(chain, level, u, v, wrap, q, visit, texels);
     });
 }
 
@@ -146,28 +153,29 @@ void check_reference_taps(const SamplerOptions& options)
 }
 
 // Both halves of every family: pick (xi given) or visit (xi null). uv is finite and reduced.
-glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Lookup& l, const Xi* xi, const Visit* visit)
+glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Lookup& l, const Xi* xi, const Visit* visit,
+                      const TexelSource& texels)
 {
     const bool hw = o.taps == Taps::hardware;
     switch (o.filter) {
     case Filter::bilinear:
         if (hw) { // the hardware's bilinear tap itself
-            const glm::dvec4 t = reference_hardware_tap(chain, 0, l.u, l.v, o.wrap, {});
+            const glm::dvec4 t = reference_hardware_tap(chain, 0, l.u, l.v, o.wrap, texels);
             if (visit) (*visit)(1.0, t);
             return t;
         }
         if (visit) {
-            visit_bilinear(chain, 0, l.u, l.v, o.wrap, 1.0, *visit);
+            visit_bilinear(chain, 0, l.u, l.v, o.wrap, 1.0, *visit, texels);
             return {};
         }
-        return pick_bilinear(chain, 0, l.u, l.v, o.wrap, *xi);
+        return pick_bilinear(chain, 0, l.u, l.v, o.wrap, *xi, texels);
     case Filter::trilinear: {
         const double lod = clamp_lod(chain, reference_lod(chain, l, o), o);
         if (visit) {
-            visit_trilinear(chain, lod, l.u, l.v, o.wrap, 1.0, hw, *visit);
+            visit_trilinear(chain, lod, l.u, l.v, o.wrap, 1.0, hw, *visit, texels);
             return {};
         }
-        return pick_trilinear(chain, lod, l.u, l.v, o.wrap, *xi, hw);
+        return pick_trilinear(chain, lod, l.u, l.v, o.wrap, *xi, hw, texels);
     }
     case Filter::aniso: {
         const AnisoProbes probes = reference_aniso_probes(chain, o, l);
@@ -180,9 +188,9 @@ glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Look
                 double u, v;
                 at(t, u, v);
                 if (hw)
-                    (*visit)(w, reference_trilinear_at(chain, probes.lod, u, v, o.wrap));
+                    (*visit)(w, reference_hardware_trilinear(chain, probes.lod, u, v, o.wrap, texels));
                 else
-                    visit_trilinear(chain, probes.lod, u, v, o.wrap, w, false, *visit);
+                    visit_trilinear(chain, probes.lod, u, v, o.wrap, w, false, *visit, texels);
             }
             return {};
         }
@@ -208,7 +216,8 @@ glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Look
         }
         double u, v;
         at(t, u, v);
-        return hw ? reference_trilinear_at(chain, probes.lod, u, v, o.wrap) : pick_trilinear(chain, probes.lod, u, v, o.wrap, x, false);
+        return hw ? reference_hardware_trilinear(chain, probes.lod, u, v, o.wrap, texels)
+                  : pick_trilinear(chain, probes.lod, u, v, o.wrap, x, false, texels);
     }
     case Filter::ewa: {
         check_reference_taps(o);
@@ -218,16 +227,16 @@ glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Look
         // Magnification (ewa.glsl): level 0's trilinear share is the bilinear magnification filter's.
         const double share = magnified_share(chain, o, l);
         if (visit) {
-            if (share > 0.0) visit_bilinear(chain, 0, l.u, l.v, o.wrap, share, *visit);
+            if (share > 0.0) visit_bilinear(chain, 0, l.u, l.v, o.wrap, share, *visit, texels);
             if (share < 1.0) visit_levels(fp.lod, 1.0 - share, [&](int level, double q) {
                 const std::vector<WeightedTexel> s = support_of(level);
                 double total = 0;
                 for (const WeightedTexel& t : s) total += t.w;
-                for (const WeightedTexel& t : s) (*visit)(q * t.w / total, texel(chain, level, t.i, t.j, o.wrap));
+                for (const WeightedTexel& t : s) (*visit)(q * t.w / total, texel(chain, level, t.i, t.j, o.wrap, texels));
             });
             return {};
         }
-        if (double(xi->z) < share) return pick_bilinear(chain, 0, l.u, l.v, o.wrap, *xi);
+        if (double(xi->z) < share) return pick_bilinear(chain, 0, l.u, l.v, o.wrap, *xi, texels);
         // The rest of xi.z, rescaled in float as the shader does.
         const float z = std::clamp((xi->z - float(share)) / (1.0f - float(share)), 0.0f, 0.99999994f);
         double rest;
@@ -238,7 +247,7 @@ glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Look
         const double target = double(xi->x) * total;
         double below = 0;
         for (const WeightedTexel& t : s) {
-            if (target < below + t.w || &t == &s.back()) return texel(chain, level, t.i, t.j, o.wrap);
+            if (target < below + t.w || &t == &s.back()) return texel(chain, level, t.i, t.j, o.wrap, texels);
             below += t.w;
         }
         return {};
@@ -258,14 +267,16 @@ Lookup reduced(const Lookup& lookup, Wrap wrap)
 
 } // namespace
 
-glm::dvec4 reference_stochastic_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup, Xi xi)
+glm::dvec4 reference_stochastic_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup, Xi xi,
+                                       const TexelSource& texels)
 {
     if (chain.levels.empty()) throw Error("reference_stochastic_sample: empty MIP chain");
     if (!finite_uv(lookup)) return glm::dvec4(0.0);
-    return run_family(chain, options, reduced(lookup, options.wrap), &xi, nullptr);
+    return run_family(chain, options, reduced(lookup, options.wrap), &xi, nullptr, texels);
 }
 
-StochasticMoments reference_stochastic_moments(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup)
+StochasticMoments reference_stochastic_moments(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                                               const TexelSource& texels)
 {
     if (chain.levels.empty()) throw Error("reference_stochastic_moments: empty MIP chain");
     StochasticMoments m;
@@ -275,7 +286,7 @@ StochasticMoments reference_stochastic_moments(const MipChain& chain, const Samp
         m.mean += p * t;
         sum2 += p * t * t;
     };
-    run_family(chain, options, reduced(lookup, options.wrap), nullptr, &visit);
+    run_family(chain, options, reduced(lookup, options.wrap), nullptr, &visit, texels);
     m.variance = glm::max(sum2 - m.mean * m.mean, glm::dvec4(0.0));
     return m;
 }
@@ -287,13 +298,13 @@ void check_reference_stochastic(const SamplerOptions& options)
 }
 
 glm::dvec4 reference_stochastic_mean(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup, int px,
-                                     int py, uint32_t lookup_index)
+                                     int py, uint32_t lookup_index, const TexelSource& texels)
 {
     glm::dvec4 sum(0.0);
     for (int f = 0; f < options.accumulate; ++f)
         sum += reference_stochastic_sample(
             chain, options, lookup,
-            stochastic_xi(options.noise, px, py, options.stochastic_first + uint32_t(f), lookup_index));
+            stochastic_xi(options.noise, px, py, options.stochastic_first + uint32_t(f), lookup_index), texels);
     return sum / double(options.accumulate);
 }
 

@@ -12,15 +12,17 @@
 namespace tf {
 
 // The value one frame's lookup returns under xi. options.taps hardware: the tap forms (one exact bilinear or
-// trilinear tap); ewa's tap form has no reference here (throws tf::Error). Non-finite uv: (0,0,0,0).
-glm::dvec4 reference_stochastic_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup, Xi xi);
+// trilinear tap); ewa's tap form has no reference here (throws tf::Error). Non-finite uv: (0,0,0,0). `texels`:
+// the environment maps' texel rule and taps (reference/environment.h); empty for a 2D texture.
+glm::dvec4 reference_stochastic_sample(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup, Xi xi,
+                                       const TexelSource& texels = {});
 
 struct StochasticMoments {
     glm::dvec4 mean{0.0};
     glm::dvec4 variance{0.0}; // of ONE frame's value; the mean of N frames has variance / N
 };
 StochasticMoments reference_stochastic_moments(const MipChain& chain, const SamplerOptions& options,
-                                               const Lookup& lookup);
+                                               const Lookup& lookup, const TexelSource& texels = {});
 
 // reference_render with options.stochastic: each pixel the mean of options.accumulate frames (frames
 // stochastic_first.., stochastic_xi of the pixel, frame and lookup 0), as the GPU's gpu_render.
@@ -34,6 +36,6 @@ void check_reference_stochastic(const SamplerOptions& options);
 // stochastic_xi(noise, px, py, frame, lookup_index). render: the pixel and lookup 0; sample (reference_sample_all):
 // pixel (0, 0) and the row, as the GPU's gpu_sample. Check the options first (check_reference_stochastic).
 glm::dvec4 reference_stochastic_mean(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup, int px,
-                                     int py, uint32_t lookup_index);
+                                     int py, uint32_t lookup_index, const TexelSource& texels = {});
 
 } // namespace tf

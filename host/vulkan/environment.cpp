@@ -133,7 +133,7 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
         {HARNESS_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, r.uniforms.buffer, sizeof(SceneParams)}};
     r.pass = create_pass_with_images(context, images, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                                      VK_SHADER_STAGE_FRAGMENT_BIT, buffers, cleanup);
-    const FilterVariant variant = render_variant(options, render); // --stochastic and views are refused above
+    const FilterVariant variant = render_variant(options, render); // views are refused above
     if (cache)
         for (const EnvironmentPipelineCache::Entry& e : cache->entries)
             if (e.map == environment.map && e.filter == variant && e.width == r.width && e.height == r.height) {
@@ -157,8 +157,8 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
 Image gpu_render_environment(const VulkanContext& context, const GpuEnvironment& environment, const SceneParams& scene,
                              const SamplerOptions& options, const RenderOptions& render, EnvironmentPipelineCache* cache)
 {
-    std::unique_ptr<GpuRenderer> renderer = create_environment_renderer(context, environment, scene, options, render, cache);
-    return render_frame(*renderer, scene);
+    return render_accumulated(*create_environment_renderer(context, environment, scene, options, render, cache), scene,
+                              options);
 }
 
 } // namespace tf

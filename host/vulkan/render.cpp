@@ -93,15 +93,19 @@ Image render_frame(GpuRenderer& r, const SceneParams& scene)
 Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
                  const SamplerOptions& options, const RenderOptions& render, RenderPipelineCache* cache)
 {
-    std::unique_ptr<GpuRenderer> renderer = create_renderer(context, texture, scene, options, render, cache);
+    return render_accumulated(*create_renderer(context, texture, scene, options, render, cache), scene, options);
+}
+
+Image render_accumulated(GpuRenderer& renderer, const SceneParams& scene, const SamplerOptions& options)
+{
     if (!options.stochastic || options.accumulate <= 1)
-        return render_frame(*renderer, scene);
+        return render_frame(renderer, scene);
     // --stochastic --accumulate N: the mean of N frames, each with its own random numbers (summed in double).
-    std::vector<glm::dvec4> sum(size_t(renderer->width) * renderer->height, glm::dvec4(0.0));
+    std::vector<glm::dvec4> sum(size_t(renderer.width) * renderer.height, glm::dvec4(0.0));
     Image frame;
     for (int f = 0; f < options.accumulate; ++f) {
-        renderer->push.stochastic = stochastic_push(options, options.stochastic_first + uint32_t(f));
-        frame = render_frame(*renderer, scene);
+        renderer.push.stochastic = stochastic_push(options, options.stochastic_first + uint32_t(f));
+        frame = render_frame(renderer, scene);
         for (size_t i = 0; i < sum.size(); ++i)
             sum[i] += glm::dvec4(frame.texels[i]);
     }

@@ -39,5 +39,7 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
 // Draws one frame of `scene` (same kind and size as at creation; the camera path changes only its
 // parameters) and reads it back.
 Image render_frame(GpuRenderer& renderer, const SceneParams& scene);
+// render_frame, or with --stochastic --accumulate N the mean of N frames, each with its own random numbers.
+Image render_accumulated(GpuRenderer& renderer, const SceneParams& scene, const SamplerOptions& options);
 
 } // namespace tf

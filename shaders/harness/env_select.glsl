@@ -14,6 +14,10 @@ uint hwLookupCount = 0u;
 
 #include "push_constants.glsl" // before the includes: TF_MAGNIFY reads MAGNIFY_ID
 #define TF_MAGNIFY MAGNIFY_ID
+#include "stochastic_noise.glsl"
+
+// render's pixel (--stochastic: the random numbers are a function of pixel, frame and lookup 0, as in 2D).
+ivec2 harnessPixel = ivec2(0);
 
 #if HARNESS_ENV == HARNESS_ENV_CUBE
 #define TF_RESOURCES TF_RESOURCE_CUBE
@@ -46,10 +50,35 @@ vec4 harness_env_grad(vec3 d, vec3 dx, vec3 dy)
 }
 #endif
 
+// --stochastic: the one-texel (or one-tap) forms, only in pipelines specialised with STOCHASTIC_ID 1.
+vec4 harness_env_filter_stochastic(vec3 d, vec3 dx, vec3 dy, tf_Sampler s, bool hardwareTaps)
+{
+    vec3 xi = stochastic_xi(pc.stochastic, harnessPixel, 0u);
+    switch (FILTER_ID) {
+    case HARNESS_FILTER_BILINEAR:
+        return hardwareTaps ? HARNESS_ENV_CALL_HW(tf_bilinear_stochastic)(HARNESS_ENV_HW, d, s, xi)
+                            : HARNESS_ENV_CALL(tf_bilinear_stochastic)(HARNESS_ENV_MANUAL, d, s, xi);
+    case HARNESS_FILTER_TRILINEAR:
+        return hardwareTaps ? HARNESS_ENV_CALL_HW(tf_trilinear_stochastic)(HARNESS_ENV_HW, d, dx, dy, s, xi)
+                            : HARNESS_ENV_CALL(tf_trilinear_stochastic)(HARNESS_ENV_MANUAL, d, dx, dy, s, xi);
+    case HARNESS_FILTER_ANISO:
+        return hardwareTaps
+                   ? HARNESS_ENV_CALL_HW(tf_aniso_stochastic)(HARNESS_ENV_HW, d, dx, dy, s, pc.probes, pc.anisoShape, xi)
+                   : HARNESS_ENV_CALL(tf_aniso_stochastic)(HARNESS_ENV_MANUAL, d, dx, dy, s, pc.probes, pc.anisoShape, xi);
+    case HARNESS_FILTER_EWA:
+        return hardwareTaps
+                   ? HARNESS_ENV_CALL_HW(tf_ewa_stochastic)(HARNESS_ENV_HW, d, dx, dy, s, pc.alpha, pc.maxAniso, xi)
+                   : HARNESS_ENV_CALL(tf_ewa_stochastic)(HARNESS_ENV_MANUAL, d, dx, dy, s, pc.alpha, pc.maxAniso, xi);
+    default: return vec4(0.0); // refused by the host
+    }
+}
+
 vec4 harness_env_filter(vec3 d, vec3 dx, vec3 dy)
 {
     tf_Sampler s = tf_Sampler(pc.wrapMode, pc.lodBias, pc.lodMin, pc.lodMax);
     bool hardwareTaps = pc.taps == TF_TAPS_HARDWARE;
+    if (STOCHASTIC_ID != 0)
+        return harness_env_filter_stochastic(d, dx, dy, s, hardwareTaps);
     switch (FILTER_ID) {
     case HARNESS_FILTER_NEAREST: return HARNESS_ENV_CALL(tf_nearest)(HARNESS_ENV_MANUAL, d, s);
     case HARNESS_FILTER_BILINEAR: return HARNESS_ENV_CALL(tf_bilinear)(HARNESS_ENV_MANUAL, d, s);

@@ -28,6 +28,7 @@ void main()
         outColor = env_ground_truth(ivec2(gl_FragCoord.xy));
         return;
     }
+    harnessPixel = ivec2(gl_FragCoord.xy);
     EnvHit h = env_hit(scene, gl_FragCoord.xy);
     // Quad derivatives in uniform control flow: every form, then the one asked for.
     vec3 fineX = dFdxFine(h.dir), fineY = dFdyFine(h.dir), coarseX = dFdxCoarse(h.dir), coarseY = dFdyCoarse(h.dir);

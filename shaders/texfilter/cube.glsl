@@ -11,7 +11,11 @@
 //          tf_bilinear_mip_cube (tex, dir, dDirdx, dDirdy, s), tf_bspline_cube / tf_catmull_rom_cube (tex, dir, s:
 //          level 0 through bicubic.glsl's cubics, 16 texel reads, seamless as every form), and tf_aniso_cube_hw /
 //          tf_ewa_cube_hw / tf_bspline_cube_hw / tf_catmull_rom_cube_hw (the same filters from the hardware's
-//          seamless bilinear/trilinear taps: 4 taps for the B-spline, 9 for Catmull-Rom). TF_MAGNIFY
+//          seamless bilinear/trilinear taps: 4 taps for the B-spline, 9 for Catmull-Rom). Stochastic forms
+//          (stochastic.glsl, one texel or one tap a lookup chosen by the caller's vec3 xi, appended last):
+//          tf_bilinear_stochastic_cube(tex, dir, s, xi), tf_trilinear_stochastic_cube(tex, dir, dDirdx, dDirdy,
+//          s, xi), tf_aniso_stochastic_cube(..., maxProbes, shape, xi), tf_ewa_stochastic_cube(..., alpha,
+//          maxAniso, xi), each also _hw (a LINEAR sampler: its one tap goes through the seamless filter). TF_MAGNIFY
 //          (common.glsl) applies to tf_trilinear_cube, tf_aniso_cube(_hw) and tf_ewa_cube(_hw) as to their 2D
 //          families.
 //          Every cube kind (TF_RESOURCE_CUBE, TF_RESOURCE_CUBE_ARRAY): samplerCube; textureCube tex, sampler smp;
@@ -47,6 +51,7 @@
 #include "trilinear.glsl"
 #include "aniso.glsl"
 #include "ewa.glsl"
+#include "stochastic.glsl"
 
 // A direction lookup as the 2D lookup on one face: face -1 when dir is zero or not finite.
 struct tf_CubeLookup {
@@ -172,6 +177,60 @@ vec4 tf_ewa_cube_hw(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sam
 {
     TFI_CUBE_BEGIN(dDirdx, dDirdy);
     return tfi_ewa_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, alpha, maxAniso, true);
+}
+
+// --stochastic (stochastic.glsl): one texel (manual) or one hardware tap (_hw) a lookup, chosen by xi.
+vec4 tf_bilinear_stochastic_cube(TFI_T, vec3 dir TFI_CUBE_X, tf_Sampler s, vec3 xi)
+{
+    TFI_CUBE_BEGIN(vec3(0.0), vec3(0.0));
+    return tf_bilinear_stochastic_level(TFI_A, c.uv TFI_XA, 0, t.wrap, xi);
+}
+
+vec4 tf_bilinear_stochastic_cube_hw(TFI_T, vec3 dir TFI_CUBE_X, tf_Sampler s, vec3 xi)
+{
+    TFI_CUBE_BEGIN(vec3(0.0), vec3(0.0));
+    TF_COUNT_HW_LOOKUPS(1);
+    return TFI_LOOKUP(c.uv, 0.0); // the hardware's bilinear tap is already one tap
+}
+
+vec4 tf_trilinear_stochastic_cube(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tfi_trilinear_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, xi, false);
+}
+
+vec4 tf_trilinear_stochastic_cube_hw(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tfi_trilinear_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, xi, true);
+}
+
+vec4 tf_aniso_stochastic_cube(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape,
+                              vec3 xi)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tfi_aniso_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, maxProbes, shape, xi, false);
+}
+
+vec4 tf_aniso_stochastic_cube_hw(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes,
+                                 int shape, vec3 xi)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tfi_aniso_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, maxProbes, shape, xi, true);
+}
+
+vec4 tf_ewa_stochastic_cube(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso,
+                            vec3 xi)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tfi_ewa_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, alpha, maxAniso, xi, false);
+}
+
+vec4 tf_ewa_stochastic_cube_hw(TFI_T, vec3 dir TFI_CUBE_X, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha,
+                               float maxAniso, vec3 xi)
+{
+    TFI_CUBE_BEGIN(dDirdx, dDirdy);
+    return tfi_ewa_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, alpha, maxAniso, xi, true);
 }
 
 #undef TFI_CUBE_BEGIN

@@ -12,7 +12,10 @@
 //          dir, s: level 0 through bicubic.glsl's cubics, 16 texel fetches, across the seam and the poles as every
 //          manual form), tf_aniso_latlong_hw / tf_ewa_latlong_hw / tf_bspline_latlong_hw /
 //          tf_catmull_rom_latlong_hw (hardware taps, 4 for the B-spline and 9 for Catmull-Rom: the sampler
-//          repeats in u and clamps in v, so these do not cross a pole). TF_MAGNIFY (common.glsl) applies to
+//          repeats in u and clamps in v, so these do not cross a pole). Stochastic forms (stochastic.glsl, the
+//          caller's vec3 xi appended last): tf_bilinear_stochastic_latlong, tf_trilinear_stochastic_latlong,
+//          tf_aniso_stochastic_latlong, tf_ewa_stochastic_latlong and their _hw forms, the cube's parameters
+//          (cube.glsl). TF_MAGNIFY (common.glsl) applies to
 //          tf_trilinear_latlong, tf_aniso_latlong(_hw) and tf_ewa_latlong(_hw) as to their 2D families.
 //          tf_LatLongLookup tf_latlong_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy): the uv and uv gradients.
 // Math:    +y up: u = ½ + atan(d.x, −d.z)/2π, v = acos(d.y/|d|)/π (computed as atan(ρ, d.y)/π); the gradients are the mapping's Jacobian
@@ -33,6 +36,7 @@
 #include "trilinear.glsl"
 #include "aniso.glsl"
 #include "ewa.glsl"
+#include "stochastic.glsl"
 
 struct tf_LatLongLookup {
     bool valid; // false for a zero or non-finite dir
@@ -150,6 +154,60 @@ vec4 tf_ewa_latlong_hw(TFI_T, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, 
 {
     TFI_LATLONG_BEGIN(dDirdx, dDirdy);
     return tfi_ewa_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, alpha, maxAniso, true);
+}
+
+// --stochastic (stochastic.glsl): one texel (manual) or one hardware tap (_hw) a lookup, chosen by xi.
+vec4 tf_bilinear_stochastic_latlong(TFI_T, vec3 dir, tf_Sampler s, vec3 xi)
+{
+    TFI_LATLONG_BEGIN(vec3(0.0), vec3(0.0));
+    return tf_bilinear_stochastic_level(TFI_A, c.uv TFI_XA, 0, t.wrap, xi);
+}
+
+vec4 tf_bilinear_stochastic_latlong_hw(TFI_T, vec3 dir, tf_Sampler s, vec3 xi)
+{
+    TFI_LATLONG_BEGIN(vec3(0.0), vec3(0.0));
+    TF_COUNT_HW_LOOKUPS(1);
+    return TFI_LOOKUP(c.uv, 0.0); // the hardware's bilinear tap is already one tap
+}
+
+vec4 tf_trilinear_stochastic_latlong(TFI_T, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi)
+{
+    TFI_LATLONG_BEGIN(dDirdx, dDirdy);
+    return tfi_trilinear_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, xi, false);
+}
+
+vec4 tf_trilinear_stochastic_latlong_hw(TFI_T, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi)
+{
+    TFI_LATLONG_BEGIN(dDirdx, dDirdy);
+    return tfi_trilinear_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, xi, true);
+}
+
+vec4 tf_aniso_stochastic_latlong(TFI_T, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape,
+                              vec3 xi)
+{
+    TFI_LATLONG_BEGIN(dDirdx, dDirdy);
+    return tfi_aniso_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, maxProbes, shape, xi, false);
+}
+
+vec4 tf_aniso_stochastic_latlong_hw(TFI_T, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes,
+                                 int shape, vec3 xi)
+{
+    TFI_LATLONG_BEGIN(dDirdx, dDirdy);
+    return tfi_aniso_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, maxProbes, shape, xi, true);
+}
+
+vec4 tf_ewa_stochastic_latlong(TFI_T, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso,
+                            vec3 xi)
+{
+    TFI_LATLONG_BEGIN(dDirdx, dDirdy);
+    return tfi_ewa_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, alpha, maxAniso, xi, false);
+}
+
+vec4 tf_ewa_stochastic_latlong_hw(TFI_T, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha,
+                               float maxAniso, vec3 xi)
+{
+    TFI_LATLONG_BEGIN(dDirdx, dDirdy);
+    return tfi_ewa_stochastic_impl(TFI_A, c.uv TFI_XA, c.dUVdx, c.dUVdy, t, alpha, maxAniso, xi, true);
 }
 
 #undef TFI_LATLONG_BEGIN

@@ -17,7 +17,8 @@
 //          Every 2D resource kind (access.glsl): manual forms with texture2D, u/isampler2D, u/itexture2D,
 //          sampler2DArray / texture2DArray + `int layer` after uv, depth + `tf_Compare cmp` after uv; _hw forms
 //          with sampler2D, texture2D + sampler, the arrays, sampler2DShadow / texture2D + samplerShadow +
-//          `float dref`. Not the environment kinds (cube, lat-long).
+//          `float dref`. The environment maps: cube.glsl's and latlong.glsl's tf_X_stochastic_cube / _latlong
+//          (and _hw), by direction, every texel read by the map's own rule as their deterministic forms read it.
 // xi:      three numbers in [0, 1) for this lookup (white noise, a blue-noise texture, a low-discrepancy
 //          sequence; the caller's choice, e.g. the harness's hash of pixel, frame and lookup). xi.x and xi.y
 //          choose the texel of a bilinear footprint along x and y (ewa: xi.x alone, through the weights' CDF),
@@ -115,7 +116,8 @@ float tfi_stochastic_probe(int probes, int shape, float xi, out float rest)
 #undef TFI_FAMILY
 
 #elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_STOCHASTIC && !TFI_ENV // per 2D resource kind (access.glsl)
+#if TFI_FAMILY == TFI_FAMILY_STOCHASTIC // per resource kind (access.glsl); cube.glsl and latlong.glsl wrap the
+// environment kinds' face-local forms in their direction forms (tf_trilinear_stochastic_cube, ...)
 
 #if TFI_CAN_FETCH
 vec4 tf_bilinear_stochastic_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, vec3 xi)
@@ -331,7 +333,7 @@ vec4 tfi_ewa_stochastic_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sa
 #endif
 }
 
-#if TFI_MANUAL
+#if TFI_MANUAL && !TFI_ENV
 vec4 tf_bilinear_stochastic(TFI_T, vec2 uv TFI_X, tf_Sampler s, vec3 xi)
 {
     return tf_bilinear_stochastic_level(TFI_A, uv TFI_XA, 0, s.wrap, xi);
@@ -350,7 +352,7 @@ vec4 tf_ewa_stochastic(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler 
 }
 #endif
 
-#if TFI_HW
+#if TFI_HW && !TFI_ENV
 vec4 tf_bilinear_stochastic_hw(TFI_T, vec2 uv TFI_X, tf_Sampler s, vec3 xi)
 {
     if (!tf_finite(uv))
