@@ -95,7 +95,7 @@ glm::dvec4 tap_latlong(const void* map, int level, double u, double v) {
 // The filters a lookup has on an environment map; the others throw, naming the filter.
 void check_lookup_filter(const SamplerOptions& options) {
     const Filter filter = options.filter;
-    check_environment_filter(options); // brilinear, the SAT filters, --stochastic: no environment form
+    check_environment_filter(options); // brilinear and the SAT filters: no environment form
     if (filter == Filter::hw_aniso)
         throw Error("hw-aniso has no CPU reference: anisotropic filtering is implementation-defined in Vulkan");
     if (filter == Filter::ground_truth)

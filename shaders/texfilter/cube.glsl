@@ -38,7 +38,8 @@
 //          LOD bias and no LOD clamp narrower than the levels (textureSize and textureQueryLevels give the
 //          rest). _hw forms: a LINEAR sampler (min, mag, mipmapMode LINEAR for aniso, any for ewa), no bias.
 // Options: s.lodBias, s.lodMin, s.lodMax, and each family's own (aniso.glsl, ewa.glsl). No defines.
-// Cost:    the 2D family's texel reads, each a textureLod (3 at a bilinear corner); _hw: its hardware taps.
+// Cost:    the 2D family's texel reads, each a textureLod (3 at a bilinear corner); _hw: its hardware taps;
+//          stochastic forms 1 texel read (3 past a corner) or 1 tap.
 // Degenerate input: a zero or non-finite dir gives vec4(0); non-finite derivatives the coarsest level, zero
 //          the finest (the 2D rules).
 // Example: vec3 d = reflect(viewDir, n);

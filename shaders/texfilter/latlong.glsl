@@ -24,7 +24,7 @@
 //          the other side, half a turn round. s.wrap is ignored.
 // Needs:   a sampler2D (TF_RESOURCE_LATLONG) with a full MIP chain; manual forms read it with texelFetch.
 // Options: s.lodBias, s.lodMin, s.lodMax, each family's own. No defines.
-// Cost:    the 2D family's (trilinear 8 texel fetches, ...), plus an atan, an acos and a sqrt.
+// Cost:    the 2D family's (trilinear 8 texel fetches, stochastic forms 1, ...), plus two atans and a sqrt.
 // Degenerate input: a zero or non-finite dir gives vec4(0); at a pole itself (d.x = d.z = 0) the u gradient is
 //          infinite: the coarsest level, as for any non-finite footprint.
 // Example: vec4 c = tf_trilinear_latlong(sky, d, dFdxFine(d), dFdyFine(d), tf_sampler(TF_WRAP_REPEAT));
