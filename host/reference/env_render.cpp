@@ -25,18 +25,6 @@ glm::dvec4 reference_environment_sample(const EnvironmentMap& env, const Sampler
                                    : reference_latlong_sample(env.latlong, options, lookup);
 }
 
-glm::dvec4 reference_environment_stochastic_mean(const EnvironmentMap& env, const SamplerOptions& options,
-                                                 const EnvLookup& lookup, int px, int py)
-{
-    glm::dvec4 sum(0.0);
-    for (int f = 0; f < options.accumulate; ++f) {
-        const Xi xi = stochastic_xi(options.noise, px, py, options.stochastic_first + uint32_t(f), 0u);
-        sum += env.map == EnvMap::cube ? reference_cube_stochastic_sample(env.cube, options, lookup, xi)
-                                       : reference_latlong_stochastic_sample(env.latlong, options, lookup, xi);
-    }
-    return sum / double(options.accumulate);
-}
-
 Image reference_render_environment(const SceneParams& scene, const EnvironmentMap& env, const SamplerOptions& options,
                                    const RenderOptions& render)
 {
@@ -67,9 +55,11 @@ Image reference_render_environment(const SceneParams& scene, const EnvironmentMa
     parallel_for(size_t(height), [&](size_t y) {
         for (int x = 0; x < width; ++x) {
             const size_t i = y * size_t(width) + size_t(x);
-            out.texels[i] = glm::vec4(options.stochastic
-                                          ? reference_environment_stochastic_mean(env, options, lookups[i], x, int(y))
-                                          : reference_environment_sample(env, options, lookups[i]));
+            const glm::dvec4 value =
+                !options.stochastic     ? reference_environment_sample(env, options, lookups[i])
+                : env.map == EnvMap::cube ? reference_cube_stochastic_mean(env.cube, options, lookups[i], x, int(y))
+                                          : reference_latlong_stochastic_mean(env.latlong, options, lookups[i], x, int(y));
+            out.texels[i] = glm::vec4(value);
         }
     });
     return out;

@@ -11,12 +11,7 @@ namespace tf {
 glm::dvec4 reference_environment_sample(const EnvironmentMap& env, const SamplerOptions& options,
                                         const EnvLookup& lookup);
 
-// --stochastic: the mean of options.accumulate frames of one lookup (frames stochastic_first.., the numbers of
-// pixel (px, py), lookup 0), as the GPU's environment render draws them.
-glm::dvec4 reference_environment_stochastic_mean(const EnvironmentMap& env, const SamplerOptions& options,
-                                                 const EnvLookup& lookup, int px, int py);
-
-// The whole image (--stochastic: the mean of its frames). render.view must be color (the debug views are the 2D scenes'); ground-truth integrates
+// The whole image (--stochastic: each pixel the mean of its frames). render.view must be color (the debug views are the 2D scenes'); ground-truth integrates
 // level 0 over the pixel (options.truth_side, pixel_filter, the sample range) as reference_ground_truth does.
 Image reference_render_environment(const SceneParams& scene, const EnvironmentMap& env, const SamplerOptions& options,
                                    const RenderOptions& render);

@@ -214,23 +214,23 @@ glm::dvec4 reference_latlong_sample(const MipChain& chain, const SamplerOptions&
     });
 }
 
-glm::dvec4 reference_cube_stochastic_sample(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup,
-                                            Xi xi) {
+glm::dvec4 reference_cube_stochastic_mean(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup,
+                                          int px, int py) {
     check_reference_stochastic(options);
-    check_cube(cube, "reference_cube_stochastic_sample");
+    check_cube(cube, "reference_cube_stochastic_mean");
     if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
     return on_cube_face(cube, lookup, [&](const MipChain& chain, Wrap reduction, const Lookup& l, const TexelSource& t) {
-        return reference_stochastic_sample(chain, on_map(options, reduction), l, xi, t);
+        return reference_stochastic_mean(chain, on_map(options, reduction), l, px, py, 0u, t);
     });
 }
 
-glm::dvec4 reference_latlong_stochastic_sample(const MipChain& chain, const SamplerOptions& options,
-                                               const EnvLookup& lookup, Xi xi) {
+glm::dvec4 reference_latlong_stochastic_mean(const MipChain& chain, const SamplerOptions& options,
+                                             const EnvLookup& lookup, int px, int py) {
     check_reference_stochastic(options);
-    if (chain.levels.empty()) throw Error("reference_latlong_stochastic_sample: empty MIP chain");
+    if (chain.levels.empty()) throw Error("reference_latlong_stochastic_mean: empty MIP chain");
     if (!usable_direction(lookup.dir)) return glm::dvec4(0.0);
     return on_latlong(chain, lookup, [&](const MipChain& c, Wrap reduction, const Lookup& l, const TexelSource& t) {
-        return reference_stochastic_sample(c, on_map(options, reduction), l, xi, t);
+        return reference_stochastic_mean(c, on_map(options, reduction), l, px, py, 0u, t);
     });
 }
 

@@ -5,7 +5,6 @@
 // read through the map's own seamless rule instead of the sampler's wrap mode (which is ignored).
 #include "core/filter.h"
 #include "core/lookup.h"
-#include "core/stochastic_noise.h"
 #include "texture/mip.h"
 
 #include <glm/vec3.hpp>
@@ -23,15 +22,16 @@ namespace tf {
 glm::dvec4 reference_cube_sample(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup);
 glm::dvec4 reference_latlong_sample(const MipChain& chain, const SamplerOptions& options, const EnvLookup& lookup);
 
-// --stochastic on the maps (cube.glsl's and latlong.glsl's tf_X_stochastic_*): one frame's value under xi, and
-// the estimator's moments (reference/stochastic.h), the 2D family's on the lookup's face or lat-long uv with every
-// texel and tap read by the map's rule, as the deterministic filters read them. options.stochastic need not be
-// set; the filter must be bilinear, trilinear, aniso or ewa (ewa with manual taps), else tf::Error. A zero or
-// non-finite direction returns (0,0,0,0) (moments: zero).
-glm::dvec4 reference_cube_stochastic_sample(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup,
-                                            Xi xi);
-glm::dvec4 reference_latlong_stochastic_sample(const MipChain& chain, const SamplerOptions& options,
-                                               const EnvLookup& lookup, Xi xi);
+// --stochastic on the maps (cube.glsl's and latlong.glsl's tf_X_stochastic_*): the mean of options.accumulate
+// frames of one lookup (frames stochastic_first.., the numbers of pixel (px, py), lookup 0, as the GPU's
+// environment render draws them), and the estimator's moments (reference/stochastic.h); the 2D family's on the
+// lookup's face or lat-long uv, every texel and tap read by the map's rule as the deterministic filters read
+// them. options.stochastic need not be set for the moments; the filter must be bilinear, trilinear, aniso or ewa
+// (ewa with manual taps), else tf::Error. A zero or non-finite direction returns (0,0,0,0) (moments: zero).
+glm::dvec4 reference_cube_stochastic_mean(const CubeMap& cube, const SamplerOptions& options, const EnvLookup& lookup,
+                                          int px, int py);
+glm::dvec4 reference_latlong_stochastic_mean(const MipChain& chain, const SamplerOptions& options,
+                                             const EnvLookup& lookup, int px, int py);
 struct StochasticMoments;
 StochasticMoments reference_cube_stochastic_moments(const CubeMap& cube, const SamplerOptions& options,
                                                     const EnvLookup& lookup);
