@@ -7,14 +7,17 @@
 #                          450: "ray tracing shaders require ... version 460 or above"). Gradients come
 #                          from the hit shader's ray differentials through the ray payload; no dFdx.
 #
-# usage: compile_includes.sh GLSLANG GLSLC INCLUDE_DIR
+# usage: compile_includes.sh GLSLANG GLSLC INCLUDE_DIR [NAME]
 #   INCLUDE_DIR is the `shaders` folder: shaders write #include "texfilter/NAME.glsl".
+#   NAME: only that include's checks (file name without .glsl), or `options` (the TF_COMPUTE_QUADS and
+#   overridden-define shaders); without it, everything. ctest runs one entry per NAME (compile_includes.NAME).
 #
 # Each test shader includes exactly one file and calls its tf_ functions with a uniform sampler2D (and
 # the SAT's two usampler2D), so a missing dependency (an include that relies on another being included
 # first) or code that only breaks once instantiated is caught. Everything the shader declares comes
 # after the include: an include must not depend on anything the user declares. Further shaders:
-#   - each include twice (450 fragment): its include guard;
+#   - each include twice (450 fragment; glslangValidator only: a guard is preprocessing, which both compilers
+#     share through glslang): its include guard;
 #   - derivatives.glsl with TF_COMPUTE_QUADS and GL_KHR_shader_subgroup_quad (compute, 450 and 460);
 #   - texfilter.glsl with every overridable define set before including (TF_COUNT_FETCHES,
 #     TF_COUNT_HW_LOOKUPS, TF_EWA_MAX_TEXELS, TF_ANISO_RATIO_SLACK, TF_MAGNIFY; TF_COMPUTE_QUADS in compute), 460,
@@ -22,13 +25,14 @@
 # Prints one line per compile; exits non-zero if any fails.
 set -euo pipefail
 
-if [[ $# -ne 3 ]]; then
-    echo "usage: $0 GLSLANG GLSLC INCLUDE_DIR" >&2
+if [[ $# -ne 3 && $# -ne 4 ]]; then
+    echo "usage: $0 GLSLANG GLSLC INCLUDE_DIR [NAME]" >&2
     exit 2
 fi
 GLSLANG=$1
 GLSLC=$2
 INCLUDE_DIR=$3
+ONLY=${4:-}
 
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
@@ -161,10 +165,11 @@ run_compiler() {
     esac
 }
 
-# compile LABEL SHADER: runs both compilers, one line each; on failure shows the log and the shader.
+# compile LABEL SHADER [TOOLS]: runs the compilers (both unless TOOLS names some), one line each; on
+# failure shows the log and the shader.
 compile() {
-    local label=$1 shader=$2 log="$WORK/log" tool
-    for tool in glslangValidator glslc; do
+    local label=$1 shader=$2 tools=${3:-glslangValidator glslc} log="$WORK/log" tool
+    for tool in $tools; do
         compiles=$((compiles + 1))
         if run_compiler "$tool" "$shader" >"$log" 2>&1; then
             printf 'ok    %-17s %s\n' "$tool" "$label"
@@ -203,12 +208,13 @@ check_layout() {
     fi
 }
 
-# check VERSION STAGE NAME CALL COUNT PRELUDE LABEL: writes one shader and compiles it with both tools.
+# check VERSION STAGE NAME CALL COUNT PRELUDE LABEL [TOOLS]: writes one shader and compiles it (both tools
+# unless TOOLS names some).
 check() {
-    local version=$1 stage=$2 name=$3 call=$4 count=$5 prelude=$6 label=$7
-    local shader="$WORK/${name}_${version}_${count}_$((compiles / 2)).$stage"
+    local version=$1 stage=$2 name=$3 call=$4 count=$5 prelude=$6 label=$7 tools=${8:-}
+    local shader="$WORK/${name}_${version}_${count}_${compiles}.$stage"
     write_shader "$version" "$stage" "$name" "$call" "$count" "$prelude" >"$shader"
-    compile "$version $stage $label" "$shader"
+    compile "$version $stage $label" "$shader" $tools
 }
 
 shopt -s nullglob
@@ -216,6 +222,15 @@ includes=("$INCLUDE_DIR"/texfilter/*.glsl)
 if [[ ${#includes[@]} -eq 0 ]]; then
     echo "FAIL: no includes found in $INCLUDE_DIR/texfilter" >&2
     exit 1
+fi
+if [[ -n $ONLY && $ONLY != options ]]; then
+    if [[ ! -f $INCLUDE_DIR/texfilter/$ONLY.glsl ]]; then
+        echo "FAIL: no include $INCLUDE_DIR/texfilter/$ONLY.glsl" >&2
+        exit 1
+    fi
+    includes=("$INCLUDE_DIR/texfilter/$ONLY.glsl")
+elif [[ $ONLY == options ]]; then
+    includes=()
 fi
 
 # The access layer's internal files (access, family, instantiate: re-included once per resource kind, so no
@@ -287,7 +302,11 @@ check_builder() {
                 for ((i = 0; i < count; ++i)); do echo "#include \"texfilter/$name.glsl\""; done
                 builder_main "$name"
             } >"$shader"
-            compile "$version comp $name.glsl$([[ $count == 2 ]] && echo ' included twice')" "$shader"
+            if [[ $count == 2 ]]; then
+                compile "$version comp $name.glsl included twice" "$shader" glslangValidator
+            else
+                compile "$version comp $name.glsl" "$shader"
+            fi
         done
     done
     shader="$WORK/builder_${name}_alone.comp"
@@ -337,8 +356,14 @@ for file in "${includes[@]}"; do
         done
     done
     # Included twice: without a working guard every function is defined twice.
-    check 450 frag "$name" "$(call_for "$name" frag)" 2 "" "$name.glsl included twice"
+    check 450 frag "$name" "$(call_for "$name" frag)" 2 "" "$name.glsl included twice" glslangValidator
 done
+
+if [[ -n $ONLY && $ONLY != options ]]; then
+    echo "$compiles compiles of $ONLY.glsl, $failures failure(s)"
+    [[ $failures -eq 0 ]]
+    exit
+fi
 
 # derivatives.glsl's compute quads: opt-in with TF_COMPUTE_QUADS and the subgroup quad extension.
 quads="#extension GL_KHR_shader_subgroup_quad : require
@@ -362,5 +387,9 @@ check 460 comp texfilter "$optionsCall + vec4(tf_compute_quad_gradients(uv, TF_D
 $options" "texfilter.glsl with every option overridden and TF_COMPUTE_QUADS"
 check 460 rgen texfilter "$optionsCall" 1 "$options" "texfilter.glsl with every option overridden"
 
-echo "$compiles compiles of ${#includes[@]} includes, $failures failure(s)"
+if [[ -n $ONLY ]]; then
+    echo "$compiles compiles (options), $failures failure(s)"
+else
+    echo "$compiles compiles of ${#includes[@]} includes, $failures failure(s)"
+fi
 [[ $failures -eq 0 ]]
