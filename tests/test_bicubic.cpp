@@ -178,8 +178,9 @@ TEST_CASE("reference-tap-form") {
 }
 
 TEST_CASE("magnify-limits") {
-    // --magnify swaps level 0's reconstruction: where only level 0 is read (lambda <= 0) trilinear, aniso and
-    // ewa give the cubic itself; from lambda = 1 on (level 0 unread) nothing changes; just below lambda = 1 the
+    // --magnify swaps level 0's reconstruction: where only level 0 is read (lambda <= 0) trilinear and aniso
+    // give the cubic itself, ewa the cubic's mean over four points of the footprint (the cubic itself for a
+    // zero footprint); from lambda = 1 on (level 0 unread) nothing changes; just below lambda = 1 the
     // change is level 0's share (1 - lambda) times the cubic - bilinear difference: continuous.
     const int size = 64;
     const MipChain chain = make_procedural("noise", size);
@@ -192,7 +193,18 @@ TEST_CASE("magnify-limits") {
                 const Lookup zoom = lookup_at_lod(u, v, -1.5 + 0.02 * k, size);
                 const Lookup minify = lookup_at_lod(u, v, 1.0 + 0.05 * k, size);
                 const Lookup below = lookup_at_lod(u, v, 1.0 - 1e-6, size);
-                const glm::dvec4 cubic = reference_cubic(chain, 0, u, v, Wrap::repeat, r);
+                glm::dvec4 cubic = reference_cubic(chain, 0, u, v, Wrap::repeat, r);
+                if (f == Filter::ewa) { // the cubic at u ± k·g·(1, ±1): J = g·I's diagonals, k² the weight's variance
+                    const double k = std::sqrt(reference_ewa_weight_variance(SamplerOptions{}.alpha)) * zoom.dudx;
+                    cubic = 0.25 * (reference_cubic(chain, 0, u + k, v + k, Wrap::repeat, r) +
+                                    reference_cubic(chain, 0, u - k, v - k, Wrap::repeat, r) +
+                                    reference_cubic(chain, 0, u + k, v - k, Wrap::repeat, r) +
+                                    reference_cubic(chain, 0, u - k, v + k, Wrap::repeat, r));
+                    const Lookup still{u, v, 0.0, 0.0, 0.0, 0.0}; // no footprint, no spread: the cubic itself
+                    at_magnification = std::max(at_magnification,
+                                                max_abs(reference_sample(chain, options_for(f, Wrap::repeat, r), still) -
+                                                        reference_cubic(chain, 0, u, v, Wrap::repeat, r)));
+                }
                 at_magnification = std::max(
                     at_magnification, max_abs(reference_sample(chain, options_for(f, Wrap::repeat, r), zoom) - cubic));
                 at_minification =

@@ -18,6 +18,7 @@
 #include "reference/reference.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -231,6 +232,50 @@ glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, c
                         [&](int level) {
                             return ewa_level(chain, level, fp, lookup, alpha, options.wrap, hardware, texels);
                         });
+}
+
+double reference_ewa_weight_variance(double alpha) {
+    // E[x²] of the radial weight over the disc r² < R², by Simpson's rule in u = r² (the weight's own
+    // definition, not a closed form): per axis, E[x²] = E[r²]/2, and the disc's area element is π du.
+    const double a = std::max(alpha, 1.0 / 64.0);
+    thread_local double cached_alpha = -1, cached_variance = 0; // one alpha a render: quadrature once
+    if (a == cached_alpha) return cached_variance;
+    constexpr int kIntervals = 8192; // alpha 64: 64 steps to the weight's e-fold, ~1e-9 relative error
+    double mass = 0, moment = 0;
+    for (int i = 0; i <= kIntervals; ++i) {
+        const double u = kSupport * i / kIntervals;
+        const double w = std::exp(-a * u) - std::exp(-a * kSupport);
+        const double simpson = (i == 0 || i == kIntervals) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+        mass += simpson * w;
+        moment += simpson * w * u;
+    }
+    cached_alpha = a;
+    cached_variance = 0.5 * moment / mass;
+    return cached_variance;
+}
+
+std::array<glm::dvec2, 4> reference_ewa_spread(const MipChain& chain, const SamplerOptions& options,
+                                               const Lookup& lookup) {
+    const double alpha = options.alpha >= 0.0f ? std::min(double(options.alpha), kMaxAlpha) : 0.0;
+    const double k = std::sqrt(reference_ewa_weight_variance(alpha));
+    glm::dvec2 a(lookup.dudx + lookup.dudy, lookup.dvdx + lookup.dvdy);
+    glm::dvec2 b(lookup.dudx - lookup.dudy, lookup.dvdx - lookup.dvdy);
+    // No spread unless (|dudx| + |dudy|)·width and (|dvdx| + |dvdy|)·height are within float range (below
+    // 2^128 - 2^103, where float rounds to Inf; false for NaN): the shader's one test on its float input.
+    const double overflow = 0x1p128 - 0x1p103;
+    const double sx = (std::abs(lookup.dudx) + std::abs(lookup.dudy)) * chain.levels[0].width;
+    const double sy = (std::abs(lookup.dvdx) + std::abs(lookup.dvdy)) * chain.levels[0].height;
+    if (!(sx < overflow && sy < overflow)) a = b = glm::dvec2(0.0);
+    return {k * a, -k * a, k * b, -k * b};
+}
+
+glm::dvec4 reference_ewa_magnified(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                                   const TexelSource& texels) {
+    glm::dvec4 sum(0.0);
+    for (const glm::dvec2 offset : reference_ewa_spread(chain, options, lookup))
+        sum += reference_magnified(chain, lookup.u + offset.x, lookup.v + offset.y, options.wrap, options.magnify,
+                                   options.taps, texels);
+    return 0.25 * sum;
 }
 
 } // namespace tf

@@ -187,11 +187,11 @@ glm::dvec4 reference_sample_texels(const MipChain& chain, const SamplerOptions& 
         return reference_aniso(chain, options, reduced, texels);
     case Filter::ewa: {
         // Magnification: level 0's trilinear share is the magnification filter's (bilinear or --magnify's cubic;
-        // a bilinear hardware tap through the texel source's tap where it has one: the cube's device taps).
+        // a bilinear hardware tap through the texel source's tap where it has one: the cube's device taps),
+        // integrated over the pixel's footprint (reference_ewa_magnified).
         const double share = magnified_share(chain, options, reduced);
         if (share == 0.0) return reference_ewa(chain, options, reduced, texels);
-        const glm::dvec4 magnified =
-            reference_magnified(chain, reduced.u, reduced.v, options.wrap, options.magnify, options.taps, texels);
+        const glm::dvec4 magnified = reference_ewa_magnified(chain, options, reduced, texels);
         return share == 1.0 ? magnified
                             : (1.0 - share) * reference_ewa(chain, options, reduced, texels) + share * magnified;
     }

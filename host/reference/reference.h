@@ -4,6 +4,9 @@
 #include "core/filter.h"
 #include "core/lookup.h"
 #include "texture/mip.h"
+
+#include <array>
+
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
@@ -93,6 +96,18 @@ glm::dvec4 reference_magnified(const MipChain& chain, double u, double v, Wrap w
 // The share of level 0 in trilinear at this lookup's LOD, 1 - clamp(lambda, 0, 1): how far ewa moves towards
 // the magnification filter of level 0 (bilinear, or --magnify's cubic; shaders/texfilter/ewa.glsl).
 double magnified_share(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+// ewa's magnification filter: the mean of reference_magnified at the four points uv + reference_ewa_spread:
+// the reconstruction convolved with a spread of the ellipse's own covariance (to second moments).
+glm::dvec4 reference_ewa_magnified(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                                   const TexelSource& texels = {});
+// The per-axis variance of ewa's weight exp(-alpha r²) - exp(-alpha R²) over r² < R² (R² = 2), in units
+// of its ellipse's M: 0.21 at alpha 2, 1/3 as alpha goes to 0 (alpha below 1/64 counts as 1/64).
+double reference_ewa_weight_variance(double alpha);
+// The four offsets of ewa's magnification points, k·J·(1, 1), -k·J·(1, 1), k·J·(1, -1), -k·J·(1, -1) (J the
+// lookup's gradients, k² = reference_ewa_weight_variance(alpha)): their covariance is k²·J·Jᵀ. All zero unless
+// (|dudx| + |dudy|)·width and (|dvdx| + |dvdy|)·height are within float range (NaN, ±Inf, huge: none).
+std::array<glm::dvec2, 4> reference_ewa_spread(const MipChain& chain, const SamplerOptions& options,
+                                               const Lookup& lookup);
 
 // Trilinear at a given LOD (clamped to [0, levels-1]): the building block of probes and hardware taps. Level 0
 // reconstructed by `finest` (--magnify), the others bilinearly.

@@ -7,6 +7,7 @@
 #include "texture/threads.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -224,10 +225,15 @@ glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Look
         const EwaFootprint fp = reference_ewa_footprint(chain, o, l);
         const double alpha = ewa_alpha(o);
         auto support_of = [&](int level) { return ewa_support(chain, level, fp, l.u, l.v, alpha); };
-        // Magnification (ewa.glsl): level 0's trilinear share is the bilinear magnification filter's.
+        // Magnification (ewa.glsl): level 0's trilinear share is the bilinear magnification filter's at four
+        // points spread over the footprint (reference_ewa_spread), a quarter of the share each.
         const double share = magnified_share(chain, o, l);
+        const std::array<glm::dvec2, 4> spread = reference_ewa_spread(chain, o, l);
         if (visit) {
-            if (share > 0.0) visit_bilinear(chain, 0, l.u, l.v, o.wrap, share, *visit, texels);
+            if (share > 0.0)
+                for (const glm::dvec2 d : spread) // moved back by whole periods, as the shader does
+                    visit_bilinear(chain, 0, reduce_uv(l.u + d.x, o.wrap), reduce_uv(l.v + d.y, o.wrap), o.wrap,
+                                   0.25 * share, *visit, texels);
             if (share < 1.0) visit_levels(fp.lod, 1.0 - share, [&](int level, double q) {
                 const std::vector<WeightedTexel> s = support_of(level);
                 double total = 0;
@@ -236,7 +242,12 @@ glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Look
             });
             return {};
         }
-        if (double(xi->z) < share) return pick_bilinear(chain, 0, l.u, l.v, o.wrap, *xi, texels);
+        if (double(xi->z) < share) { // the point as the shader picks it, in float: floor(4·xi.z / share)
+            const int point = int(std::min(std::floor(xi->z / float(share) * 4.0f), 3.0f));
+            const glm::dvec2 d = spread[size_t(point)];
+            return pick_bilinear(chain, 0, reduce_uv(l.u + d.x, o.wrap), reduce_uv(l.v + d.y, o.wrap), o.wrap, *xi,
+                                 texels);
+        }
         // The rest of xi.z, rescaled in float as the shader does.
         const float z = std::clamp((xi->z - float(share)) / (1.0f - float(share)), 0.0f, 0.99999994f);
         double rest;

@@ -15,10 +15,17 @@
 // Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as everywhere (common.glsl, lod.glsl). TF_MAGNIFY
 //   (common.glsl, bicubic.glsl): the magnification filter (below).
 // Magnification (issue 16): where trilinear would read level 0 (its λ = tf_lod < 1), the result moves towards
-//   the magnification filter's value of level 0 (bilinear, Vulkan's LINEAR magFilter, or TF_MAGNIFY's cubic)
+//   the magnification filter of level 0 (bilinear, Vulkan's LINEAR magFilter, or TF_MAGNIFY's cubic)
 //   by level 0's trilinear share, 1 − clamp(λ, 0, 1): that filter alone at λ <= 0, the ellipse alone from λ = 1.
 //   The ellipse's one-texel reconstruction term (M = J·Jᵀ + I) is a Gaussian of σ ½ texel, blurrier than the
 //   tent: on the zoom scene it cost 11.4 dB against the Gaussian truth and 3.5x the flicker (lavapipe, 128²).
+//   The magnification filter is integrated over the pixel's footprint: the mean of 4 of its lookups at
+//   uv ± k·(dUVdx + dUVdy) and uv ± k·(dUVdx − dUVdy), k² the weight's per-axis variance (0.21 at alpha 2),
+//   whose spread has the ellipse's own covariance k²·J·Jᵀ. It is the filter itself as the footprint vanishes
+//   (zero gradients). One lookup instead aliased like trilinear where the footprint spans about a texel
+//   (λ in (0, 1): the plane's near rows). Measured (lavapipe, 2026-12-03, 256², checker 512, Gaussian truth,
+//   against one lookup): plane 35.3 -> 36.2 dB and flicker 0.0064 -> 0.0024; zoom 49.8 -> 65.6 dB and
+//   0.0034 -> 0.0008; tunnel 38.2 -> 42.2 dB; minify and slanted unchanged.
 //          alpha (2, as pbrt, is the usual choice): weight exp(-alpha r²) - exp(-alpha R²), clamped to
 //            [0, 64]; NaN or negative -> 0 (then 1 - r²/R²). Smaller alpha = a wider Gaussian = blurrier.
 //          maxAniso (e.g. 16): largest major/minor axis ratio; a thinner ellipse has its minor axis
@@ -78,7 +85,9 @@
 //   footprints ~350 (at most ~600); at most K² = 9025 per level whatever the input. tf_ewa_hw: one
 //   lookup per 2x2 block touching the support (its weights are evaluated twice), ~0.35-0.4 of those reads as
 //   lookups (isotropic 12, 16:1 ~120). No early out for isotropic footprints: it is the same formula.
-//   Plane scene (docs/FILTERS.md): tf_ewa 73.5 fetches on average, tf_ewa_hw 26.0 lookups (R² = 1: 36.8, 14.6).
+//   Where λ < 1, the magnification filter adds 4 of its lookups (bilinear: 16 fetches or 4 taps).
+//   Plane scene (docs/FILTERS.md): tf_ewa 79.2 fetches on average, tf_ewa_hw 26.8 lookups (one magnification
+//   lookup: 73.5, 26.0; R² = 1: 36.8, 14.6).
 #ifndef TF_EWA_MAX_TEXELS
 #define TF_EWA_MAX_TEXELS 95
 #endif
@@ -108,6 +117,16 @@ struct tfi_EwaShape {
     float minor2;
     float m;      // 0 for zero or non-finite gradients: then M = I on every level
 };
+
+// Per-axis variance of the weight exp(-alpha r²) - exp(-alpha R²) over r² < R², in units of M (0.21 at alpha 2;
+// 1/3 as alpha -> 0): E[r²]/2 with u = r², both integrals in closed form.
+float tfi_ewa_weight_variance(float alpha)
+{
+    float a = max(alpha, 1.0 / 64.0), U = TF_EWA_SUPPORT, e = exp(-a * U);
+    float mass = (1.0 - e) / a - U * e;
+    float moment = (1.0 - e * (1.0 + a * U)) / (a * a) - 0.5 * U * U * e;
+    return 0.5 * moment / mass;
+}
 
 // r²/R² = xᵀ(R²M)⁻¹x for x = (dx, dy): below 1 inside the support.
 float tfi_ewa_r2(vec3 M, float det, float dx, float dy)
@@ -279,6 +298,21 @@ tfi_EwaShape tfi_ewa_shape(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float ma
     return shape;
 }
 
+// The magnification filter's spread (tfi_ewa_magnified): its four points are uv ± a and uv ± b, a and b
+// k·(dUVdx ± dUVdy) with k² the weight's variance, so that their covariance k²·J·Jᵀ is the ellipse's own.
+// None unless (|dUVdx| + |dUVdy|)·size is finite: NaN, ±Inf or a footprint past float range (that bounds
+// |a| and |b| too; one test, where four cost 75 SPIR-V instructions).
+void tfi_ewa_spread(TFI_T, vec2 dUVdx, vec2 dUVdy, float alpha, out vec2 a, out vec2 b)
+{
+    a = dUVdx + dUVdy;
+    b = dUVdx - dUVdy;
+    if (!tf_finite((abs(dUVdx) + abs(dUVdy)) * vec2(TFI_SIZE0)))
+        a = b = vec2(0.0);
+    float k = sqrt(tfi_ewa_weight_variance(alpha));
+    a *= k;
+    b *= k;
+}
+
 // The support ellipse on one level: R²·M = R²·(xx, xy, yy) in level texels², its determinant, and the
 // centre uv·size split into an integer texel index `base` and `frac` in [0, 1), so that texel offsets
 // from it are exact in float. For repeat/mirror, base is moved by a multiple of 2·size into
@@ -436,6 +470,22 @@ vec4 tfi_ewa_on_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShap
                     : tfi_ewa_level(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha);
 }
 
+// The magnification filter integrated over the pixel's footprint: the mean of four of its lookups at
+// uv ± a, uv ± b (tfi_ewa_spread), whose spread has the ellipse's own covariance, so that the kernel is the
+// reconstruction's convolved with the footprint's to second moments: plain bilinear (or the cubic) as the
+// footprint vanishes (zoom), the pixel's blur where it spans about a texel (the plane's near rows, where one
+// bilinear lookup aliased like trilinear's).
+vec4 tfi_ewa_magnified(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, int wrapMode, float alpha, bool hardware)
+{
+    vec2 a, b;
+    tfi_ewa_spread(TFI_A, dUVdx, dUVdy, alpha, a, b);
+    vec4 sum = vec4(0.0);
+    for (int i = 0; i < 4; ++i) // a loop, not 4 calls: the filter's code once (tools/spirv_size.sh)
+        sum += tfi_magnified_level0(TFI_A, uv + (i < 2 ? a : b) * ((i & 1) == 0 ? 1.0 : -1.0) TFI_XA, wrapMode,
+                                    hardware);
+    return 0.25 * sum;
+}
+
 vec4 tfi_ewa_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso,
                  bool hardware)
 {
@@ -446,7 +496,8 @@ vec4 tfi_ewa_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
     // Magnification: level 0's share in trilinear (1 − λ, λ trilinear's LOD) is the magnification filter's
     // (TF_MAGNIFY: bilinear, Vulkan's LINEAR magFilter, unless a cubic is asked for) instead of the ellipse.
     float magnifyShare = 1.0 - clamp(tf_lod(TFI_A, dUVdx, dUVdy, s), 0.0, 1.0);
-    vec4 magnified = magnifyShare > 0.0 ? tfi_magnified_level0(TFI_A, uv TFI_XA, s.wrap, hardware) : vec4(0.0);
+    vec4 magnified = magnifyShare > 0.0 ? tfi_ewa_magnified(TFI_A, uv TFI_XA, dUVdx, dUVdy, s.wrap, a, hardware)
+                                        : vec4(0.0);
     if (magnifyShare == 1.0)
         return magnified;
     float lambda;

@@ -32,7 +32,8 @@
 //          trilinear (aniso: the probe's) tap: E = the deterministic _hw form; bilinear's _hw form is the
 //          hardware bilinear tap itself, which needs no random number.
 //          ewa: first its magnification (ewa.glsl): xi.z < 1 − clamp(λ, 0, 1) (λ trilinear's LOD) reads the
-//          bilinear magnification filter's one texel of level 0 (_hw: its one tap), and the rest of xi.z, rescaled,
+//          bilinear magnification filter's one texel of level 0 (_hw: its one tap) at one of its 4 footprint
+//          points (tfi_ewa_spread; xi.z picks it, a quarter of the share each), and the rest of xi.z, rescaled,
 //          goes on; TF_MAGNIFY's cubics are not sampled (Catmull-Rom's weights are not probabilities). Then
 //          the ellipse's level as trilinear (xi.z < frac(λ): the coarser), then ONE texel of that level's support
 //          with probability w_i / Σw (its Gaussian weights exp(−αr²) − exp(−αR²), ewa.glsl), found by walking
@@ -302,18 +303,23 @@ vec4 tfi_ewa_stochastic_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sa
     xi = tfi_unit3(xi);
     uv = tf_reduce_uv(uv, s.wrap);
     float a = alpha >= 0.0 ? min(alpha, 64.0) : 0.0;
-    // Magnification (ewa.glsl): with probability level 0's trilinear share, the bilinear magnification filter's
-    // one texel (one tap); the rest of xi.z, rescaled, picks the ellipse's level.
+    // Magnification (ewa.glsl): with probability level 0's trilinear share, the bilinear magnification filter at
+    // one of its four spread points (tfi_ewa_magnified), a quarter of the share each, and there one texel (one
+    // tap); the rest of xi.z, rescaled, picks the ellipse's level.
     float magnifyShare = 1.0 - clamp(tf_lod(TFI_A, dUVdx, dUVdy, s), 0.0, 1.0);
     if (xi.z < magnifyShare) {
+        vec2 spreadA, spreadB;
+        tfi_ewa_spread(TFI_A, dUVdx, dUVdy, a, spreadA, spreadB);
+        float point = min(floor(xi.z / magnifyShare * 4.0), 3.0); // 0..3: +a, -a, +b, -b as in tfi_ewa_magnified
+        vec2 p = tf_reduce_uv(uv + (point < 2.0 ? spreadA : spreadB) * (mod(point, 2.0) == 0.0 ? 1.0 : -1.0), s.wrap);
 #if TFI_HW
         if (hardware) {
             TF_COUNT_HW_LOOKUPS(1);
-            return TFI_LOOKUP(uv, 0.0);
+            return TFI_LOOKUP(p, 0.0);
         }
 #endif
 #if TFI_CAN_FETCH
-        return tf_bilinear_stochastic_level(TFI_A, uv TFI_XA, 0, s.wrap, xi);
+        return tf_bilinear_stochastic_level(TFI_A, p TFI_XA, 0, s.wrap, xi);
 #else
         return vec4(0.0);
 #endif
