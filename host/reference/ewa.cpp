@@ -220,10 +220,14 @@ glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, cons
 
 } // namespace
 
+double reference_ewa_alpha(const SamplerOptions& options) {
+    return options.alpha >= 0.0f ? std::min(double(options.alpha), kMaxAlpha) : 0.0; // NaN and negative: 0
+}
+
 glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
                          const TexelSource& texels) {
     if (chain.levels.empty()) throw Error("reference_ewa: empty MIP chain");
-    const double alpha = options.alpha >= 0.0f ? std::min(double(options.alpha), kMaxAlpha) : 0.0;
+    const double alpha = reference_ewa_alpha(options);
     const bool hardware = options.taps == Taps::hardware;
     const Footprint fp = footprint(chain, options, lookup);
     const double lambda = clamp_lod(chain, fp.lambda, options);
@@ -256,7 +260,7 @@ double reference_ewa_weight_variance(double alpha) {
 
 std::array<glm::dvec2, 4> reference_ewa_spread(const MipChain& chain, const SamplerOptions& options,
                                                const Lookup& lookup) {
-    const double alpha = options.alpha >= 0.0f ? std::min(double(options.alpha), kMaxAlpha) : 0.0;
+    const double alpha = reference_ewa_alpha(options);
     const double k = std::sqrt(reference_ewa_weight_variance(alpha));
     glm::dvec2 a(lookup.dudx + lookup.dudy, lookup.dvdx + lookup.dvdy);
     glm::dvec2 b(lookup.dudx - lookup.dudy, lookup.dvdx - lookup.dvdy);

@@ -103,6 +103,8 @@ glm::dvec4 reference_ewa_magnified(const MipChain& chain, const SamplerOptions& 
 // The per-axis variance of ewa's weight exp(-alpha r²) - exp(-alpha R²) over r² < R² (R² = 2), in units
 // of its ellipse's M: 0.21 at alpha 2, 1/3 as alpha goes to 0 (alpha below 1/64 counts as 1/64).
 double reference_ewa_weight_variance(double alpha);
+// ewa's alpha as the shader clamps it: [0, 64], NaN and negative read as 0.
+double reference_ewa_alpha(const SamplerOptions& options);
 // The four offsets of ewa's magnification points, k·J·(1, 1), -k·J·(1, 1), k·J·(1, -1), -k·J·(1, -1) (J the
 // lookup's gradients, k² = reference_ewa_weight_variance(alpha)): their covariance is k²·J·Jᵀ. All zero unless
 // (|dudx| + |dudy|)·width and (|dvdx| + |dvdy|)·height are within float range (NaN, ±Inf, huge: none).

@@ -141,11 +141,6 @@ std::vector<WeightedTexel> ewa_support(const MipChain& chain, int level, const E
     return out;
 }
 
-double ewa_alpha(const SamplerOptions& options)
-{
-    return options.alpha >= 0.0f ? std::min(double(options.alpha), 64.0) : 0.0;
-}
-
 void check_reference_taps(const SamplerOptions& options)
 {
     if (options.filter == Filter::ewa && options.taps == Taps::hardware)
@@ -223,7 +218,7 @@ glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Look
     case Filter::ewa: {
         check_reference_taps(o);
         const EwaFootprint fp = reference_ewa_footprint(chain, o, l);
-        const double alpha = ewa_alpha(o);
+        const double alpha = reference_ewa_alpha(o);
         auto support_of = [&](int level) { return ewa_support(chain, level, fp, l.u, l.v, alpha); };
         // Magnification (ewa.glsl): level 0's trilinear share is the bilinear magnification filter's at four
         // points spread over the footprint (reference_ewa_spread), a quarter of the share each.
