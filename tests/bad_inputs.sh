@@ -250,6 +250,8 @@ bad_flag_values() {
         "${stoch[@]}" --stochastic white --accumulate 0 -o out.png
     expect_error "--accumulate 4097" "bad value for --accumulate: 4097" out.png -- \
         "${stoch[@]}" --stochastic white --accumulate 4097 -o out.png
+    expect_error "--accumulate 99999999999" "bad value for --accumulate: 99999999999 (expected 1..4096" out.png -- \
+        "${stoch[@]}" --stochastic white --accumulate 99999999999 -o out.png
     expect_error "--accumulate 2.5" "bad value for --accumulate: '2.5'" out.png -- \
         "${stoch[@]}" --stochastic white --accumulate 2.5 -o out.png
     expect_error "--accumulate without --stochastic" "--accumulate 8 needs --stochastic white|blue" out.png -- \
@@ -643,6 +645,8 @@ EOF
     rm -f out.png
     expect_error "--memory-budget bogus" --memory-budget out.png -- \
         "${render[@]}" --texture k1024.png --memory-budget lots -o out.png
+    expect_error "--memory-budget past any machine" "'99999999999999999999G' is out of range" out.png -- \
+        "${render[@]}" --texture k1024.png --memory-budget 99999999999999999999G -o out.png
     expect_error "diff over --memory-budget" "memory budget" diff.png -- \
         "$TEXFILTER" diff k1024.png k1024.png --memory-budget 1M -o diff.png
     write_constant_png oversize.png 4097 2

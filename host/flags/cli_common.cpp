@@ -145,7 +145,10 @@ SamplerOptions sampler_options_from(const Args& args)
         const long value = std::strtol(n.c_str(), &end, 10);
         if (n.empty() || *end != '\0')
             throw Error("bad value for --accumulate: '" + n + "' (expected a whole number of frames, 1..4096)");
-        options.accumulate = int(std::clamp(value, -1L, long(HARNESS_MAX_ACCUMULATE) + 1));
+        if (value < 1 || value > HARNESS_MAX_ACCUMULATE) // the text as given: 1e12 must not read as 4097
+            throw Error("bad value for --accumulate: " + n + " (expected 1.." + std::to_string(HARNESS_MAX_ACCUMULATE) +
+                        " frames)");
+        options.accumulate = int(value);
     }
     check_stochastic(options); // --accumulate's range, the filter, --magnify
     options.lod_bias = float(args.get_double("--lod-bias", 0.0, -16.0, 16.0));
