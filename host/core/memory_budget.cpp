@@ -69,7 +69,7 @@ uint64_t parse_byte_size(const std::string& text)
     const double bytes = value * unit;
     if (text.empty() || end == text.c_str() || unit == 0 || std::isnan(bytes))
         throw Error("'" + text + "' is not a size (a number of bytes, or with K, M, G or T: 512M, 8G)");
-    if (bytes < 1 || bytes > 1e18) // a size, but none a machine has
+    if (bytes < 1 || bytes > 1e18) // a number of bytes, but none a budget can be
         throw Error("'" + text + "' is out of range (expected 1 byte to 1e18 bytes, e.g. 512M, 8G)");
     return uint64_t(bytes);
 }

@@ -145,7 +145,7 @@ SamplerOptions sampler_options_from(const Args& args)
         const long value = std::strtol(n.c_str(), &end, 10);
         if (n.empty() || *end != '\0')
             throw Error("bad value for --accumulate: '" + n + "' (expected a whole number of frames, 1..4096)");
-        if (value < 1 || value > HARNESS_MAX_ACCUMULATE) // the text as given: 1e12 must not read as 4097
+        if (value < 1 || value > HARNESS_MAX_ACCUMULATE) // named as given: 99999999999 must not read as 4097
             throw Error("bad value for --accumulate: " + n + " (expected 1.." + std::to_string(HARNESS_MAX_ACCUMULATE) +
                         " frames)");
         options.accumulate = int(value);
