@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tools/gpu_bench.sh, the prepared real-GPU check, on this machine's device: what it refuses leaves the output
-# folder as it was, and a one-scene run at 32x32 brings back its six files with the goals judged. Timings are
-# never asserted (benchmarks, not timed tests).
+# folder as it was, benches cut off by the time limit make it exit 1, and a one-scene run at 32x32 brings back
+# its six files with the goals judged. Timings are never asserted (benchmarks, not timed tests).
 #
 # usage: gpu_bench_script.sh TEXFILTER REPO_ROOT
 set -uo pipefail
@@ -33,12 +33,20 @@ mkdir full && echo "keep me" >full/mine.txt
 expect_refusal "non-empty output folder" "the output folder is not empty" env TEXFILTER="$texfilter" "$script" full
 [[ "$(ls full)" == mine.txt && "$(cat full/mine.txt)" == "keep me" ]] || fail "non-empty output folder: it was changed"
 expect_refusal "no binary" "no texfilter binary" env TEXFILTER="$work/none" "$script" out1
+[[ ! -e out1 ]] || fail "no binary: it created the output folder"
 expect_refusal "no output folder" "no output folder" env -u OUT TEXFILTER="$texfilter" "$script"
 mkdir out2
 expect_refusal "unknown device" "no Vulkan device matches 'no-such-gpu'" \
     env TEXFILTER="$texfilter" TF_DEVICE=no-such-gpu "$script" out2
 [[ -z "$(ls -A out2)" ]] || fail "unknown device: it left $(ls out2) in the output folder"
+expect_refusal "unknown device, new folder" "no Vulkan device matches" \
+    env TEXFILTER="$texfilter" TF_DEVICE=no-such-gpu "$script" out3
+[[ ! -e out3 ]] || fail "unknown device: it created the output folder"
 
+env TEXFILTER="$texfilter" TF_DEVICE=llvmpipe TF_SCENES=plane TF_STAGE_LIMIT=1 "$script" cut >cut.log 2>&1
+rc=$?
+[[ $rc -eq 1 ]] && grep -qF "cut off by the 1 s limit: timing quality" cut.log ||
+    fail "benches cut off by the limit: exit $rc, expected 1 naming both ($(tail -2 cut.log))"
 env TEXFILTER="$texfilter" TF_DEVICE=llvmpipe TF_SCENES=plane TF_TIMING_SIZE=32x32 TF_QUALITY_SIZE=32x32 \
     "$script" run >run.log 2>&1 || fail "one-scene run: exit $? ($(tail -3 run.log))"
 for f in device.txt log.txt timing.json timing.csv quality.json quality.csv; do

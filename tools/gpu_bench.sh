@@ -13,7 +13,7 @@
 # truth sample, 2 path frames: its error columns are not a measurement), quality.json/.csv (the error and
 # flicker goals at the default 256 samples and 8 path frames) and log.txt. The benches' images stay in a
 # temporary folder that is removed at the end: six small files come back from a lent machine. Each bench has
-# its own time limit, so a slow one still leaves the other's results.
+# its own time limit, so a slow one still leaves the other's results; the exit status is 1 when either failed.
 # Then, here, read the goals with
 #     python3 -c 'import json,sys; [print(g["status"], "|", g["goal"], "|", g["measured"]) for g in json.load(open(sys.argv[1]))["goals"]]' OUTDIR/timing.json
 set -uo pipefail
@@ -28,8 +28,7 @@ scenes=${TF_SCENES:-plane,tunnel,zoom,minify,slanted,triangles,mesh}
 fail() { echo "gpu_bench: $*" >&2; exit 2; }
 [ -n "$out" ] || fail "no output folder (give one, or set OUT)"
 [ -x "$bin" ] || fail "$bin: no texfilter binary (build the lean preset first, or set TEXFILTER)"
-mkdir -p "$out" || fail "$out: cannot create the output folder"
-[ -z "$(ls -A "$out")" ] || fail "$out: the output folder is not empty (nothing in it is overwritten)"
+[ ! -e "$out" ] || [ -z "$(ls -A "$out")" ] || fail "$out: the output folder is not empty (nothing in it is overwritten)"
 work=$(mktemp -d) || fail "no temporary folder"
 trap 'rm -rf "$work"' EXIT
 
@@ -47,6 +46,7 @@ if ! "$bin" info --device "$device" >"$work/info.txt" 2>&1; then
     cat "$work/info.txt" >&2
     fail "no Vulkan device matches '$device' (TF_DEVICE)"
 fi
+mkdir -p "$out" || fail "$out: cannot create the output folder" # only once nothing is left to refuse
 {
     date -u '+%Y-%m-%d %H:%M:%S UTC'
     cat "$work/info.txt"
@@ -62,11 +62,13 @@ run_bench() { # name, bench arguments...
         >>"$log" 2>&1
     local rc=$?
     echo "== $name: exit $rc after $((SECONDS - started)) s" >>"$log"
+    [ "$rc" -eq 0 ] || failed="$failed $name"
     for ext in json csv; do
         [ -f "$work/$name/bench.$ext" ] && cp "$work/$name/bench.$ext" "$out/$name.$ext"
     done
-    return 0
+    return 0 # the other bench still runs
 }
+failed=
 
 # Speed: trilinear, brilinear and sat against hw-trilinear; aniso's two forms and EWA against hw-aniso16.
 run_bench timing --size "${TF_TIMING_SIZE:-1024x1024}" --spp 1 --flicker-frames 2 --warmup 5 --frames 20 \
@@ -75,3 +77,4 @@ run_bench timing --size "${TF_TIMING_SIZE:-1024x1024}" --spp 1 --flicker-frames 
 run_bench quality --size "${TF_QUALITY_SIZE:-512x512}" --warmup 1 --frames 3 \
     --filters trilinear,hw-trilinear,aniso16,aniso16-hw,hw-aniso16,ewa,ewa-hw
 tail -n 4 "$log"
+[ -z "$failed" ] || { echo "gpu_bench: failed or cut off by the ${limit} s limit:$failed (see $log)" >&2; exit 1; }
