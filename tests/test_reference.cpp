@@ -438,6 +438,15 @@ TEST_CASE("mip-chain")
     CHECK_EQ(wide.levels[1].height, 1);
     CHECK_EQ(wide.levels[8].width, 1);
     CHECK_EQ(wide.levels[8].height, 1);
+
+    // Texels that do not match the size are refused up front, a 1x1 level 0 (never downsampled) included.
+    tf::Image one_holding_five = tf::make_image(1, 1);
+    one_holding_five.texels.resize(5);
+    CHECK_THROWS_WITH(tf::build_mip_chain(one_holding_five), "1x1 image holding 5 texels");
+    tf::Image short_of_one = tf::make_image(4, 4);
+    short_of_one.texels.pop_back();
+    CHECK_THROWS_WITH(tf::build_mip_chain(short_of_one), "4x4 image holding 15 texels");
+    CHECK_THROWS_WITH(tf::build_mip_chain(tf::Image{}), "empty image");
 }
 
 TEST_CASE("srgb")

@@ -141,11 +141,20 @@ void downsample_into(const glm::vec4* src, int width, int height, glm::vec4* dst
     }
 }
 
+namespace {
+
+// Throws for an image whose texels do not match its size, or an empty one; `what` names the caller.
+void check_image(const Image& image, const char* what) {
+    if (image.texels.size() != size_t(std::max(0, image.width)) * size_t(std::max(0, image.height)))
+        throw Error(std::string(what) + ": a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                    " image holding " + std::to_string(image.texels.size()) + " texels");
+    if (image.width < 1 || image.height < 1) throw Error(std::string(what) + " of an empty image");
+}
+
+} // namespace
+
 Image downsample(const Image& source) {
-    if (source.texels.size() != size_t(std::max(0, source.width)) * size_t(std::max(0, source.height)))
-        throw Error("downsample: a " + std::to_string(source.width) + "x" + std::to_string(source.height) +
-                    " image holding " + std::to_string(source.texels.size()) + " texels");
-    if (source.width < 1 || source.height < 1) throw Error("downsample of an empty image");
+    check_image(source, "downsample");
     Image result;
     result.width = std::max(1, source.width >> 1);
     result.height = std::max(1, source.height >> 1);
@@ -155,7 +164,7 @@ Image downsample(const Image& source) {
 }
 
 MipChain build_mip_chain(Image level0) {
-    if (level0.width < 1 || level0.height < 1) throw Error("MIP chain of an empty image");
+    check_image(level0, "MIP chain"); // here too: a 1x1 level 0 is never downsampled
     MipChain chain;
     const int count = mip_level_count(level0.width, level0.height);
     chain.levels.reserve(size_t(count));

@@ -1,7 +1,7 @@
 #pragma once
 // texfilter::host: the tables texfilter's GLSL includes sample, built on the CPU. No Vulkan, no image files.
 //
-//   find_package(texfilter 0.4 REQUIRED)
+//   find_package(texfilter 0.9 REQUIRED)
 //   target_link_libraries(app PRIVATE texfilter::host)    // C++20, links glm and Threads
 //   #include <texfilter/host.h>
 //
