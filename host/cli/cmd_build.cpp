@@ -94,7 +94,7 @@ Built build_on_device(const VulkanContext& context, const TextureSource& source,
 int run_build(const std::vector<std::string>& argv)
 {
     std::vector<FlagSpec> specs = join(
-        {texture_flags(),
+        {texture_flags(BuildDefault::gpu),
          {{"--out", "DIR", "a new (or empty) directory: level-NN.pfm|exr, sat.bin with --sat, build.txt (required)"},
           {"--sat", "", "also the summed-area table (sat.bin; sides up to 4096)"},
           {"--level-format", "F", "pfm (linear float RGB, any build; default) or exr (RGBA half, needs image I/O)"}},

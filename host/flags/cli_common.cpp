@@ -9,8 +9,9 @@
 
 namespace tf {
 
-std::vector<FlagSpec> texture_flags()
+std::vector<FlagSpec> texture_flags(BuildDefault default_build)
 {
+    const bool gpu_default = default_build == BuildDefault::gpu;
     return {{"--texture", "T|PATH", "procedural texture (checker, zoneplate, grid, noise, mipcolors, dynamic) or an image file"},
             {"--texture-size", "N", "side of a procedural texture in texels (default 256)"},
             {"--texture-frame", "N", "--texture dynamic: its frame, 0..1000000 (default 0; the viewer animates it "
@@ -18,8 +19,10 @@ std::vector<FlagSpec> texture_flags()
             {"--linear", "", "the image file holds data/linear values: no sRGB decode"},
             {"--format", "F", "what the texture is uploaded as: " + texture_format_names() +
                                   " (default rgba32f; every level rounded to it, on both backends)"},
-            {"--build", "B", "where the MIP chain and summed-area table are built: cpu (the host, default) or gpu "
-                             "(level 0 uploaded, the rest built by the device; --backend vulkan)"},
+            {"--build", "B", std::string("where the MIP chain and summed-area table are built: cpu (the host") +
+                                 (gpu_default ? ")" : ", default)") +
+                                 " or gpu (level 0 uploaded, the rest built by the device" +
+                                 (gpu_default ? ", default)" : "; --backend vulkan)")},
             {"--memory-budget", "SIZE", "most host memory a texture may take (512M, 8G; default: half of physical "
                                         "memory); checked from the file's header before decoding"},
             {"--env", "E", "environment scenes (skybox, reflect): cube (default; a procedural name makes six faces of it, "

@@ -13,7 +13,10 @@ namespace tf {
 
 enum class Backend { vulkan, reference };
 
-std::vector<FlagSpec> texture_flags();
+// The texture flags; `default_build` is what --build's help names as the command's default (only `build`
+// defaults to the device's).
+enum class BuildDefault { cpu, gpu };
+std::vector<FlagSpec> texture_flags(BuildDefault default_build = BuildDefault::cpu);
 // The filter flags: for one lookup (sample) or, with the ground-truth and none filters and their flags, for
 // a scene's pixels (render, golden).
 enum class SamplerFlags { lookups, scenes };
