@@ -36,24 +36,22 @@ float tfi_clamp_lod_levels(float lambda, tf_Sampler s, int levels)
 
 // The two-level blend every filter that blends MIP levels shares (trilinear, brilinear, the aniso probes,
 // ewa). tfi_split_lod splits a clamped LOD into the finer level floor(lod), returned, and the coarser
-// level's weight frac(lod). TFI_BLEND_LEVELS(LEVEL, lo, w) is (1 − w)·LEVEL(lo) + w·LEVEL(lo + 1) for a
-// function-like macro LEVEL(l), the filter's value on level l; a level that weighs 0 is not evaluated, so
-// its fetches are not paid (λ on a level or clamped to the last one, or outside brilinear's band).
+// level's weight frac(lod).
 int tfi_split_lod(float lod, out float f)
 {
     float lo = floor(lod);
     f = lod - lo;
     return int(lo);
 }
-#define TFI_BLEND_LEVELS(LEVEL, lo, w) \
-    ((w) == 0.0 ? LEVEL(lo) : (w) == 1.0 ? LEVEL((lo) + 1) : mix(LEVEL(lo), LEVEL((lo) + 1), (w)))
-// TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w): the same value into the vec4 `result`, a statement, with each
-// level's lookup written once. SIMD implementations run both sides of a divergent branch (lavapipe runs every
-// side of every `if`, so the expression above cost four levels' fetches); a loop is the one construct they
-// leave early, once no lane needs another turn. So: the level that counts (lo, or lo + 1 where w is 1) on the
-// first turn, the coarser one on a second turn only where 0 < w < 1; a batch of lanes that all sit outside
-// brilinear's band, on a level or clamped to the last one pays one level's fetches, any other two (never four).
-// mix(LEVEL(lo), LEVEL(lo + 1), w) is formed as in TFI_BLEND_LEVELS: the same value, bit for bit.
+// TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w), a statement: (1 − w)·LEVEL(lo) + w·LEVEL(lo + 1), formed as
+// mix(LEVEL(lo), LEVEL(lo + 1), w), into the vec4 `result`, for a function-like macro LEVEL(l), the filter's
+// value on level l; a level that weighs 0 is not evaluated (λ on a level or clamped to the last one, or
+// outside brilinear's band). SIMD implementations run both sides of a divergent branch (lavapipe runs every
+// side of every `if`: `w == 0 ? L(lo) : w == 1 ? L(lo + 1) : mix(...)` cost four levels' fetches); a loop is
+// the one construct they leave early, once no lane needs another turn. So: the level that counts (lo, or
+// lo + 1 where w is 1) on the first turn, the coarser one on a second turn only where 0 < w < 1; a batch of
+// lanes that all sit outside brilinear's band, on a level or clamped to the last one pays one level's
+// fetches, any other two (never four).
 #define TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w)                                     \
     {                                                                                    \
         int tfi_turns = (w) > 0.0 && (w) < 1.0 ? 2 : 1;                                  \
