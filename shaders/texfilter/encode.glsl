@@ -27,8 +27,8 @@ uint tf_mip_unorm8(float v)
     const int exponent = int(bits >> 23) - 150; // v = mantissa · 2^exponent, exponent ≤ -23
     const uint product = ((bits & 0x7FFFFFu) | 0x800000u) * 255u;
     const int shift = -exponent;
-    if (shift >= 32)
-        return 0u;
+    if (shift >= 32) // v·255 < 1: 1 past the halfway 2^31 of a shift by 32 (v in [2^-9, 2^-8)), else 0
+        return shift == 32 && product > 0x80000000u ? 1u : 0u;
     uint q = product >> uint(shift);
     const uint rest = product - (q << uint(shift)), halfway = 1u << uint(shift - 1);
     if (rest > halfway || (rest == halfway && (q & 1u) != 0u))
