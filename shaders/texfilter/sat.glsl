@@ -158,7 +158,9 @@ tfi_SatAxis tfi_sat_axis(int i, int n, int wrapMode)
 }
 
 // One axis of the box [x0, x1): corners (i0, i0+1, i1, i1+1) and the weights of the three intervals
-// between them (first texel, whole texels, last texel) divided by the width.
+// between them (first texel, whole texels, last texel) divided by the width. Two neighbouring texels have
+// no whole texel between them: that interval weighs 0, not 1/width, which a box far narrower than a texel
+// across their edge would make +Inf (and Inf times its empty block's 0 a NaN).
 void tfi_sat_edges(float x0, float x1, out ivec4 corners, out vec3 weights)
 {
     float f0 = floor(x0);
@@ -168,7 +170,7 @@ void tfi_sat_edges(float x0, float x1, out ivec4 corners, out vec3 weights)
     if (l1 == f0) // one texel, or a zero-width box: the texel under x0
         weights = vec3(1.0, 0.0, 0.0);
     else
-        weights = vec3(f0 + 1.0 - x0, 1.0, x1 - l1) / (x1 - x0);
+        weights = vec3(f0 + 1.0 - x0, l1 > f0 + 1.0 ? 1.0 : 0.0, x1 - l1) / (x1 - x0);
 }
 
 // Moves uv by whole periods into [0, 1) (repeat) or [0, 2) (mirror): changes nothing (and is exact in
@@ -183,12 +185,13 @@ vec2 tfi_sat_period(vec2 uv, int wrapMode)
 }
 
 // The footprint's columns J·e_x, J·e_y in level-0 texels times exp2(lodBias), components clamped to
-// ±2^24. False for non-finite gradients.
+// ±2^24. False for non-finite gradients or a footprint entry (gradient · size) past float range, as in
+// every family (docs/API.md "Degenerate input"): the caller then takes the whole texture's mean.
 bool tfi_sat_columns(ivec2 size, vec2 dUVdx, vec2 dUVdy, float lodBias, out vec2 jx, out vec2 jy)
 {
     jx = vec2(0.0);
     jy = vec2(0.0);
-    if (!tf_finite(dUVdx) || !tf_finite(dUVdy))
+    if (!tf_finite(dUVdx * vec2(size)) || !tf_finite(dUVdy * vec2(size))) // NaN and ±Inf gradients too
         return false;
     vec2 m = vec2(size) * exp2(lodBias);
     jx = clamp(dUVdx * m, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
