@@ -250,11 +250,11 @@ std::vector<Lookup> as_float(std::vector<Lookup> lookups)
     return lookups;
 }
 
-void write_lookups_csv(const fs::path& path, const std::vector<Lookup>& lookups, bool float_values)
+void write_lookups_csv(const fs::path& path, const std::vector<Lookup>& lookups, bool float_values, int digits)
 {
     std::ofstream out(path);
     out << "u,v,dudx,dvdx,dudy,dvdy\n";
-    out.precision(9);
+    out.precision(digits);
     for (const Lookup& row : lookups) {
         const Lookup l = float_values ? as_float(row) : row;
         out << l.u << "," << l.v << "," << l.dudx << "," << l.dvdx << "," << l.dudy << "," << l.dvdy << "\n";

@@ -114,10 +114,11 @@ std::vector<Lookup> random_footprint_lookups(int count, unsigned seed, const Foo
 Lookup as_float(const Lookup& l);
 std::vector<Lookup> as_float(std::vector<Lookup> lookups);
 
-// Header u,v,dudx,dvdx,dudy,dvdy, 9 digits a value: by default the values as float, the numbers the GPU
-// sees; float_values false writes them as given (`--backend reference` reads them as double).
+// Header u,v,dudx,dvdx,dudy,dvdy, `digits` significant digits a value (9: every float exactly): by default
+// the values as float, the numbers the GPU sees; float_values false writes them as given (`--backend
+// reference` reads them as double: 17 digits give it every double exactly).
 void write_lookups_csv(const std::filesystem::path& path, const std::vector<Lookup>& lookups,
-                       bool float_values = true);
+                       bool float_values = true, int digits = 9);
 
 struct SampleResult {
     std::vector<glm::dvec4> colors;

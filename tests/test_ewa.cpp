@@ -683,6 +683,8 @@ void check_non_finite() {
 //   bilinear ignore gradients (the zero-gradient result);
 // - uv 1e37, 1e38, 3e38, -3e38 (finite floats: even integers) give what uv reduced by the wrap gives:
 //   u = 0 for repeat, u = 2 or -1 for clamp (the same texels, whatever uv·size would be);
+// - an 8:1 footprint at u = 1000000.3125 gives what it gives at u = 0.3125 (repeat) or 2 (clamp), and a huge
+//   footprint at u = 3.4e38 the 1x1 level's mean (mip families; sat with repeat);
 // - uv 1e100 (past float range: +Inf to the GPU), ±Inf, NaN give (0, 0, 0, 0).
 // Tolerances: 1e-5 (float vs double on footprints of a texel or flat results); hardware-tap forms add
 // the sampler's weight rounding 3·2^-bits (contrast 1, as test_hw_vs_manual); sat its 16-bit
@@ -707,8 +709,18 @@ void check_degenerate_all_families(int bits) {
     for (double u : gone) lookups.push_back({0.3, u, t, 0, 0, t}); // v too
     const size_t reduced = lookups.size(); // u = 0, 2, -1 (what the huge uv reduce to)
     for (double u : {0.0, 2.0, -1.0}) lookups.push_back({u, 0.6, t, 0, 0, t});
+    // A long footprint (8:1) at a large uv (an exact float) gives what it gives at the reduced uv: aniso's
+    // probe offsets were once added to the large uv and lost to its rounding (to 1/16 at 1e6).
+    const size_t long_far = lookups.size();
+    lookups.push_back({1000000.3125, 0.6, 8 * t, 0, 0, t});
+    lookups.push_back({0.3125, 0.6, 8 * t, 0, 0, t}); // repeat's reduction
+    lookups.push_back({2.0, 0.6, 8 * t, 0, 0, t}); // clamp's: past the edge, as 1000000.3125 is
+    // A huge footprint near float's range: the coarsest level's mean; aniso's probes once overflowed to
+    // ±Inf there and counted as (0, 0, 0, 0).
+    const size_t near_max = lookups.size();
+    lookups.push_back({3.4e38, 0.5, 1.3e36, 0, 0, 1e34});
     const std::string in = (g_work / "degenerate.csv").string();
-    test::write_lookups_csv(in, lookups, false);
+    test::write_lookups_csv(in, lookups, false, 17); // 1000000.3125 has 11 digits
     struct Family {
         std::string flags;
         bool mip, hardware, sat;
@@ -759,6 +771,8 @@ void check_degenerate_all_families(int bits) {
                 for (size_t k = 0; k < huge.size(); ++k)
                     expect(first_uv + k, c[reduced + (wrap == "repeat" ? 0 : huge[k] > 0 ? 1 : 2)]);
                 for (size_t row = first_gone; row < reduced; ++row) expect(row, glm::dvec4(0.0));
+                expect(long_far, c[long_far + (wrap == "repeat" ? 1 : 2)]);
+                if (f.mip || (f.sat && wrap == "repeat")) expect(near_max, mean); // sat clamp: a box W x H at u = 2
             }
             for (size_t row = 0; row < lookups.size(); ++row) {
                 all_finite = all_finite && finite(gpu_run.colors[row]) && finite(ref_run.colors[row]);

@@ -88,9 +88,18 @@ AnisoProbes reference_aniso_probes(const MipChain& chain, const SamplerOptions& 
                                                      : gpu_probes(chain, options, lookup, max_n);
 }
 
-glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+double reference_aniso_centre(double u, double axis, Wrap wrap) {
+    if (wrap != Wrap::clamp) return reduce_uv(u, wrap);
+    const double h = 0.5 * std::abs(axis);
+    return std::clamp(u, -1.0 - h, 2.0 + h);
+}
+
+glm::dvec4 reference_aniso(const MipChain& chain, const SamplerOptions& options, const Lookup& given,
                            const TexelSource& texels) {
-    const AnisoProbes p = reference_aniso_probes(chain, options, lookup);
+    const AnisoProbes p = reference_aniso_probes(chain, options, given);
+    Lookup lookup = given;
+    lookup.u = reference_aniso_centre(given.u, p.axis.x, options.wrap);
+    lookup.v = reference_aniso_centre(given.v, p.axis.y, options.wrap);
     glm::dvec4 sum(0.0);
     double weights = 0;
     for (int k = 0; k < p.count; ++k) {

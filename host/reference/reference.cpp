@@ -183,8 +183,8 @@ glm::dvec4 reference_sample_texels(const MipChain& chain, const SamplerOptions& 
         return reference_trilinear_at(chain, clamp_lod(chain, reference_lod(chain, reduced, options), options),
                                       reduced.u, reduced.v, options.wrap, texels,
                                       options.filter == Filter::trilinear ? options.magnify : Reconstruction::bilinear);
-    case Filter::aniso:
-        return reference_aniso(chain, options, reduced, texels);
+    case Filter::aniso: // its centre is placed by reference_aniso_centre, each probe reduced again
+        return reference_aniso(chain, options, lookup, texels);
     case Filter::ewa: {
         // Magnification: level 0's trilinear share is the magnification filter's (bilinear or --magnify's cubic;
         // a bilinear hardware tap through the texel source's tap where it has one: the cube's device taps),

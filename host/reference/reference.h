@@ -137,6 +137,10 @@ struct AnisoProbes {
     bool gaussian = false;
 };
 AnisoProbes reference_aniso_probes(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+// The probes' centre on one axis, before their offsets: u by whole periods (repeat, mirror), or clamped to
+// [-1 - h, 2 + h] with h = |axis|/2 (clamp): every probe past the edge it was past, the rest unmoved, and
+// none past float range (reduce_uv's [-1, 2] would move a long footprint that reaches into the texture).
+double reference_aniso_centre(double u, double axis, Wrap wrap);
 
 // ewa's footprint (reference/ewa.cpp): the covariance J·Jᵀ in level-0 texels² with its minor axis grown to
 // major / max_aniso (all zero for zero or non-finite gradients), and the LOD it reads, biased and clamped.

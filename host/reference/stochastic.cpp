@@ -148,7 +148,7 @@ void check_reference_taps(const SamplerOptions& options)
                     "use --taps manual or --backend vulkan");
 }
 
-// Both halves of every family: pick (xi given) or visit (xi null). uv is finite and reduced.
+// Both halves of every family: pick (xi given) or visit (xi null). uv is finite and reduced (reduced()).
 glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Lookup& l, const Xi* xi, const Visit* visit,
                       const TexelSource& texels)
 {
@@ -176,8 +176,9 @@ glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Look
     case Filter::aniso: {
         const AnisoProbes probes = reference_aniso_probes(chain, o, l);
         const auto weights = probe_weights(probes);
+        const double cu = reference_aniso_centre(l.u, probes.axis.x, o.wrap), cv = reference_aniso_centre(l.v, probes.axis.y, o.wrap);
         auto at = [&](double t, double& u, double& v) {
-            u = reduce_uv(l.u + t * probes.axis.x, o.wrap), v = reduce_uv(l.v + t * probes.axis.y, o.wrap);
+            u = reduce_uv(cu + t * probes.axis.x, o.wrap), v = reduce_uv(cv + t * probes.axis.y, o.wrap);
         };
         if (visit) {
             for (const auto& [t, w] : weights) {
@@ -264,10 +265,12 @@ glm::dvec4 run_family(const MipChain& chain, const SamplerOptions& o, const Look
     throw Error("--stochastic applies to bilinear, trilinear, aniso and ewa, not to --filter " + to_string(o.filter));
 }
 
-Lookup reduced(const Lookup& lookup, Wrap wrap)
+// uv by whole periods (clamp: to [-1, 2]); aniso places its centre itself (reference_aniso_centre).
+Lookup reduced(const Lookup& lookup, const SamplerOptions& options)
 {
+    if (options.filter == Filter::aniso) return lookup;
     Lookup r = lookup;
-    r.u = reduce_uv(lookup.u, wrap), r.v = reduce_uv(lookup.v, wrap);
+    r.u = reduce_uv(lookup.u, options.wrap), r.v = reduce_uv(lookup.v, options.wrap);
     return r;
 }
 
@@ -278,7 +281,7 @@ glm::dvec4 reference_stochastic_sample(const MipChain& chain, const SamplerOptio
 {
     if (chain.levels.empty()) throw Error("reference_stochastic_sample: empty MIP chain");
     if (!finite_uv(lookup)) return glm::dvec4(0.0);
-    return run_family(chain, options, reduced(lookup, options.wrap), &xi, nullptr, texels);
+    return run_family(chain, options, reduced(lookup, options), &xi, nullptr, texels);
 }
 
 StochasticMoments reference_stochastic_moments(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
@@ -292,7 +295,7 @@ StochasticMoments reference_stochastic_moments(const MipChain& chain, const Samp
         m.mean += p * t;
         sum2 += p * t * t;
     };
-    run_family(chain, options, reduced(lookup, options.wrap), nullptr, &visit, texels);
+    run_family(chain, options, reduced(lookup, options), nullptr, &visit, texels);
     m.variance = glm::max(sum2 - m.mean * m.mean, glm::dvec4(0.0));
     return m;
 }

@@ -78,6 +78,17 @@ int tfi_aniso_count(float ratio, int maxN)
     return ratio < float(maxN) ? max(1, int(ceil(ratio - TF_ANISO_RATIO_SLACK))) : maxN;
 }
 
+// The probes' centre, moved before their offsets are added (each probe is reduced again), so that a large
+// uv's rounding does not swallow the offsets (at uv = 1e5 they moved by 1/128) and no probe overflows near
+// float's range. Repeat and mirror: by whole periods (tf_reduce_uv; exact). Clamp: to [−1 − h, 2 + h],
+// h = |axis|/2, which leaves every probe past the edge it was past (the same edge texels) and the rest
+// where they were; tf_reduce_uv's [−1, 2] would move a long footprint that reaches into the texture.
+vec2 tfi_aniso_centre(vec2 uv, vec2 axis, int wrapMode)
+{
+    vec2 h = 0.5 * abs(axis);
+    return wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0 - h, 2.0 + h) : uv - 2.0 * roundEven(0.5 * uv);
+}
+
 #define TFI_FAMILY TFI_FAMILY_ANISO
 #include "instantiate.glsl"
 #undef TFI_FAMILY
@@ -176,6 +187,7 @@ vec4 tfi_aniso_filter(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s
     if (!tf_finite(uv))
         return vec4(0.0);
     tfi_AnisoFootprint fp = tfi_aniso_footprint(TFI_A, dUVdx, dUVdy, s, maxProbes, shape);
+    uv = tfi_aniso_centre(uv, fp.axis, s.wrap);
     if (fp.probes == 1)
         return hardware ? tfi_aniso_probe_hw(TFI_A, uv TFI_XA, fp.lod, s.wrap) : tfi_aniso_probe(TFI_A, uv TFI_XA, fp.lod, s.wrap);
     vec4 sum = vec4(0.0);

@@ -276,6 +276,7 @@ vec4 tfi_aniso_stochastic_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_
         return vec4(0.0);
     xi = tfi_unit3(xi);
     tfi_AnisoFootprint fp = tfi_aniso_footprint(TFI_A, dUVdx, dUVdy, s, maxProbes, shape);
+    uv = tfi_aniso_centre(uv, fp.axis, s.wrap); // as tf_aniso (aniso.glsl)
     vec2 p = uv;
     if (fp.probes > 1) {
         float rest;
