@@ -485,7 +485,15 @@ golden_output_directory() {
     expect_error "golden --out with a tampered marker" "not a file below its directory" - -- \
         "$TEXFILTER" golden --case "$case_name" --out tampered
     [[ -e outside.txt ]] || fail "golden --out with a tampered marker" "removed ../outside.txt"
-    rm -rf theirs ours tampered outside.txt
+    # Nor through a symbolic link: a listed path whose folder is a link is refused, the link and its target kept.
+    mkdir -p elsewhere linked && echo keep >elsewhere/x.png && ln -s ../elsewhere linked/actual
+    printf '%s\nactual/x.png\n' "$GOLDEN_MARKER_HEADING" >linked/.texfilter-golden
+    expect_error "golden --out with a marker listing a file through a symlink" "linked/actual is a symbolic link" - -- \
+        "$TEXFILTER" golden --case "$case_name" --out linked
+    if [[ $(cat elsewhere/x.png 2>/dev/null) != keep || ! -L linked/actual ]]; then
+        fail "golden --out with a marker listing a file through a symlink" "removed elsewhere/x.png or the link"
+    fi
+    rm -rf theirs ours tampered outside.txt elsewhere linked
 }
 
 # Issue 10, item 2: an output is never one of the inputs; read-only files and links behave as documented.

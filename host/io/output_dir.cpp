@@ -27,6 +27,23 @@ bool safe_relative(const std::string& relative)
     return true;
 }
 
+// The first part of `relative` below `root` that is a symbolic link, or "" if none: a listed file is removed
+// only where the directory itself holds it, never through a link, which could lead anywhere.
+std::string linked_part(const std::string& root, const std::string& relative)
+{
+    fs::path p = root;
+    for (const fs::path& part : fs::path(relative)) {
+        p /= part;
+        std::error_code ec;
+        const fs::file_status status = fs::symlink_status(p, ec);
+        if (fs::is_symlink(status))
+            return p.string();
+        if (!fs::is_directory(status))
+            break; // nothing below it to reach
+    }
+    return "";
+}
+
 void write_marker(const OwnedDirectory& directory)
 {
     std::string text = heading(directory.command) + "\n";
@@ -35,8 +52,9 @@ void write_marker(const OwnedDirectory& directory)
     write_file_atomic(directory.marker, text);
 }
 
-// The files an earlier run listed; throws if the marker is not ours.
-std::vector<std::string> read_marker(const std::string& marker, const std::string& command)
+// The files an earlier run listed in root's marker; throws, before anything is removed, if the marker is not
+// ours or lists a path that leaves root.
+std::vector<std::string> read_marker(const std::string& root, const std::string& marker, const std::string& command)
 {
     std::ifstream in(marker);
     std::string line;
@@ -48,6 +66,9 @@ std::vector<std::string> read_marker(const std::string& marker, const std::strin
             if (!safe_relative(line))
                 throw Error(marker + ": lists '" + line.substr(0, 60) +
                             "', which is not a file below its directory; nothing was touched");
+            if (const std::string link = linked_part(root, line); !link.empty())
+                throw Error(marker + ": lists '" + line.substr(0, 60) + "', but " + link +
+                            " is a symbolic link (texfilter never removes through one); nothing was touched");
             files.push_back(line);
         }
     return files;
@@ -62,7 +83,8 @@ void remove_listed(const std::string& root, const std::vector<std::string>& file
             fs::remove(p, ec);
         // The folders the files were in go too, once empty (fs::remove leaves a non-empty one alone).
         for (fs::path dir = fs::path(f).parent_path(); !dir.empty(); dir = dir.parent_path())
-            fs::remove(fs::path(root) / dir, ec);
+            if (fs::is_directory(fs::symlink_status(fs::path(root) / dir, ec))) // a link is never removed
+                fs::remove(fs::path(root) / dir, ec);
     }
 }
 
@@ -86,7 +108,7 @@ OwnedDirectory claim_directory(const std::string& path, const std::string& comma
         throw Error(what + ": exists and is not a directory");
     } else if (fs::exists(fs::symlink_status(directory.marker, ec))) {
         check_writable_directory(path, what);
-        remove_listed(path, read_marker(directory.marker, command));
+        remove_listed(path, read_marker(path, directory.marker, command));
     } else if (!fs::is_empty(path, ec) || ec) {
         throw Error(what + ": exists, is not empty and was not made by texfilter " + command +
                     " (no " + fs::path(directory.marker).filename().string() +
