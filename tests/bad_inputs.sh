@@ -423,6 +423,17 @@ golden_errors() {
         copied/texfilter golden --update --case "$(awk '!/^#/ && NF { print $1; exit }' "$GOLDEN_DIR/manifest.txt")" \
         --out golden-out
     rm -rf copied
+    # A case name becomes --golden-dir/NAME.png: one that is a path (or hidden) is refused as the manifest is
+    # read, naming file, line and name, before anything is rendered or written.
+    mkdir -p named-golden
+    local name
+    for name in ../evil "$WORK/evil" sub/evil .evil; do
+        printf '%s zoom checker nearest size=16x16 texture-size=16\n' "$name" >named-golden/manifest.txt
+        expect_error "golden --update, case name '${name/#"$WORK"/\$WORK}'" "named-golden/manifest.txt:1: case name '$name'" \
+            evil.png -- "$TEXFILTER" golden --golden-dir named-golden --update
+    done
+    [[ -z $(find named-golden -name '*.png') ]] || fail "golden --update with a bad case name" "wrote $(find named-golden -name '*.png')"
+    rm -rf named-golden evil.png
 }
 
 vulkan_errors() {

@@ -2,11 +2,28 @@
 #include "core/analytic_texture.h"
 #include "flags/cli_common.h"
 #include "texture/error.h"
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
 namespace tf {
+
+namespace {
+
+// A case's name is a file name (--golden-dir/NAME.png, --out's actual/NAME.png), never a path: letters, digits
+// and . _ + - (the manifest's names use all of them), starting with a letter or digit, so never hidden or "..".
+bool plain_case_name(const std::string& name)
+{
+    if (name.empty() || name.size() > max_case_name || !std::isalnum(static_cast<unsigned char>(name[0])))
+        return false;
+    for (unsigned char ch : name)
+        if (!std::isalnum(ch) && ch != '.' && ch != '_' && ch != '+' && ch != '-')
+            return false;
+    return true;
+}
+
+} // namespace
 
 std::vector<GoldenCase> read_manifest(const std::string& path)
 {
@@ -44,6 +61,9 @@ std::vector<GoldenCase> parse_manifest(std::istream& in, const std::string& path
                 throw Error(where + ": expected key=value, got '" + words[i] + "'");
             argv.push_back("--" + words[i]);
         }
+        if (!plain_case_name(words[0]))
+            throw Error(where + ": case name '" + words[0] + "' is not a plain file name (up to " +
+                        std::to_string(max_case_name) + " letters, digits and . _ + -, starting with a letter or digit)");
         GoldenCase c;
         c.name = words[0];
         try {

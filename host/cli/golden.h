@@ -23,7 +23,11 @@ struct GoldenCase {
     DiffThresholds thresholds{0.0025, 0.0, 0.0025};
 };
 
-// One case a line: NAME SCENE TEXTURE FILTER [key=value ...]; keys are the render command's flags
+// The longest case name: NAME.png (and gpu-build/NAME.png under --out) stays within a file name's 255 bytes.
+constexpr size_t max_case_name = 200;
+
+// One case a line: NAME SCENE TEXTURE FILTER [key=value ...] (NAME: letters, digits and . _ + -, starting
+// with a letter or digit: a file name, not a path); keys are the render command's flags
 // without "--" (wrap, lod-bias, texture-size, band, probes, taps, ...) plus size (WxH), fail,
 // failpercent, hardfail. '#' starts a comment. Throws naming file:line.
 std::vector<GoldenCase> read_manifest(const std::string& path);
