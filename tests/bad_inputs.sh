@@ -433,7 +433,16 @@ golden_errors() {
             evil.png -- "$TEXFILTER" golden --golden-dir named-golden --update
     done
     [[ -z $(find named-golden -name '*.png') ]] || fail "golden --update with a bad case name" "wrote $(find named-golden -name '*.png')"
-    rm -rf named-golden evil.png
+    # A read-only golden is refused as render -o refuses a read-only output: kept, and found before any render.
+    mkdir -p readonly-golden
+    printf '%s zoom checker nearest size=16x16 texture-size=16\n' a b >readonly-golden/manifest.txt
+    echo keep >readonly-golden/b.png && chmod 444 readonly-golden/b.png
+    expect_error "golden --update a read-only golden" "readonly-golden/b.png: is read-only" readonly-golden/a.png -- \
+        "$TEXFILTER" golden --golden-dir readonly-golden --update
+    if ! cmp -s readonly-golden/b.png <(echo keep) || [[ $(stat -c %a readonly-golden/b.png) != 444 ]]; then
+        fail "golden --update a read-only golden" "the read-only golden was replaced"
+    fi
+    rm -rf named-golden readonly-golden evil.png
 }
 
 vulkan_errors() {
@@ -473,6 +482,18 @@ golden_output_directory() {
         $'keep\nkeep\nkeep' ]]; then
         fail "golden --out a directory it did not make" "files in it were changed or removed"
     fi
+    # A golden image that is missing, truncated or of another size than its case is found before --out is made.
+    mkdir -p bad-golden
+    printf 'tiny zoom checker nearest size=16x16 texture-size=16\n' >bad-golden/manifest.txt
+    expect_error "golden with a missing golden image" "bad-golden/tiny.png" golden-out -- \
+        "$TEXFILTER" golden --golden-dir bad-golden --out golden-out
+    head -c 100 ok.png >bad-golden/tiny.png
+    expect_error "golden with a truncated golden image" "bad-golden/tiny.png" golden-out -- \
+        "$TEXFILTER" golden --golden-dir bad-golden --out golden-out
+    write_constant_png bad-golden/tiny.png 8 8
+    expect_error "golden with a golden image of another size" "bad-golden/tiny.png: is 8x8" golden-out -- \
+        "$TEXFILTER" golden --golden-dir bad-golden --out golden-out
+    rm -rf bad-golden
     # A marked directory is reused: the files its marker lists go, a file someone added stays.
     if ! "$TEXFILTER" info >/dev/null 2>&1; then
         skip "golden --out its own marked directory" "no usable Vulkan device here"

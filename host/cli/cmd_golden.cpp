@@ -50,10 +50,29 @@ struct GoldenRun {
     std::vector<GoldenCase> cases;
 };
 
+std::string golden_path(const GoldenRun& run, const GoldenCase& c) { return run.golden_dir + "/" + c.name + ".png"; }
+
+// The golden a case is compared with, whole (a truncated file fails here) and of the case's size.
+Image read_golden(const GoldenRun& run, const GoldenCase& c)
+{
+    const std::string path = golden_path(run, c);
+    Image golden = read_image_raw(path);
+    if (golden.width != c.width || golden.height != c.height)
+        throw Error(path + ": is " + std::to_string(golden.width) + "x" + std::to_string(golden.height) +
+                    ", the case renders " + std::to_string(c.width) + "x" + std::to_string(c.height) +
+                    " (run texfilter golden --update)");
+    return golden;
+}
+
 void update_goldens(const GoldenRun& run)
 {
-    for (const GoldenCase& c : run.cases) {
-        std::string path = run.golden_dir + "/" + c.name + ".png";
+    // Every golden checked before any render, as render -o checks its output: a read-only one is kept.
+    std::vector<std::string> paths;
+    for (const GoldenCase& c : run.cases)
+        paths.push_back(checked_output_path(golden_path(run, c), {".png"}, {c.texture.name_or_path}));
+    for (size_t i = 0; i < run.cases.size(); ++i) {
+        const GoldenCase& c = run.cases[i];
+        const std::string& path = paths[i];
         if (is_environment_scene(c.scene)) {
             const EnvironmentMap env = load_environment(c.texture);
             SceneParams scene = make_scene(c.scene, c.width, c.height, environment_size(env));
@@ -90,6 +109,11 @@ std::vector<std::string> split_list_of_builds(const std::string& text)
 
 int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
 {
+    // Every golden read before the device opens and --out is claimed, so that a missing, truncated or
+    // wrong-sized one leaves nothing behind; each is read again when compared (all at once would hold a
+    // MiB of floats per 256x256 case).
+    for (const GoldenCase& c : run.cases)
+        read_golden(run, c);
     GpuSession gpu(context_options);
     // Claimed before any case runs (and after the device opened, so that a machine without one is left as it was).
     OwnedDirectory out = claim_directory(run.out_dir, "golden");
@@ -132,12 +156,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
                                   [&](auto& t) { return gpu_render(gpu.context, t, scene, c.sampler, c.render, pipelines.get()); });
         }
 
-        std::string golden_path = run.golden_dir + "/" + c.name + ".png";
-        Image golden = read_image_raw(golden_path);
-        if (golden.width != c.width || golden.height != c.height)
-            throw Error(golden_path + ": is " + std::to_string(golden.width) + "x" + std::to_string(golden.height) +
-                        ", the case renders " + std::to_string(c.width) + "x" + std::to_string(c.height) +
-                        " (run texfilter golden --update)");
+        Image golden = read_golden(run, c);
         Image encoded = encode_srgb(actual);
         DiffResult result = diff_images(encoded, golden, c.thresholds);
         ReportCase entry{label, result.pass, describe(result, c.thresholds), "", "", ""};
@@ -151,7 +170,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
                 fs::create_directories(fs::path(run.out_dir) / fs::path(*file).parent_path());
             }
             write_image(run.out_dir + "/" + entry.actual_png, actual);
-            fs::copy_file(golden_path, run.out_dir + "/" + entry.golden_png, fs::copy_options::overwrite_existing);
+            fs::copy_file(golden_path(run, c), run.out_dir + "/" + entry.golden_png, fs::copy_options::overwrite_existing);
             // Amplified so that one 8-bit step shows; the diff is of sRGB-encoded values.
             write_image(run.out_dir + "/" + entry.diff_png, diff_image(encoded, golden, 32.0));
         }
