@@ -525,7 +525,15 @@ golden_output_directory() {
     if [[ $(cat elsewhere/x.png 2>/dev/null) != keep || ! -L linked/actual ]]; then
         fail "golden --out with a marker listing a file through a symlink" "removed elsewhere/x.png or the link"
     fi
-    rm -rf theirs ours tampered outside.txt elsewhere linked
+    # A link the marker does not list is refused too: a failing case would write its images through it.
+    mkdir -p unlisted && printf '%s\n' "$GOLDEN_MARKER_HEADING" >unlisted/.texfilter-golden
+    ln -s ../elsewhere unlisted/actual
+    expect_error "golden --out holding an unlisted symlink" "unlisted/actual is a symbolic link" - -- \
+        "$TEXFILTER" golden --case "$case_name" --out unlisted
+    if [[ $(cat elsewhere/x.png 2>/dev/null) != keep || ! -L unlisted/actual ]]; then
+        fail "golden --out holding an unlisted symlink" "touched elsewhere/x.png or the link"
+    fi
+    rm -rf theirs ours tampered outside.txt elsewhere linked unlisted
 }
 
 # Issue 10, item 2: an output is never one of the inputs; read-only files and links behave as documented.

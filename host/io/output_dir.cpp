@@ -44,6 +44,17 @@ std::string linked_part(const std::string& root, const std::string& relative)
     return "";
 }
 
+// The first symbolic link anywhere below root (not followed), or "": a run writes its files into root's
+// folders, and a link there, which texfilter never makes, would send them anywhere.
+std::string link_below(const std::string& root)
+{
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
+        if (it->is_symlink(ec))
+            return it->path().string();
+    return "";
+}
+
 void write_marker(const OwnedDirectory& directory)
 {
     std::string text = heading(directory.command) + "\n";
@@ -108,7 +119,11 @@ OwnedDirectory claim_directory(const std::string& path, const std::string& comma
         throw Error(what + ": exists and is not a directory");
     } else if (fs::exists(fs::symlink_status(directory.marker, ec))) {
         check_writable_directory(path, what);
-        remove_listed(path, read_marker(path, directory.marker, command));
+        const std::vector<std::string> listed = read_marker(path, directory.marker, command);
+        if (const std::string link = link_below(path); !link.empty())
+            throw Error(what + ": " + link + " is a symbolic link, which texfilter never makes (a run would write "
+                        "through it); nothing was touched: remove it or choose a new directory");
+        remove_listed(path, listed);
     } else if (!fs::is_empty(path, ec) || ec) {
         throw Error(what + ": exists, is not empty and was not made by texfilter " + command +
                     " (no " + fs::path(directory.marker).filename().string() +
