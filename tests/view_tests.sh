@@ -119,6 +119,14 @@ bad-script)
     env -u DISPLAY "$TEXFILTER" view --script bad.txt >stdout 2>stderr || rc=$?
     if [[ $rc -eq 2 ]] && grep -q "bad.txt:2" stderr; then pass "bad script line named before any window"; else
         fail "bad script" "exit $rc; expected 2 and bad.txt:2 on stderr"; fi
+    # A screenshot whose .txt is the script itself: refused before any window, the script kept.
+    printf 'screenshot self.png\nquit\n' >self.txt
+    sum=$(cksum <self.txt)
+    rc=0
+    env -u DISPLAY "$TEXFILTER" view --script self.txt >stdout 2>stderr || rc=$?
+    if [[ $rc -eq 2 ]] && grep -q "self.txt:1: screenshot" stderr && [[ $(cksum <self.txt) == "$sum" && ! -e self.png ]]; then
+        pass "a screenshot onto the script refused before any window"; else
+        fail "screenshot onto the script" "exit $rc, $(head -c 300 stderr); expected 2 naming self.txt:1, the script unchanged"; fi
     ;;
 scene-*) scene_group "${GROUP#scene-}" ;;
 split)
@@ -204,6 +212,14 @@ quit" --state first.json
     viewer_ok "state: again" || exit 1
     if cmp -s first.png again.png; then pass "--state reproduces the screenshot bit for bit"; else
         fail state "the screenshot from --state differs"; fi
+    # A screenshot whose .json is the --state file: refused before any window, the state kept.
+    printf 'screenshot first.png\nquit\n' >onto-state.txt
+    sum=$(cksum <first.json)
+    rc=0
+    env -u DISPLAY "$TEXFILTER" view --state first.json --script onto-state.txt >stdout 2>stderr || rc=$?
+    if [[ $rc -eq 2 ]] && grep -q "first.json" stderr && [[ $(cksum <first.json) == "$sum" ]]; then
+        pass "a screenshot onto the --state file refused before any window"; else
+        fail "screenshot onto --state" "exit $rc, $(head -c 300 stderr); expected 2 naming first.json, it unchanged"; fi
     ;;
 x-capture)
     printf '%s\n' "texture zoneplate --texture-size 64" "ui off" "screenshot shown.png" "hold 6000" "quit" >script.txt

@@ -55,8 +55,10 @@ int run_view(const std::vector<std::string>& argv)
 #else
     ViewOptions options;
     ViewState& s = options.state;
-    if (args.has("--state"))
+    if (args.has("--state")) {
         s = read_state_file(args.get("--state", ""));
+        options.inputs.push_back(args.get("--state", ""));
+    }
     if (args.has("--scene") || !args.has("--state"))
         s.scene = parse_flag(args, "--scene", "plane", parse_viewer_scene);
     if (args.has("--texture") || !args.has("--state")) {
@@ -89,14 +91,23 @@ int run_view(const std::vector<std::string>& argv)
     if (args.has("--script")) {
         options.script_name = args.get("--script", "");
         options.script = read_script(options.script_name); // every line checked before the window opens
-        for (const ScriptAction& action : options.script) // and where its screenshots go
-            if (action.verb == "screenshot" || action.verb == "screenshot-ui")
-                check_writable_directory(parent_directory(script_path(action)),
-                                         options.script_name + ":" + std::to_string(action.line) + ": " + action.verb);
+        options.inputs.push_back(options.script_name);
+        std::vector<std::string> inputs = options.inputs;
+        inputs.push_back(s.texture.name_or_path);
+        for (const ScriptAction& action : options.script) // and where its screenshots go: none onto an input
+            if (action.verb == "screenshot" || action.verb == "screenshot-ui") {
+                const std::string where = options.script_name + ":" + std::to_string(action.line) + ": " + action.verb;
+                check_writable_directory(parent_directory(script_path(action)), where);
+                try {
+                    checked_screenshot_paths(script_path(action), action.verb == "screenshot-ui", inputs);
+                } catch (const Error& e) {
+                    throw Error(where + ": " + e.what());
+                }
+            }
     }
     options.preview = !args.has("--no-preview");
     if (args.has("--frame-log"))
-        options.frame_log = checked_output_path(args.get("--frame-log", ""), {".csv"});
+        options.frame_log = checked_output_path(args.get("--frame-log", ""), {".csv"}, options.inputs);
     return run_viewer(options);
 #endif
 }

@@ -44,13 +44,21 @@ std::string unused_screenshot_path(const std::string& wanted)
     return wanted;
 }
 
+std::string checked_screenshot_paths(const std::string& requested, bool with_ui, const std::vector<std::string>& inputs)
+{
+    const std::string path = checked_output_path(requested, {".png"}, inputs);
+    if (!with_ui) { // the files beside it
+        checked_output_path(stem_of(path) + ".txt", {".txt"}, inputs);
+        checked_output_path(stem_of(path) + ".json", {".json"}, inputs);
+    }
+    return path;
+}
+
 void screenshot(Viewer& v, const std::string& requested, bool with_ui)
 {
-    const std::string path = checked_output_path(requested, {".png"}, {v.state.texture.name_or_path});
-    if (!with_ui) { // the files beside it, checked before any work too
-        checked_output_path(stem_of(path) + ".txt", {".txt"}, {v.state.texture.name_or_path});
-        checked_output_path(stem_of(path) + ".json", {".json"}, {v.state.texture.name_or_path});
-    }
+    std::vector<std::string> inputs = v.options.inputs; // the script and the --state file are never written
+    inputs.push_back(v.state.texture.name_or_path);
+    const std::string path = checked_screenshot_paths(requested, with_ui, inputs); // before any work
     if (!with_ui)
         finish_images(v);
     int width = 0, height = 0;

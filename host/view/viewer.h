@@ -25,6 +25,7 @@ struct ViewOptions {
     std::vector<ScriptAction> script; // empty: interactive
     std::string script_name;
     std::string frame_log; // --frame-log: every frame's times as CSV (the viewer benchmark)
+    std::vector<std::string> inputs; // the files it reads besides the texture (--script, --state): never written
     bool preview = true;   // --no-preview: every frame at full size (the benchmark's baseline)
 };
 
@@ -116,6 +117,9 @@ void destroy_frame_objects(Viewer& viewer);
 // screenshot.cpp: the frame just presented (the scene alone, or with_ui the whole window) to PNG, and beside a
 // scene screenshot PATH.txt (the texfilter render lines) and PATH.json (the state, for --state).
 void screenshot(Viewer& viewer, const std::string& path, bool with_ui);
+// The files a screenshot writes (PATH.png; and .txt and .json without the UI), each checked as an output
+// that is none of `inputs` (checked_output_path); returns the .png's path to write. Throws tf::Error.
+std::string checked_screenshot_paths(const std::string& path, bool with_ui, const std::vector<std::string>& inputs);
 // `wanted`, or with -1, -2, ... before .png where it or its .txt/.json exists already.
 std::string unused_screenshot_path(const std::string& wanted);
 
