@@ -283,6 +283,13 @@ bad_flag_values() {
 }
 
 bad_outputs() {
+    # A file name the file system cannot hold is refused before the render (it failed at the final rename).
+    local long_name
+    long_name=$(printf 'n%.0s' {1..300}).png
+    expect_error "render -o with a 304-byte file name" "longer than" "$long_name" -- "${RENDER[@]}" -o "$long_name"
+    expect_error "build --out ''" "build --out: the directory path is empty" - -- \
+        "$TEXFILTER" build --texture checker --texture-size 16 --build cpu --out ''
+    expect_error "bench --out ''" "bench --out: the directory path is empty" - -- "$TEXFILTER" bench --quick --out ''
     expect_error "render -o into a missing directory" /nonexistent/dir/out.png /nonexistent/dir/out.png -- \
         "${RENDER[@]}" -o /nonexistent/dir/out.png
     mkdir output_dir.png

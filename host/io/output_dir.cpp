@@ -108,6 +108,8 @@ OwnedDirectory claim_directory(const std::string& path, const std::string& comma
     directory.command = command;
     directory.marker = (fs::path(path) / (".texfilter-" + command)).string();
     const std::string what = command + " --out " + path;
+    if (path.empty())
+        throw Error(command + " --out: the directory path is empty");
     std::error_code ec;
     const fs::file_status status = fs::symlink_status(path, ec);
     if (!fs::exists(status)) {
@@ -148,6 +150,8 @@ void record_file(OwnedDirectory& directory, const std::string& relative)
 
 void check_new_directory(const std::string& out, const std::string& what)
 {
+    if (out.empty())
+        throw Error(what + ": the directory path is empty");
     const fs::path path = out;
     const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
     std::error_code ec;

@@ -93,6 +93,12 @@ std::string checked_output_path(const std::string& path, const std::vector<std::
         throw Error(shown + ": the output directory " + parent.string() + " does not exist");
     if (access(parent.c_str(), W_OK | X_OK) != 0)
         throw Error(shown + ": cannot create files in " + parent.string() + " (" + errno_text(errno) + ")");
+    // The name itself must fit the file system, or the finished file could not be moved into place.
+    const long name_max = pathconf(parent.c_str(), _PC_NAME_MAX);
+    const size_t name_size = target.filename().string().size();
+    if (name_size > size_t(name_max > 0 ? name_max : NAME_MAX))
+        throw Error(shown.substr(0, 80) + "...: the file name is " + std::to_string(name_size) + " bytes, longer than " +
+                    std::to_string(name_max > 0 ? name_max : NAME_MAX) + ", the most " + parent.string() + " allows");
 
     if (exists)
         for (const std::string& input : inputs) {
