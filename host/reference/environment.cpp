@@ -183,7 +183,7 @@ Lookup latlong_lookup(const EnvLookup& lookup) {
     const double rho2 = d.x * d.x + d.z * d.z, rho = std::sqrt(rho2);
     const double r2 = rho2 + d.y * d.y, r = std::sqrt(r2);
     Lookup l;
-    l.u = 0.5 + std::atan2(d.x, -d.z) / (2 * pi);
+    l.u = 0.5 + (rho2 > 0 ? std::atan2(d.x, -d.z) : 0.0) / (2 * pi); // an exact pole: longitude 0 (as the shader)
     l.v = std::acos(std::clamp(d.y / r, -1.0, 1.0)) / pi;
     const auto jacobian = [&](const glm::dvec3& dd, double& du, double& dv) {
         du = (-d.z * dd.x + d.x * dd.z) / (2 * pi * rho2);

@@ -167,7 +167,7 @@ tfi_DebugProbes tfi_debug_aniso(vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int le
             p.axis = px2 >= py2 ? dUVdx : dUVdy;
         }
         float rho2 = max(dot(ax, ax), dot(ay, ay)); // tf_lod_unclamped's
-        p.lod = tfi_clamp_lod_levels(0.5 * log2(rho2) + bias, s, levels);
+        p.lod = tfi_clamp_lod_levels(tfi_log2_rho(rho2) + bias, s, levels);
         return p;
     }
     float E = 0.5 * (cx.x + cy.y), F = 0.5 * (cx.x - cy.y);
@@ -251,8 +251,8 @@ tf_Footprint tf_debug_footprint(vec2 uv, vec2 dUVdx, vec2 dUVdy, vec2 textureSiz
         f.lod = p.lod;
         line = p.axis * textureSize;
     } else {
-        // tf_lod's: non-finite gradients +Inf, zero ones log2(0) = -Inf.
-        f.lod = tfi_clamp_lod_levels(finite ? 0.5 * log2(max(dot(ax, ax), dot(ay, ay))) + s.lodBias : 1.0 / 0.0, s,
+        // tf_lod's: non-finite gradients +Inf, zero ones -Inf.
+        f.lod = tfi_clamp_lod_levels(finite ? tfi_log2_rho(max(dot(ax, ax), dot(ay, ay))) + s.lodBias : 1.0 / 0.0, s,
                                     levels);
     }
     float texel = 0.5 * exp2(f.lod); // half the sampled level's texel, in level-0 texels

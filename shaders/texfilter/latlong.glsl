@@ -54,7 +54,10 @@ tf_LatLongLookup tf_latlong_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy)
     float rho2 = dir.x * dir.x + dir.z * dir.z, rho = sqrt(rho2);
     // θ = atan(ρ, y), not acos(y/|d|): acos is ill-conditioned near the poles, and GPUs approximate it more
     // loosely than atan (with acos, lavapipe missed the lat-long goldens by up to 0.0126 on 5 % of the pixels).
-    l.uv = vec2(0.5 + atan(dir.x, -dir.z) / (2.0 * pi), atan(rho, dir.y) / pi);
+    // At an exact pole (x = z = 0) the longitude is any: 0 (u = ½), as the reference; GLSL leaves atan(0, 0)
+    // undefined, and a NaN u would give vec4(0). Formed first so that the choice is one select.
+    float longitude = atan(dir.x, -dir.z);
+    l.uv = vec2(0.5 + (rho2 > 0.0 ? longitude : 0.0) / (2.0 * pi), atan(rho, dir.y) / pi);
     // du = (−z dx + x dz) / (2π ρ²), dv = −(dy − y (d·dd)/r²) / (π ρ).
     l.dUVdx = vec2((dir.x * dDirdx.z - dir.z * dDirdx.x) / (2.0 * pi * rho2),
                    -(dDirdx.y - dir.y * dot(dir, dDirdx) / r2) / (pi * rho));

@@ -34,6 +34,15 @@ float tfi_clamp_lod_levels(float lambda, tf_Sampler s, int levels)
     return clamp(lod, 0.0, float(max(levels, 1) - 1)); // lod is not NaN here
 }
 
+// log2(ρ) from ρ² (one log2 serves both axes: log2(sqrt(x)) = ½ log2(x)); −∞ for ρ² = 0 (zero gradients, or
+// squares that underflow): GLSL.std.450 leaves log2(0) undefined, and a NaN there would read as +∞, the
+// coarsest level instead of the finest. ρ² = +∞ (overflow) gives +∞: fine.
+float tfi_log2_rho(float rho2)
+{
+    float half_log2 = 0.5 * log2(rho2); // formed first, so that the choice below is one select, not a branch
+    return rho2 > 0.0 ? half_log2 : -1.0 / 0.0;
+}
+
 // The two-level blend every filter that blends MIP levels shares (trilinear, brilinear, the aniso probes,
 // ewa). tfi_split_lod splits a clamped LOD into the finer level floor(lod), returned, and the coarser
 // level's weight frac(lod).
@@ -85,9 +94,8 @@ float tf_lod_unclamped(TFI_T, vec2 dUVdx, vec2 dUVdy, float lodBias)
     vec2 size0 = vec2(TFI_SIZE0);
     vec2 ax = dUVdx * size0;
     vec2 ay = dUVdy * size0;
-    // Squared lengths, so one log2 serves both: log2(sqrt(x)) = 0.5 log2(x). Overflow gives +Inf: fine.
-    float rho2 = max(dot(ax, ax), dot(ay, ay));
-    return tf_finite(dUVdx) && tf_finite(dUVdy) ? 0.5 * log2(rho2) + lodBias : 1.0 / 0.0;
+    float rho2 = max(dot(ax, ax), dot(ay, ay)); // squared lengths: tfi_log2_rho
+    return tf_finite(dUVdx) && tf_finite(dUVdy) ? tfi_log2_rho(rho2) + lodBias : 1.0 / 0.0;
 }
 
 float tfi_clamp_lod(float lambda, tf_Sampler s, TFI_T)
