@@ -222,6 +222,14 @@ bad_flag_values() {
     expect_error "flag given twice" --size out.png -- "${RENDER[@]}" --size 32x32 -o out.png
     expect_error "missing -o" "flag -o" - -- "${RENDER[@]}"
     expect_error "-o without a value (last argument)" "flag -o" - -- "${RENDER[@]}" -o
+    # A flag whose value is missing must not swallow the next flag (it said "unexpected argument '1'").
+    expect_error "-o followed by a flag" "flag -o needs a value (OUT), but the next argument is the flag --lod-bias" \
+        - -- "${RENDER[@]}" -o --lod-bias 1
+    expect_error "--size followed by -o" "flag --size needs a value (WxH), but the next argument is the flag -o" \
+        out.png -- "${base[@]}" --size -o out.png
+    expect_success "--lod-bias -1 (a negative number is a value, not a flag)" negative_bias.png -- \
+        "${RENDER[@]}" --lod-bias -1 -o negative_bias.png
+    rm -f negative_bias.png
     expect_error "unknown command" frobnicate - -- "$TEXFILTER" frobnicate
     expect_error "unsupported output extension .bmp" out.bmp out.bmp -- "${RENDER[@]}" -o out.bmp
     # The filter suite's options.

@@ -92,6 +92,14 @@ Args parse_args(const std::string& command, const std::vector<std::string>& argv
         } else {
             if (i + 1 >= argv.size())
                 throw Error(command + ": flag " + token + " needs a value (" + spec->value + ")");
+            // `-o --lod-bias 1` forgot -o's value: say so, not "unexpected argument '1'". Only the command's own
+            // flag names count, so that a negative number (--lod-bias -1) stays a value.
+            const std::string& next = argv[i + 1];
+            const std::string next_name = next.rfind("--", 0) == 0 ? next.substr(0, next.find('=')) : next;
+            for (const FlagSpec& s : specs)
+                if (s.name == next_name)
+                    throw Error(command + ": flag " + token + " needs a value (" + spec->value + "), but the next "
+                                "argument is the flag " + next_name);
             args.values[token] = argv[++i];
         }
     }
