@@ -230,6 +230,11 @@ bad_flag_values() {
     expect_success "--lod-bias -1 (a negative number is a value, not a flag)" negative_bias.png -- \
         "${RENDER[@]}" --lod-bias -1 -o negative_bias.png
     rm -f negative_bias.png
+    # An empty --device is part of every device's name: it picked the first one without a word.
+    expect_error "info --device ''" "bad value for --device: ''" - -- "$TEXFILTER" info --device ''
+    expect_error "render --device= (reference)" "bad value for --device: ''" out.png -- "${RENDER[@]}" --device= -o out.png
+    expect_error "sample --device '' (vulkan)" "bad value for --device: ''" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter bilinear --lookups good.csv --device '' -o out.csv
     expect_error "unknown command" frobnicate - -- "$TEXFILTER" frobnicate
     expect_error "unsupported output extension .bmp" out.bmp out.bmp -- "${RENDER[@]}" -o out.bmp
     # The filter suite's options.

@@ -188,10 +188,21 @@ int parse_spp_side(const std::string& text)
     return side;
 }
 
+namespace {
+// An empty --device would be a substring of every device's name and pick the first one silently.
+std::string device_flag(const Args& args)
+{
+    if (args.has("--device") && args.get("--device", "").empty())
+        throw Error("bad value for --device: '' (expected a device index or part of its name; texfilter info lists "
+                    "them)");
+    return args.get("--device", "");
+}
+} // namespace
+
 ContextOptions context_options_from(const Args& args)
 {
     ContextOptions options;
-    options.device = args.get("--device", "");
+    options.device = device_flag(args);
     const char* env = std::getenv("TEXFILTER_VALIDATE");
     options.validate = args.has("--validate") || (env && std::string(env) == "1");
     return options;
@@ -210,6 +221,7 @@ Backend backend_from(const Args& args)
 CommandDevice open_command_device(Backend backend, const Args& args)
 {
     CommandDevice device;
+    device_flag(args); // checked on the reference backend too, which opens no device
     if (backend == Backend::vulkan) {
         device.gpu = std::make_unique<GpuSession>(context_options_from(args));
         device.limits = device_limits(device.gpu->context.info);
