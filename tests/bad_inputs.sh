@@ -326,6 +326,13 @@ bad_lookups() {
     mkdir lookups_dir.csv
     expect_error "sample: a directory as lookups file" "is a directory" out.csv -- \
         "${SAMPLE[@]}" --lookups lookups_dir.csv -o out.csv
+    # Files that exist but are no regular file (it said "no such lookups file").
+    expect_error "sample: /dev/zero as lookups file" "/dev/zero: is a character device, not a regular file" out.csv -- \
+        "${SAMPLE[@]}" --lookups /dev/zero -o out.csv
+    mkfifo lookups_fifo.csv
+    expect_error "sample: a FIFO as lookups file" "lookups_fifo.csv: is a pipe (FIFO), not a regular file" out.csv -- \
+        "${SAMPLE[@]}" --lookups lookups_fifo.csv -o out.csv
+    rm -f lookups_fifo.csv
     expect_error "sample: --stats with the reference backend" --stats out.csv -- \
         "${SAMPLE[@]}" --lookups good.csv --stats -o out.csv
     expect_error "sample: -o in a missing directory" /nonexistent/dir/out.csv /nonexistent/dir/out.csv -- \
@@ -617,6 +624,12 @@ unwritable_outputs() {
         "${AS_USER[@]}" "$TEXFILTER" bench --quick --scenes zoom --out locked/bench
     expect_error "golden --out in an unwritable directory" "Permission denied" locked/golden -- \
         "${AS_USER[@]}" "$TEXFILTER" golden --out locked/golden
+    # An unreadable input says why, as an unwritable output does.
+    cp good.csv unreadable.csv && chmod 000 unreadable.csv
+    mkdir -p writable && chmod 777 writable
+    expect_error "sample: an unreadable lookups file" "unreadable.csv: cannot open the lookups file (Permission denied)" \
+        writable/out.csv -- "${AS_USER[@]}" "${SAMPLE[@]}" --lookups unreadable.csv -o writable/out.csv
+    rm -rf unreadable.csv writable
     chmod 700 locked && rmdir locked
     chmod 700 "$WORK"
 }
