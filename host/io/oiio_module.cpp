@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <system_error>
@@ -152,6 +153,28 @@ std::string impossible_png_claim(const std::string& path, const OIIO::ImageSpec&
            "-byte PNG can hold (deflate expands at most 1032:1): truncated or corrupt";
 }
 
+// OIIO reads a PNM or PFM header's sides into an int that saturates (4294967297 becomes 2147483647): messages
+// quote the sides as the header writes them. "" where the header does not read as two words.
+std::string netpbm_size_as_written(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char magic[2] = {};
+    if (!in.read(magic, 2) || magic[0] != 'P') return "";
+    constexpr size_t longest = 24; // a megabyte of digits is quoted in a few dozen characters
+    std::string sides[2];
+    for (std::string& side : sides) {
+        int c = in.get();
+        while (c != EOF && (std::isspace(c) || c == '#')) {
+            if (c == '#')
+                while (c != EOF && c != '\n') c = in.get(); // a PNM comment runs to the end of its line
+            c = in.get();
+        }
+        for (; c != EOF && !std::isspace(c) && side.size() <= longest; c = in.get()) side += char(c);
+        if (side.empty()) return "";
+        if (side.size() > longest) side = side.substr(0, longest) + "...";
+    }
+    return sides[0] + "x" + sides[1];
+}
+
 // Opens the file and checks what its header claims; the caller reads pixels from the returned input.
 std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, int max_dimension, StderrCapture& capture) {
     check_readable_file(path);
@@ -174,12 +197,13 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, int max_
         capture.finish();
         throw Error(path + ": " + what);
     };
+    const std::string as_written = std::string(in->format_name()) == "pnm" ? netpbm_size_as_written(path) : "";
+    const std::string size = !as_written.empty() ? as_written
+                                                 : std::to_string(spec.width) + "x" + std::to_string(spec.height);
     if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1)
-        fail("unsupported image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-             (spec.depth > 1 ? "x" + std::to_string(spec.depth) : std::string()));
+        fail("unsupported image size " + size + (spec.depth > 1 ? "x" + std::to_string(spec.depth) : std::string()));
     if (spec.width > max_dimension || spec.height > max_dimension)
-        fail(std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-             " exceeds the maximum texture size " + std::to_string(max_dimension));
+        fail(size + " exceeds the maximum texture size " + std::to_string(max_dimension));
     if (spec.nchannels <= 0) fail("image has no channels");
     if (std::string(in->format_name()) == "png")
         if (const std::string wrong = impossible_png_claim(path, spec); !wrong.empty()) fail(wrong);
