@@ -433,6 +433,23 @@ ground_truth_and_bench_errors() {
     expect_error "bench --flicker-frames 1" --flicker-frames bench-out -- "${bench[@]}" --flicker-frames 1 --out bench-out
     expect_error "bench --timer bogus" bogus bench-out -- "${bench[@]}" --timer bogus --out bench-out
     expect_error "bench without --out" --out - -- "${bench[@]}"
+    # Empty lists ran the default or nothing (exit 0, "0 scenes"), as golden --case '' is refused.
+    expect_error "bench --filters ''" "bad value for --filters: ''" bench-out -- "${bench[@]}" --filters '' --out bench-out
+    expect_error "bench --scenes ," "bad value for --scenes: ','" bench-out -- \
+        "$TEXFILTER" bench --quick --scenes , --out bench-out
+    expect_error "bench --scenes zoom," "bad value for --scenes: 'zoom,'" bench-out -- \
+        "$TEXFILTER" bench --quick --scenes zoom, --filters nearest --out bench-out
+    expect_error "bench --gpu-build --sizes ''" "bad value for --sizes: ''" - -- \
+        "$TEXFILTER" bench --gpu-build --sizes '' --repeat 1 --dynamic-size 0
+    # --mip-build and --gpu-build are runs of their own: one at a time, and only their flags.
+    expect_error "bench --mip-build --gpu-build" "--mip-build and --gpu-build are two different runs" - -- \
+        "$TEXFILTER" bench --mip-build --gpu-build --texture-size 16 --repeat 1
+    expect_error "bench --mip-build --out" "bench --mip-build does not take --out" bench-out -- \
+        "$TEXFILTER" bench --mip-build --texture-size 16 --repeat 1 --out bench-out
+    expect_error "bench --gpu-build --texture-size" "bench --gpu-build does not take --texture-size" - -- \
+        "$TEXFILTER" bench --gpu-build --sizes 16 --texture-size 16 --repeat 1 --dynamic-size 0
+    expect_error "bench --repeat in the results run" "--repeat is for bench --mip-build and --gpu-build" bench-out -- \
+        "${bench[@]}" --filters nearest --repeat 3 --out bench-out
     expect_error "bench --out in a missing directory" "parent directory" missing/bench-out -- \
         "${bench[@]}" --out missing/bench-out
     # An earlier run's results are never overwritten or touched.

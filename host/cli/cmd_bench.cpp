@@ -11,6 +11,7 @@
 #include "core/memory_budget.h"
 #include "io/output_dir.h"
 #include "io/output_path.h"
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -27,18 +28,33 @@ std::vector<std::string> split_list(const std::string& text)
     std::vector<std::string> items;
     std::stringstream in(text);
     for (std::string item; std::getline(in, item, ',');)
-        if (!item.empty())
-            items.push_back(item);
+        items.push_back(item);
     return items;
 }
 
-std::vector<BenchFilter> select_filters(const std::string& flag_value)
+// A list flag as given, or the fallback where it is absent. An empty value or item ('', ',', 'a,,b') is
+// refused: it used to run the default, or nothing, without a word.
+std::vector<std::string> list_flag(const Args& args, const std::string& flag, const std::string& fallback,
+                                   const std::string& what)
+{
+    if (!args.has(flag))
+        return split_list(fallback);
+    const std::string text = args.get(flag, "");
+    const std::vector<std::string> items = split_list(text);
+    if (text.empty() || text.back() == ',' || std::find(items.begin(), items.end(), "") != items.end())
+        throw Error("bad value for " + flag + ": '" + text + "' (" + (text.empty() ? "empty" : "an empty item") +
+                    "; expected " + what + " separated by commas)");
+    return items;
+}
+
+// All filters where no label is given.
+std::vector<BenchFilter> select_filters(const std::vector<std::string>& labels)
 {
     std::vector<BenchFilter> all = bench_filters();
-    if (flag_value.empty())
+    if (labels.empty())
         return all;
     std::vector<BenchFilter> chosen;
-    for (const std::string& label : split_list(flag_value)) {
+    for (const std::string& label : labels) {
         bool found = false;
         for (const BenchFilter& f : all)
             if (f.label == label) {
@@ -52,9 +68,21 @@ std::vector<BenchFilter> select_filters(const std::string& flag_value)
             throw Error("bad value for --filters: unknown label '" + label + "' (expected some of: " + valid + ")");
         }
     }
-    if (chosen.empty())
-        throw Error("bad value for --filters: no label given");
     return chosen;
+}
+
+// bench --mip-build and --gpu-build are other runs than the results run: a flag the chosen run does not
+// read is refused, not ignored (--out most of all: nothing would appear there).
+void check_mode_flags(const Args& args, const std::string& mode, const std::vector<std::string>& takes)
+{
+    std::string list;
+    for (const std::string& flag : takes)
+        list += (list.empty() ? "" : ", ") + flag;
+    for (const auto& [flag, value] : args.values)
+        if (flag != mode && std::find(takes.begin(), takes.end(), flag) == takes.end())
+            throw Error("bench " + mode + " does not take " + flag + " (" +
+                        (flag == "--out" ? "it prints its figures and writes no files; " : "") + "its flags: " + list +
+                        ")");
 }
 
 // The results directory appears whole or not at all: everything is written into a sibling directory that is
@@ -95,14 +123,20 @@ int run_bench(const std::vector<std::string>& argv)
         std::fputs(format_help("texfilter bench --out DIR [--quick] [--device NAME|INDEX]", specs).c_str(), stdout);
         return 0;
     }
+    if (args.has("--mip-build") && args.has("--gpu-build"))
+        throw Error("bench: --mip-build and --gpu-build are two different runs: give one of them");
     if (args.has("--mip-build")) {
+        check_mode_flags(args, "--mip-build", {"--texture-size", "--repeat"});
         const int side = args.get_int("--texture-size", 8192, 1, 16384);
-        std::fputs(format_mip_build_bench(run_mip_build_bench(side, args.get_int("--repeat", 5, 1, 100))).c_str(), stdout);
+        const int repeats = args.get_int("--repeat", 5, 1, 100);
+        std::fputs(format_mip_build_bench(run_mip_build_bench(side, repeats)).c_str(), stdout);
         return 0;
     }
     if (args.has("--gpu-build")) {
+        check_mode_flags(args, "--gpu-build",
+                         {"--sizes", "--repeat", "--dynamic-size", "--timer", "--device", "--validate"});
         std::vector<int> sides;
-        for (const std::string& item : split_list(args.get("--sizes", "1024,4096,8192"))) {
+        for (const std::string& item : list_flag(args, "--sizes", "1024,4096,8192", "texture sides")) {
             Args one = parse_args("bench", {"--sizes", item}, {{"--sizes", "N", ""}}, 0);
             sides.push_back(one.get_int("--sizes", 0, 1, max_texture_dimension));
         }
@@ -117,6 +151,11 @@ int run_bench(const std::vector<std::string>& argv)
         std::fputs(text.c_str(), stdout);
         return 0;
     }
+    using Owner = std::pair<std::string, std::string>; // a flag of the other runs, and which
+    for (const auto& [flag, runs] : {Owner{"--repeat", "--mip-build and --gpu-build"}, Owner{"--sizes", "--gpu-build"},
+                                     Owner{"--dynamic-size", "--gpu-build"}})
+        if (args.has(flag))
+            throw Error(flag + " is for bench " + runs + ", not for the results run (--out DIR)");
     BenchConfig config;
     config.quick = args.has("--quick");
     config.stochastic = !config.quick; // 64 frames a filter and noise: not in a CI-sized run
@@ -143,12 +182,13 @@ int run_bench(const std::vector<std::string>& argv)
     config.warmup = args.get_int("--warmup", config.quick ? 2 : 5, 0, 1000);
     config.frames = args.get_int("--frames", config.quick ? 5 : 20, 1, 1000);
     config.flicker_frames = args.get_int("--flicker-frames", config.quick ? 3 : 8, 2, 64);
-    std::string scenes = args.get("--scenes", config.quick ? "plane,tunnel,slanted,mesh" : "");
+    const std::vector<std::string> scenes =
+        list_flag(args, "--scenes", config.quick ? "plane,tunnel,slanted,mesh" : "", "scene names");
     if (scenes.empty()) // the 2D scenes (skybox and reflect look up directions, not uv)
         for (SceneKind kind : all_scenes())
             if (!is_environment_scene(kind))
                 config.scenes.push_back(kind);
-    for (const std::string& name : split_list(scenes)) {
+    for (const std::string& name : scenes) {
         try {
             config.scenes.push_back(parse_scene(name));
         } catch (const Error& e) {
@@ -159,7 +199,7 @@ int run_bench(const std::vector<std::string>& argv)
         if (is_environment_scene(kind) && (config.texture.format != TextureFormat::rgba32f || config.texture.build != TextureBuild::cpu))
             throw Error("--scenes " + to_string(kind) + ": environment maps are uploaded as rgba32f and built on the host "
                         "(drop --format and --build, or bench them in another run)");
-    config.filters = select_filters(args.get("--filters", ""));
+    config.filters = select_filters(list_flag(args, "--filters", "", "filter labels"));
     for (const BenchFilter& f : config.filters) // integer data and hardware filtering, before any work
         check_format_filter(config.texture.format, f.options);
 
