@@ -17,9 +17,9 @@
 //          f >= (1 + B)/2.
 //          B = 1: w = f exactly, i.e. tf_trilinear, bit for bit.
 //          B = 0: w = step(f > 1/2), the nearest level with ties (f = 1/2) to the finer one: the level
-//                 ceil(λ + 1/2) − 1 of Vulkan mipmapMode NEAREST, i.e. tf_bilinear_mip. (f > 1/2 is exact;
-//                 lod.glsl's float λ + 1/2 rounds down to the finer level for λ an ulp or two above
-//                 2^k − 1/2, e.g. 1.5 + 2^-23, where this picks the coarser level as the spec's formula does.)
+//                 ceil(λ + 1/2) − 1 of Vulkan mipmapMode NEAREST, i.e. tf_bilinear_mip. (f > 1/2 is exact,
+//                 as tf_mip_level_nearest's floor and comparison (lod.glsl): the same level for every λ,
+//                 1.5 + 2^-23 included, where a float λ + 1/2 would round to the finer one.)
 //          Suggested band: 0.25 (tf::SamplerOptions's default). On a smooth LOD ramp a quarter of the
 //          LOD range pays 8 fetches and the rest 4, so 5 fetches a lookup on average (trilinear: 8),
 //          and the level blend stays continuous (no seam, unlike B = 0); outside the band the finer
