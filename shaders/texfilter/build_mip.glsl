@@ -14,6 +14,7 @@
 //          groups = pass.groups_x x pass.groups_y, the pass's fields as push constants, and a compute ->
 //          compute barrier (shader writes -> shader reads) between passes. A 2^k texture up to 8192^2 is one
 //          dispatch; odd levels take one dispatch each until a level fits the tail.
+//          Also: ivec2 tf_mip_level_size(ivec2 size0, int level), a level's size by the floor rule.
 // Needs:   the images the macros name, `coherent` (the tail's group reads what other groups wrote in the
 //          same dispatch), one storage view a level (image2D chain[N], rgba32f or rgba16f); a 16 KB
 //          shared tile (every Vulkan device has it); TF_MIP_COUNTER a coherent buffer member.

@@ -16,12 +16,14 @@
 //          with a compute -> compute barrier (shader writes -> shader reads) between them. Then
 //          tf_sat_offset(TF_SAT_RANGE) and tf_sat_scale(TF_SAT_RANGE) are tf_sat's offset and scale, in any
 //          later shader (or read the 9 words back: tf::sat_range_offset_scale does the same on the host).
+//          Also: uint tf_sat_key(float) and float tf_sat_unkey(uint), the range words' order-preserving keys.
 // Needs:   size.x, size.y in 1..4096 (the bit budget, as tf::build_sat); satLow RGBA32UI and satHigh R32UI
 //          storage images of (size.x + 1) x (size.y + 1); TF_SAT_RANGE cleared before pass 1 to
 //          { 0xFFFFFFFF x 4, 0 x 4, 0xFFFFFFFF } (tf::sat_range_initial; vkCmdUpdateBuffer).
 //          Doubles (shaderFloat64) for the quantisation, so it rounds as the host does; define
 //          TF_SAT_NO_FP64 on a device without them: float quantisation, within one level of the host's
 //          (not bit for bit).
+// Options: TF_SAT_NO_FP64 (above), defined before the include.
 // Cost:    pass 1 reads level 0; pass 2 reads it again (quantising each texel once) and writes the row sums
 //          into satLow; pass 3 reads those and writes both tables: 2 reads of level 0, 1 read and 2 writes
 //          of the tables.
