@@ -565,7 +565,7 @@ golden_output_directory() {
     expect_error "golden --out with a tampered marker" "not a file below its directory" - -- \
         "$TEXFILTER" golden --case "$case_name" --out tampered
     [[ -e outside.txt ]] || fail "golden --out with a tampered marker" "removed ../outside.txt"
-    # Nor through a symbolic link: a listed path whose folder is a link is refused, the link and its target kept.
+    # Nor through a symbolic link: a marked directory holding one is refused, the link and its target kept.
     mkdir -p elsewhere linked && echo keep >elsewhere/x.png && ln -s ../elsewhere linked/actual
     printf '%s\nactual/x.png\n' "$GOLDEN_MARKER_HEADING" >linked/.texfilter-golden
     expect_error "golden --out with a marker listing a file through a symlink" "linked/actual is a symbolic link" - -- \

@@ -197,13 +197,14 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::string& path, int max_
         capture.finish();
         throw Error(path + ": " + what);
     };
-    const std::string as_written = std::string(in->format_name()) == "pnm" ? netpbm_size_as_written(path) : "";
-    const std::string size = !as_written.empty() ? as_written
-                                                 : std::to_string(spec.width) + "x" + std::to_string(spec.height);
+    auto size = [&] { // for a message only: the header is read again just then
+        const std::string as_written = std::string(in->format_name()) == "pnm" ? netpbm_size_as_written(path) : "";
+        return !as_written.empty() ? as_written : std::to_string(spec.width) + "x" + std::to_string(spec.height);
+    };
     if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1)
-        fail("unsupported image size " + size + (spec.depth > 1 ? "x" + std::to_string(spec.depth) : std::string()));
+        fail("unsupported image size " + size() + (spec.depth > 1 ? "x" + std::to_string(spec.depth) : std::string()));
     if (spec.width > max_dimension || spec.height > max_dimension)
-        fail(size + " exceeds the maximum texture size " + std::to_string(max_dimension));
+        fail(size() + " exceeds the maximum texture size " + std::to_string(max_dimension));
     if (spec.nchannels <= 0) fail("image has no channels");
     if (std::string(in->format_name()) == "png")
         if (const std::string wrong = impossible_png_claim(path, spec); !wrong.empty()) fail(wrong);

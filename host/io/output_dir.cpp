@@ -27,25 +27,9 @@ bool safe_relative(const std::string& relative)
     return true;
 }
 
-// The first part of `relative` below `root` that is a symbolic link, or "" if none: a listed file is removed
-// only where the directory itself holds it, never through a link, which could lead anywhere.
-std::string linked_part(const std::string& root, const std::string& relative)
-{
-    fs::path p = root;
-    for (const fs::path& part : fs::path(relative)) {
-        p /= part;
-        std::error_code ec;
-        const fs::file_status status = fs::symlink_status(p, ec);
-        if (fs::is_symlink(status))
-            return p.string();
-        if (!fs::is_directory(status))
-            break; // nothing below it to reach
-    }
-    return "";
-}
-
 // The first symbolic link anywhere below root (not followed), or "": a run writes its files into root's
-// folders, and a link there, which texfilter never makes, would send them anywhere.
+// folders and removes the files an earlier run listed, and a link there, which texfilter never makes, would
+// send either anywhere.
 std::string link_below(const std::string& root)
 {
     std::error_code ec;
@@ -63,9 +47,9 @@ void write_marker(const OwnedDirectory& directory)
     write_file_atomic(directory.marker, text);
 }
 
-// The files an earlier run listed in root's marker; throws, before anything is removed, if the marker is not
-// ours or lists a path that leaves root.
-std::vector<std::string> read_marker(const std::string& root, const std::string& marker, const std::string& command)
+// The files an earlier run listed; throws, before anything is removed, if the marker is not ours or lists a
+// path that leaves its directory.
+std::vector<std::string> read_marker(const std::string& marker, const std::string& command)
 {
     std::ifstream in(marker);
     std::string line;
@@ -77,9 +61,6 @@ std::vector<std::string> read_marker(const std::string& root, const std::string&
             if (!safe_relative(line))
                 throw Error(marker + ": lists '" + line.substr(0, 60) +
                             "', which is not a file below its directory; nothing was touched");
-            if (const std::string link = linked_part(root, line); !link.empty())
-                throw Error(marker + ": lists '" + line.substr(0, 60) + "', but " + link +
-                            " is a symbolic link (texfilter never removes through one); nothing was touched");
             files.push_back(line);
         }
     return files;
@@ -121,8 +102,8 @@ OwnedDirectory claim_directory(const std::string& path, const std::string& comma
         throw Error(what + ": exists and is not a directory");
     } else if (fs::exists(fs::symlink_status(directory.marker, ec))) {
         check_writable_directory(path, what);
-        const std::vector<std::string> listed = read_marker(path, directory.marker, command);
-        if (const std::string link = link_below(path); !link.empty())
+        const std::vector<std::string> listed = read_marker(directory.marker, command);
+        if (const std::string link = link_below(path); !link.empty()) // a listed file through one included
             throw Error(what + ": " + link + " is a symbolic link, which texfilter never makes (a run would write "
                         "through it); nothing was touched: remove it or choose a new directory");
         remove_listed(path, listed);

@@ -79,14 +79,14 @@ int tfi_aniso_count(float ratio, int maxN)
 }
 
 // The probes' centre, moved before their offsets are added (each probe is reduced again), so that a large
-// uv's rounding does not swallow the offsets (at uv = 1e5 they moved by 1/128) and no probe overflows near
-// float's range. Repeat and mirror: by whole periods (tf_reduce_uv; exact). Clamp: to [−1 − h, 2 + h],
+// uv's rounding does not swallow the offsets (at uv = 1e6 they moved by 1/16) and no probe overflows near
+// float's range. Repeat and mirror: by whole periods (as tf_reduce_uv; exact). Clamp: to [−1 − h, 2 + h],
 // h = |axis|/2, which leaves every probe past the edge it was past (the same edge texels) and the rest
 // where they were; tf_reduce_uv's [−1, 2] would move a long footprint that reaches into the texture.
 vec2 tfi_aniso_centre(vec2 uv, vec2 axis, int wrapMode)
 {
     vec2 h = 0.5 * abs(axis);
-    return wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0 - h, 2.0 + h) : uv - 2.0 * roundEven(0.5 * uv);
+    return wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0 - h, 2.0 + h) : tfi_whole_periods(uv);
 }
 
 #define TFI_FAMILY TFI_FAMILY_ANISO

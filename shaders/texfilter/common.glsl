@@ -206,11 +206,12 @@ bool tf_finite(vec2 v) { return !any(isnan(v)) && !any(isinf(v)); }
 // no larger than uv and a multiple of its spacing), and uv in [-1, 1] is unchanged. Every filter does this
 // first, so that no finite uv makes a texel coordinate (uv·size) overflow float and the manual and
 // hardware-tap forms see the same coordinates (docs/API.md, degenerate input).
+vec2 tfi_whole_periods(vec2 uv) { return uv - 2.0 * roundEven(0.5 * uv); } // repeat and mirror's part
 vec2 tf_reduce_uv(vec2 uv, int wrapMode)
 {
     if (wrapMode == TF_WRAP_CLAMP)
         return clamp(uv, -1.0, 2.0);
-    return uv - 2.0 * roundEven(0.5 * uv);
+    return tfi_whole_periods(uv);
 }
 
 // The lat-long kind's extra parameter (access.glsl kind 19): it only tells its overloads from sampler2D's.
