@@ -120,7 +120,7 @@ tfi_AnisoFootprint tfi_aniso_footprint(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler
         fp.probes = tfi_aniso_count(sqrt(max(px2, py2) / min(px2, py2)), maxN);
         tf_Sampler t = s;
         if (fp.probes > 1) { // log2(Pmax/N) + bias = log2(Pmax) + (bias − log2 N); N = 1 stays tf_lod exactly
-            t.lodBias -= log2(float(fp.probes));
+            t.lodBias -= tfi_log2(float(fp.probes));
             fp.axis = px2 >= py2 ? dUVdx : dUVdy; // ties: dUVdx
         }
         fp.lod = tf_lod(TFI_A, dUVdx, dUVdy, t);
@@ -135,7 +135,7 @@ tfi_AnisoFootprint tfi_aniso_footprint(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler
     float Q = length(vec2(E, H)), R = length(vec2(F, G));
     float major = Q + R, minor = abs(Q - R); // σ1, σ2 times 2^-e
     fp.probes = tfi_aniso_count(major / minor, maxN);
-    float lambda = float(e) + log2(max(minor, major / float(fp.probes))) + s.lodBias;
+    float lambda = float(e) + tfi_log2(max(minor, major / float(fp.probes))) + s.lodBias;
     fp.lod = tfi_clamp_lod(lambda, s, TFI_A);
     if (fp.probes > 1) { // then major > minor, so R > 0, Q > 0 and z != 0
         vec2 z = vec2(F * E - G * H, F * H + G * E);

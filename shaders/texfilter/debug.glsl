@@ -163,7 +163,7 @@ tfi_DebugProbes tfi_debug_aniso(vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int le
         p.probes = tfi_aniso_count(sqrt(max(px2, py2) / min(px2, py2)), maxN);
         float bias = s.lodBias;
         if (p.probes > 1) {
-            bias -= log2(float(p.probes));
+            bias -= tfi_log2(float(p.probes));
             p.axis = px2 >= py2 ? dUVdx : dUVdy;
         }
         float rho2 = max(dot(ax, ax), dot(ay, ay)); // tf_lod_unclamped's
@@ -175,7 +175,7 @@ tfi_DebugProbes tfi_debug_aniso(vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int le
     float Q = length(vec2(E, H)), R = length(vec2(F, G));
     float major = Q + R, minor = abs(Q - R);
     p.probes = tfi_aniso_count(major / minor, maxN);
-    p.lod = tfi_clamp_lod_levels(float(e) + log2(max(minor, major / float(p.probes))) + s.lodBias, s, levels);
+    p.lod = tfi_clamp_lod_levels(float(e) + tfi_log2(max(minor, major / float(p.probes))) + s.lodBias, s, levels);
     if (p.probes > 1) {
         vec2 z = vec2(F * E - G * H, F * H + G * E);
         float r = length(z);
@@ -221,7 +221,7 @@ float tfi_debug_ewa(vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int levels, tf_Sam
             float e = maxAniso >= 1.0 ? maxAniso : 1.0;
             minor2 = max(minor2, major2 / (e * e));
             const float majorTexels = 0.25 * float(TF_EWA_MAX_TEXELS - 3) / sqrt(TF_EWA_SUPPORT);
-            lambda = log2(m) + max(0.5 * log2(max(minor2, 1e-30)), 0.5 * log2(major2) - log2(majorTexels)) +
+            lambda = tfi_log2(m) + max(0.5 * log2(max(minor2, 1e-30)), 0.5 * log2(major2) - log2(majorTexels)) +
                      s.lodBias;
             vec2 u1 = tfi_debug_major_direction(xx, xy, yy);
             major = 0.5 * m * sqrt(major2) * u1; // the pre-image J·(disk of radius ½), in texels

@@ -290,7 +290,7 @@ tfi_EwaShape tfi_ewa_shape(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float ma
             shape = tfi_EwaShape(vec3(minor2, 0.0, minor2) + max(major2 - minor2, 0.0) * p1, major2, minor2, m);
             // On the LOD's level the support's major semi-axis stays inside the loop cap (see the header).
             const float majorTexels = 0.25 * float(TF_EWA_MAX_TEXELS - 3) / sqrt(TF_EWA_SUPPORT);
-            lambda = log2(m) + max(0.5 * log2(max(minor2, 1e-30)), 0.5 * log2(major2) - log2(majorTexels)) +
+            lambda = tfi_log2(m) + max(0.5 * log2(max(minor2, 1e-30)), 0.5 * log2(major2) - log2(majorTexels)) +
                      s.lodBias;
         }
     }

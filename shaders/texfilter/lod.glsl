@@ -34,12 +34,23 @@ float tfi_clamp_lod_levels(float lambda, tf_Sampler s, int levels)
     return clamp(lod, 0.0, float(max(levels, 1) - 1)); // lod is not NaN here
 }
 
+// log2(x) for x > 0, snapped to the integer it is within GLSL.std.450's error of (3 ULP; 2^-21 absolute in
+// [½, 2]): a λ a hair above a level blends in the next one with a weight of ~1e-7 at the price of its fetches
+// (TFI_BLEND_LEVELS_ONCE), and on an NVIDIA H200 aniso with ρ = 8 texels over 4 probes read 32 texels, not 16.
+// So powers of two give whole levels on every device; the weights the snap drops are below 5e-7.
+float tfi_log2(float x)
+{
+    float l = log2(x);
+    float r = round(l);
+    return abs(l - r) <= max(4e-7 * abs(r), 5e-7) ? r : l; // ±∞ stays: ∞ − ∞ is NaN, and NaN <= … is false
+}
+
 // log2(ρ) from ρ² (one log2 serves both axes: log2(sqrt(x)) = ½ log2(x)); −∞ for ρ² = 0 (zero gradients, or
 // squares that underflow): GLSL.std.450 leaves log2(0) undefined, and a NaN there would read as +∞, the
 // coarsest level instead of the finest. ρ² = +∞ (overflow) gives +∞: fine.
 float tfi_log2_rho(float rho2)
 {
-    float half_log2 = 0.5 * log2(rho2); // formed first, so that the choice below is one select, not a branch
+    float half_log2 = 0.5 * tfi_log2(rho2); // formed first, so that the choice below is one select, not a branch
     return rho2 > 0.0 ? half_log2 : -1.0 / 0.0;
 }
 
