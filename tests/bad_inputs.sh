@@ -431,6 +431,11 @@ ground_truth_and_bench_errors() {
     expect_error "bench --spp 10" --spp bench-out -- "${bench[@]}" --spp 10 --out bench-out
     expect_error "bench --frames 0" --frames bench-out -- "${bench[@]}" --frames 0 --out bench-out
     expect_error "bench --flicker-frames 1" --flicker-frames bench-out -- "${bench[@]}" --flicker-frames 1 --out bench-out
+    expect_error "bench --lookups-per-pixel 0" --lookups-per-pixel bench-out -- "${bench[@]}" --lookups-per-pixel 0 --out bench-out
+    expect_error "bench --lookups-per-pixel 257" --lookups-per-pixel bench-out -- \
+        "${bench[@]}" --lookups-per-pixel 257 --out bench-out
+    expect_error "bench --mip-build --lookups-per-pixel" --lookups-per-pixel - -- \
+        "$TEXFILTER" bench --mip-build --lookups-per-pixel 4
     expect_error "bench --timer bogus" bogus bench-out -- "${bench[@]}" --timer bogus --out bench-out
     expect_error "bench without --out" --out - -- "${bench[@]}"
     # Empty lists ran the default or nothing (exit 0, "0 scenes"), as golden --case '' is refused.

@@ -5,6 +5,7 @@
 #
 # usage: gpu_bench_script.sh TEXFILTER REPO_ROOT
 set -uo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/script_checks.sh" # fail, expect_refusal
 if [[ $# -ne 2 ]]; then
     echo "usage: $0 TEXFILTER REPO_ROOT" >&2
     exit 2
@@ -16,18 +17,6 @@ trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 2 # no .gl here: nothing is unpacked
 mkdir tmp
 export TMPDIR="$work/tmp" # the script's own temporary folder must be gone afterwards
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-expect_refusal() { # name, expected message, command...
-    local name=$1 message=$2
-    shift 2
-    local output rc
-    output=$("$@" 2>&1)
-    rc=$?
-    [[ $rc -eq 2 ]] || fail "$name: exit $rc, expected 2"
-    grep -qF -- "$message" <<<"$output" || fail "$name: no '$message' in: $output"
-}
 
 mkdir full && echo "keep me" >full/mine.txt
 expect_refusal "non-empty output folder" "the output folder is not empty" env TEXFILTER="$texfilter" "$script" full
@@ -47,7 +36,7 @@ env TEXFILTER="$texfilter" TF_DEVICE=llvmpipe TF_SCENES=plane TF_STAGE_LIMIT=1 "
 rc=$?
 [[ $rc -eq 1 ]] && grep -qF "cut off by the 1 s limit: timing quality" cut.log ||
     fail "benches cut off by the limit: exit $rc, expected 1 naming both ($(tail -2 cut.log))"
-env TEXFILTER="$texfilter" TF_DEVICE=llvmpipe TF_SCENES=plane TF_TIMING_SIZE=32x32 TF_QUALITY_SIZE=32x32 \
+env TEXFILTER="$texfilter" TF_DEVICE=llvmpipe TF_SCENES=plane TF_TIMING_SIZE=32x32 TF_QUALITY_SIZE=32x32 TF_LOOKUPS=2 \
     "$script" run >run.log 2>&1 || fail "one-scene run: exit $? ($(tail -3 run.log))"
 for f in device.txt log.txt timing.json timing.csv quality.json quality.csv; do
     [[ -s run/$f ]] || fail "one-scene run: no run/$f"
@@ -68,6 +57,8 @@ for start in ("manual trilinear <=", "brilinear faster than trilinear", "sat <= 
     assert g["status"] in ("met", "missed"), f"timing: {g}"
 assert timing["config"]["scenes"] == ["plane"], timing["config"]["scenes"]
 assert timing["config"]["width"] == 32, timing["config"]
+# The timed frames take TF_LOOKUPS lookups a pixel; the quality run the default one.
+assert timing["config"]["lookups_per_pixel"] == 2 and quality["config"]["lookups_per_pixel"] == 1, timing["config"]
 g = goal(quality, "ewa: Gaussian-truth error and flicker below hw-aniso")
 assert g["measured"].split(" (")[0].endswith(" of 1 scenes"), f"quality: {g}"
 EOF

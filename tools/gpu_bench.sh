@@ -5,12 +5,14 @@
 # `cmake --preset lean && cmake --build --preset lean`):
 #     tools/gpu_bench.sh OUTDIR            # OUTDIR new or empty; default $OUT
 # Environment: TF_DEVICE (default NVIDIA: part of the device's name, as --device takes it), TF_STAGE (default
-# compute: NVIDIA's datacenter GPUs run the graphics path ~30x slower, DESIGN.md §4), TF_TIMING_SIZE (1024x1024:
-# a few waves of a large GPU), TF_QUALITY_SIZE (512x512), TF_STAGE_LIMIT (seconds each bench may run, default
-# 240), TF_SCENES (the 7 2D scenes), TEXFILTER (the binary, default build-lean/texfilter).
+# compute: NVIDIA's datacenter GPUs run the graphics path ~30x slower, DESIGN.md §4), TF_TIMING_SIZE (512x512),
+# TF_LOOKUPS (lookups a pixel in the timed frames, default 16: on an H200 the harness's own per-pixel cost hid
+# the filters at one, 0.32 ms a 1024x1024 frame whatever the filter), TF_QUALITY_SIZE (512x512), TF_STAGE_LIMIT
+# (seconds each bench may run, default 240), TF_SCENES (the 7 2D scenes), TEXFILTER (the binary, default
+# build-lean/texfilter).
 #
-# Writes OUTDIR/device.txt (texfilter info, nvidia-smi), timing.json/.csv (the speed goals: a large image, one
-# truth sample, 2 path frames: its error columns are not a measurement), quality.json/.csv (the error and
+# Writes OUTDIR/device.txt (texfilter info, nvidia-smi), timing.json/.csv (the speed goals: TF_LOOKUPS lookups a
+# pixel, one truth sample, 2 path frames: its error columns are not a measurement), quality.json/.csv (the error and
 # flicker goals at the default 256 samples and 8 path frames) and log.txt. The benches' images stay in a
 # temporary folder that is removed at the end: six small files come back from a lent machine. Each bench has
 # its own time limit, so a slow one still leaves the other's results; the exit status is 1 when either failed.
@@ -71,7 +73,8 @@ run_bench() { # name, bench arguments...
 failed=
 
 # Speed: trilinear, brilinear and sat against hw-trilinear; aniso's two forms and EWA against hw-aniso16.
-run_bench timing --size "${TF_TIMING_SIZE:-1024x1024}" --spp 1 --flicker-frames 2 --warmup 5 --frames 20 \
+run_bench timing --size "${TF_TIMING_SIZE:-512x512}" --lookups-per-pixel "${TF_LOOKUPS:-16}" --spp 1 \
+    --flicker-frames 2 --warmup 5 --frames 20 \
     --filters trilinear,brilinear,sat,sat-assembly,hw-trilinear,aniso16,aniso16-hw,hw-aniso16,ewa,ewa-hw
 # Quality: EWA's error and flicker against the hardware's anisotropic filter, the manual/hardware pairs.
 run_bench quality --size "${TF_QUALITY_SIZE:-512x512}" --warmup 1 --frames 3 \

@@ -246,7 +246,9 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
             // The baseline and the filters timed in turn (time_frames_interleaved), so their ratios share
             // conditions; each filter's pipeline made once (for its timing and its images).
             RenderPipelineCache pipelines;
-            const std::vector<std::vector<double>> times = time_scene_filters(context, texture, scene, render, config, pipelines);
+            RenderOptions timed = render;
+            timed.lookups = config.lookups_per_pixel;
+            const std::vector<std::vector<double>> times = time_scene_filters(context, texture, scene, timed, config, pipelines);
             run.baseline[kind] = summarize_times(times[0]);
 
             std::vector<Lookup> lookups;
@@ -289,6 +291,7 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
             if (filter.options.filter != Filter::sat && filter.options.filter != Filter::sat_assembly)
                 continue;
             RenderOptions render = render_options_for(SceneKind::minify, config.stage);
+            render.lookups = config.lookups_per_pixel; // timed only
             SatSweep sweep{filter.label, {}, {}};
             for (double factor : {2.0, 64.0}) {
                 SceneParams scene = make_minified_scene(config.width, config.height, texture_width, factor);

@@ -39,6 +39,9 @@ struct BenchConfig {
     bool truth_on_cpu = false; // the CPU reference's ground truth instead of the device's
     bool stochastic = true; // the stochastic rows (bench/stochastic_bench.h); off in --quick
     int warmup = 5, frames = 20, flicker_frames = 8;
+    // Timed frames only: each pixel the mean of this many lookups spread over it (RenderOptions::lookups), so that
+    // a GPU's filter time stands above the harness's per-pixel cost; images, errors and fetch counts use 1.
+    int lookups_per_pixel = 1;
     FrameTimer timer = FrameTimer::timestamps; // the wall clock on CPU devices (see vulkan/frame_timer.h)
     std::vector<SceneKind> scenes;
     std::vector<BenchFilter> filters;

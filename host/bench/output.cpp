@@ -43,6 +43,7 @@ Json config_json(const BenchRun& run)
             {"warmup", c.warmup},
             {"frames", c.frames},
             {"flicker_frames", c.flicker_frames},
+            {"lookups_per_pixel", c.lookups_per_pixel},
             {"timer", to_string(c.timer)},
             {"camera_step_texels", Json::array({camera_step_texels.x, camera_step_texels.y})},
             {"scenes", scenes},

@@ -109,6 +109,8 @@ int run_bench(const std::vector<std::string>& argv)
           {"--warmup", "N", "untimed frames before timing (default 5)"},
           {"--frames", "N", "timed frames; min, median and max are reported (default 20)"},
           {"--flicker-frames", "N", "frames of the camera path for flicker, 2..64 (default 8)"},
+          {"--lookups-per-pixel", "N", "timed frames: each pixel the mean of N lookups over its footprint, 1..256 "
+                                       "(default 1; a GPU's filters above the harness's own cost; images and errors: 1)"},
           {"--stage", "S", "fragment (default) or compute; the mesh scene always rasterizes"},
           {"--timer", "T", "timestamps (GPU timestamps; default on GPUs) or wall-clock (default on CPU devices)"},
           {"--mip-build", "", "instead: time the host's MIP build beside memcpy (--texture-size, default 8192; no --out)"},
@@ -182,6 +184,7 @@ int run_bench(const std::vector<std::string>& argv)
     config.warmup = args.get_int("--warmup", config.quick ? 2 : 5, 0, 1000);
     config.frames = args.get_int("--frames", config.quick ? 5 : 20, 1, 1000);
     config.flicker_frames = args.get_int("--flicker-frames", config.quick ? 3 : 8, 2, 64);
+    config.lookups_per_pixel = args.get_int("--lookups-per-pixel", 1, 1, 256);
     const std::vector<std::string> scenes =
         list_flag(args, "--scenes", config.quick ? "plane,tunnel,slanted,mesh" : "", "scene names");
     if (scenes.empty()) // the 2D scenes (skybox and reflect look up directions, not uv)

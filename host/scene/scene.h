@@ -59,6 +59,7 @@ struct RenderOptions {
     Gradients gradients = Gradients::fine;
     bool rasterize = false; // the mesh scene: triangles through the raster pipeline
     DebugView view = DebugView::color;
+    int lookups = 1; // lookups a pixel, their mean shown (bench --lookups-per-pixel: timing only)
 };
 
 // The render options a scene allows: mesh is rasterized (fragment stage, quad derivatives only);

@@ -29,6 +29,7 @@ FilterVariant render_variant(const SamplerOptions& options, const RenderOptions&
     FilterVariant variant = filter_variant(options);
     variant.view = int(render.view); // shader_interface.h checks the values
     variant.gradients = int(render.gradients);
+    variant.lookups = render.lookups;
     return variant;
 }
 

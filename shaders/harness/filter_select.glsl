@@ -241,6 +241,13 @@ vec4 harness_shade(vec2 uv, vec2 dUVdx, vec2 dUVdy)
     dUVdx *= pc.gradientScale; // exact at 1
     dUVdy *= pc.gradientScale;
     vec4 color = harness_filter(uv, dUVdx, dUVdy);
+    // bench --lookups-per-pixel: more lookups at points of an R2 sequence over the pixel (offsets in (-½, ½)
+    // pixels), each its own work the compiler cannot merge; their mean is shown.
+    for (int k = 1; k < LOOKUPS_ID; ++k) {
+        vec2 o = fract(vec2(0.5) + float(k) * vec2(0.7548776662, 0.5698402910)) - 0.5;
+        color += harness_filter(uv + o.x * dUVdx + o.y * dUVdy, dUVdx, dUVdy);
+    }
+    color /= float(LOOKUPS_ID);
     if (VIEW_ID == HARNESS_VIEW_COLOR)
         return color;
     int family = FILTER_ID == HARNESS_FILTER_ANISO ? TF_DEBUG_ANISO

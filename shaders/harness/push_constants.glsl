@@ -21,6 +21,9 @@ layout(constant_id = HARNESS_SPEC_STOCHASTIC) const int STOCHASTIC_ID = 0;
 // fetch counters cost manual filters ~8 % more (docs/BENCHMARKS.md).
 layout(constant_id = HARNESS_SPEC_VIEW) const int VIEW_ID = HARNESS_VIEW_COLOR;
 layout(constant_id = HARNESS_SPEC_GRADIENTS) const int GRADIENTS_ID = HARNESS_GRADIENTS_FINE;
+// Lookups a pixel: the mean of LOOKUPS_ID lookups spread over the pixel (filter_select.glsl, harness_shade); 1 but
+// for bench --lookups-per-pixel, which times a GPU's filters above the harness's own per-pixel cost.
+layout(constant_id = HARNESS_SPEC_LOOKUPS) const int LOOKUPS_ID = 1;
 
 // tf::PushConstants (host/scene/shader_interface.h): both sides take the offsets from config.h.
 layout(push_constant) uniform PushConstants {
