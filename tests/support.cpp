@@ -1,5 +1,6 @@
 #include "support.h"
 #include "io/lookups_csv.h"
+#include "vulkan/loader.h"
 
 #include <algorithm>
 #include <climits>
@@ -9,6 +10,7 @@
 #include <fstream>
 #include <random>
 #include <system_error>
+#include <utility>
 
 #include <glm/common.hpp>
 #include <sys/wait.h>
@@ -173,14 +175,36 @@ ContextOptions test_context_options()
 const DeviceInfo& test_device_info()
 {
     static const DeviceInfo info = [] {
+        // destroy_instance gives volk's entry points back to a context the test made before this one (they
+        // would otherwise be this instance's, destroyed: a crash at that context's end).
         VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
         VkInstance instance = create_instance(false, &messenger);
         const std::vector<DeviceInfo> devices = list_devices(instance);
         const DeviceInfo chosen = devices[size_t(select_device(devices, test_device()))];
-        vkDestroyInstance(instance, nullptr);
+        destroy_instance(instance);
         return chosen;
     }();
     return info;
+}
+
+namespace {
+std::vector<std::function<void()>>& end_of_run_tasks()
+{
+    static std::vector<std::function<void()>> tasks;
+    return tasks;
+}
+} // namespace
+
+void at_end_of_run(std::function<void()> task) { end_of_run_tasks().push_back(std::move(task)); }
+
+void run_end_of_run()
+{
+    std::vector<std::function<void()>>& tasks = end_of_run_tasks();
+    while (!tasks.empty()) {
+        std::function<void()> task = std::move(tasks.back());
+        tasks.pop_back();
+        task();
+    }
 }
 
 fs::path make_work_dir(const std::string& name)

@@ -15,6 +15,7 @@
 
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,12 @@ std::string test_device();
 ContextOptions test_context_options();
 // The device's properties (tolerances come from its precision bits); read once a process.
 const DeviceInfo& test_device_info();
+
+// What must end when the test run ends, before main returns (newest first), not in a static destructor:
+// Vulkan objects (by then the loader's and the driver's own exit handlers may have run). main calls
+// run_end_of_run.
+void at_end_of_run(std::function<void()> task);
+void run_end_of_run();
 
 // A fresh directory texfilter-<name>-<pid> in the system's temp dir, removed when the process exits.
 std::filesystem::path make_work_dir(const std::string& name);

@@ -29,5 +29,7 @@ int main(int argc, char** argv)
         if (std::string(argv[i]) == "--tf-list-checks")
             tf::test::set_listing_checks(); // named checks print their ids (support.h); doctest ignores the flag
     doctest::Context context(argc, argv);
-    return context.run();
+    const int status = context.run();
+    tf::test::run_end_of_run(); // Vulkan objects the cases kept end here, not in static destructors
+    return status;
 }

@@ -31,6 +31,7 @@
 #include "reference/render.h"
 #include "reference/resources.h"
 #include "reference/stochastic.h"
+#include "device_lod.h"
 #include "support.h"
 #include "vulkan/resource_images.h"
 
@@ -343,6 +344,8 @@ void check_pcf_hardware(Filter hw, Filter manual)
     const MipChain lit = compare_chain(chains_of(m)[0], m.resource.compare, double(m.resource.dref));
     const int top = int(lit.levels.size()) - 1;
     const double e = 2 * mipmap_step();
+    const std::vector<double> device_lods =
+        manual == Filter::trilinear ? test::device_lods(g_texfilter, g_work, lookups_path(), ls, kSize) : std::vector<double>();
     test::limit_failure_lines(8);
     double worst = 0;
     int partial = 0;
@@ -359,15 +362,15 @@ void check_pcf_hardware(Filter hw, Filter manual)
         } else if (manual == Filter::bilinear) {
             bound = pcf_bilinear_bound(lit.levels[0], l.u, l.v, m.options.wrap);
         } else {
+            // The manual filter at the exact lambda, the hardware at its own (measured on mipcolors, Vulkan's
+            // scale-factor bounds checked there: device_lod.h), +- e.
             const double lambda = std::clamp(reference_lod(lit, l, m.options), 0.0, double(top));
             const glm::dvec4 centre = reference_trilinear_at(lit, lambda, l.u, l.v, m.options.wrap);
-            std::vector<double> probes = {lambda - e, lambda + e};
-            for (int k = int(std::ceil(lambda - e)); k <= int(std::floor(lambda + e)); ++k)
-                probes.push_back(k);
             double spread = 0, weights = 0;
-            for (double d : probes)
+            for (double d : test::lod_probes(lambda, device_lods[i], e))
                 spread = std::max(spread, max_channel_diff(reference_trilinear_at(lit, d, l.u, l.v, m.options.wrap), centre));
-            for (int level = std::max(0, int(lambda - e)); level <= std::min(top, int(lambda + e) + 1); ++level)
+            const double first = std::min(lambda, device_lods[i]) - e, last = std::max(lambda, device_lods[i]) + e;
+            for (int level = std::max(0, int(first)); level <= std::min(top, int(last) + 1); ++level)
                 weights = std::max(weights, pcf_bilinear_bound(lit.levels[size_t(level)], l.u, l.v, m.options.wrap));
             bound = spread + weights;
         }

@@ -101,17 +101,46 @@ TEST_CASE("gradients-vs-reference")
 
 // 3. The mesh scene (raster pipeline, perspective-correct uv, helper invocations past triangle edges) vs
 //    the reference's ray-cast triangles with helper-style extrapolation. Coverage at shared edges follows
-//    the rasterizer's top-left rule there and a float32 edge test here: a few edge pixels.
+//    the rasterizer's top-left rule there and a float32 edge test here: a few edge pixels. The rasterizer
+//    snaps vertices to subPixelPrecisionBits fraction bits of a pixel (Vulkan "Rasterization"; the device's
+//    reported precision), which moves each triangle's uv plane by up to 2^-bits pixels: a pixel may show the
+//    scene that far from its centre. So each pixel is allowed 1e-3 plus the reference's largest change when the
+//    pixel centres move by 2^-bits in x or in y (an NVIDIA H200 differs by up to 1.7e-3 on 7.5 % of the pixels).
+Image shifted_reference(SceneParams scene, const MipChain& chain, const SamplerOptions& options,
+                        const RenderOptions& render, double dx, double dy)
+{
+    // The rays are forward + ndc_x right + ndc_y up, ndc_x = 2 px / width - 1, ndc_y = 1 - 2 py / height.
+    scene.forward += float(2.0 * dx / scene.kind_size.y) * scene.right - float(2.0 * dy / scene.kind_size.z) * scene.up;
+    return reference_render(scene, chain, options, render);
+}
+
 TEST_CASE("mesh-raster-vs-reference")
 {
     Stages st;
     SceneParams scene = make_scene(SceneKind::mesh, 128, 96, 256);
     RenderOptions render = make_render_options(SceneKind::mesh, Stage::fragment, Gradients::fine);
-    Comparison c = compare(gpu_render(st.context, st.texture, scene, st.trilinear, render),
-                           reference_render(scene, st.checker, st.trilinear, render), 1e-3);
-    double percent = 100.0 * c.over / (128.0 * 96.0);
-    std::printf("mesh       fine   raster vs reference: %d pixels (%.3f%%) beyond 1e-3, max %g\n", c.over, percent,
-                c.max_difference);
+    const Image gpu = gpu_render(st.context, st.texture, scene, st.trilinear, render);
+    const Image reference = reference_render(scene, st.checker, st.trilinear, render);
+    const double snap = std::ldexp(1.0, -int(test::test_device_info().sub_pixel_precision_bits));
+    std::vector<double> allowance(reference.texels.size(), 1e-3);
+    for (const glm::dvec2 shift : {glm::dvec2(snap, 0), glm::dvec2(-snap, 0), glm::dvec2(0, snap), glm::dvec2(0, -snap)}) {
+        const Image moved = shifted_reference(scene, st.checker, st.trilinear, render, shift.x, shift.y);
+        for (size_t i = 0; i < allowance.size(); ++i)
+            allowance[i] = std::max(allowance[i], 1e-3 + test::max_channel_diff(glm::dvec4(moved.texels[i]),
+                                                                                 glm::dvec4(reference.texels[i])));
+    }
+    int over = 0;
+    double worst = 0, max_difference = 0;
+    for (size_t i = 0; i < gpu.texels.size(); ++i) {
+        const double d = test::max_channel_diff(glm::dvec4(gpu.texels[i]), glm::dvec4(reference.texels[i]));
+        max_difference = std::max(max_difference, d);
+        worst = std::max(worst, d / allowance[i]);
+        over += d > allowance[i];
+    }
+    double percent = 100.0 * over / (128.0 * 96.0);
+    std::printf("mesh       fine   raster vs reference: %d pixels (%.3f%%) beyond 1e-3 + a 2^-%u pixel shift's change, "
+                "max %g, worst difference/allowance %.3f\n",
+                over, percent, test::test_device_info().sub_pixel_precision_bits, max_difference, worst);
     CHECK(percent <= 0.1, test::show(percent));
 }
 

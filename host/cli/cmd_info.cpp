@@ -20,7 +20,7 @@ int run_info(const std::vector<std::string>& argv)
     std::vector<DeviceInfo> devices = list_devices(instance);
     if (messenger)
         vkDestroyDebugUtilsMessengerEXT(instance, messenger, nullptr);
-    vkDestroyInstance(instance, nullptr);
+    destroy_instance(instance);
 
     std::printf("image I/O: %s\n", image_io_available() ? "OpenImageIO" : "left out of this build");
     for (const DeviceInfo& d : devices) {

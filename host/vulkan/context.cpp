@@ -85,7 +85,7 @@ void destroy_context(VulkanContext& context)
     if (context.messenger)
         vkDestroyDebugUtilsMessengerEXT(context.instance, context.messenger, nullptr);
     if (context.instance)
-        vkDestroyInstance(context.instance, nullptr);
+        destroy_instance(context.instance);
     context = VulkanContext{};
 }
 

@@ -20,6 +20,7 @@ struct DeviceInfo {
     uint32_t driver_version = 0;
     uint32_t sub_texel_precision_bits = 0;
     uint32_t mipmap_precision_bits = 0;
+    uint32_t sub_pixel_precision_bits = 0; // rasterization: the fraction bits of a vertex's pixel position
     float max_sampler_anisotropy = 0;
     float max_sampler_lod_bias = 0;
     uint32_t max_image_dimension_2d = 0;

@@ -100,6 +100,7 @@ std::vector<DeviceInfo> list_devices(VkInstance instance)
         d.driver_version = properties.properties.driverVersion;
         d.sub_texel_precision_bits = limits.subTexelPrecisionBits;
         d.mipmap_precision_bits = limits.mipmapPrecisionBits;
+        d.sub_pixel_precision_bits = limits.subPixelPrecisionBits;
         d.max_sampler_anisotropy = limits.maxSamplerAnisotropy;
         d.max_sampler_lod_bias = limits.maxSamplerLodBias;
         d.max_image_dimension_2d = limits.maxImageDimension2D;

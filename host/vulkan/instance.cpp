@@ -93,7 +93,7 @@ VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger,
     TF_VK(result);
     load_instance_functions(instance);
     Cleanup on_failure;
-    on_failure.add([=] { vkDestroyInstance(instance, nullptr); });
+    on_failure.add([=] { destroy_instance(instance); });
     if (validate)
         TF_VK(vkCreateDebugUtilsMessengerEXT(instance, &messenger_info, nullptr, messenger));
     on_failure.dismiss();

@@ -1,6 +1,8 @@
 #include "vulkan/loader.h"
 #include "texture/error.h"
+#include <algorithm>
 #include <dlfcn.h>
+#include <vector>
 
 // volk's definitions (its function pointers and loaders), compiled once, here.
 #define VOLK_IMPLEMENTATION
@@ -28,7 +30,28 @@ void load_vulkan()
         throw Error("the Vulkan loader is older than Vulkan 1.1; texfilter needs a Vulkan 1.3 loader and driver");
 }
 
-void load_instance_functions(VkInstance instance) { volkLoadInstanceOnly(instance); }
+namespace {
+std::vector<VkInstance>& live_instances() // in the order they were made
+{
+    static std::vector<VkInstance> live;
+    return live;
+}
+} // namespace
+
+void load_instance_functions(VkInstance instance)
+{
+    live_instances().push_back(instance);
+    volkLoadInstanceOnly(instance);
+}
+
+void destroy_instance(VkInstance instance)
+{
+    vkDestroyInstance(instance, nullptr);
+    std::vector<VkInstance>& live = live_instances();
+    live.erase(std::remove(live.begin(), live.end(), instance), live.end());
+    if (!live.empty() && volkGetLoadedInstance() != live.back())
+        volkLoadInstanceOnly(live.back());
+}
 
 void load_device_functions(VkDevice device) { volkLoadDevice(device); }
 

@@ -11,5 +11,9 @@ void load_vulkan();
 // After vkCreateInstance / vkCreateDevice: the instance's and then the device's entry points (volk).
 void load_instance_functions(VkInstance instance);
 void load_device_functions(VkDevice device);
+// vkDestroyInstance, then volk's instance entry points go back to the newest instance still alive (volk holds
+// one instance's: a second instance, made and destroyed while a context lives, e.g. to read a device's
+// properties, left that context with the destroyed one's vkDestroy* pointers).
+void destroy_instance(VkInstance instance);
 
 } // namespace tf
