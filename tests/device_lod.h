@@ -39,7 +39,8 @@ std::vector<double> device_lods(const std::string& texfilter, const std::filesys
                                 const std::string& lookups_csv, const std::vector<Lookup>& lookups, int size);
 
 // The λ at which a function piecewise linear in λ between whole levels (trilinear, one PCF level pair)
-// takes its extremes over [min(a, b) - e, max(a, b) + e]: the ends and the whole levels inside.
+// takes its extremes over [min(a, b) - e, max(a, b) + e]: the ends (first, in that order) and the whole levels
+// inside.
 std::vector<double> lod_probes(double a, double b, double e);
 
 } // namespace tf::test

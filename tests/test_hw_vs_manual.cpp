@@ -211,8 +211,7 @@ void compare_trilinear(const std::string& texture, Wrap wrap, TextureFormat form
             const std::vector<double> probes = test::lod_probes(lambda, device[i], lod_error);
             for (double d : probes)
                 spread = std::max(spread, max_channel_diff(at(d), centre));
-            const double first = std::min(lambda, device[i]) - lod_error, last = std::max(lambda, device[i]) + lod_error;
-            for (int level = std::max(0, int(first)); level <= std::min(top, int(last) + 1); ++level)
+            for (int level = std::max(0, int(probes[0])); level <= std::min(top, int(probes[1]) + 1); ++level)
                 weights = std::max(weights, bilinear_tolerance(chain.levels[size_t(level)], l.u, l.v, wrap));
             tally.add(max_channel_diff(manual[i], hw[i]), spread + weights + format_allowance(format, manual[i]), i,
                       manual[i], hw[i]);

@@ -367,10 +367,10 @@ void check_pcf_hardware(Filter hw, Filter manual)
             const double lambda = std::clamp(reference_lod(lit, l, m.options), 0.0, double(top));
             const glm::dvec4 centre = reference_trilinear_at(lit, lambda, l.u, l.v, m.options.wrap);
             double spread = 0, weights = 0;
-            for (double d : test::lod_probes(lambda, device_lods[i], e))
+            const std::vector<double> probes = test::lod_probes(lambda, device_lods[i], e);
+            for (double d : probes)
                 spread = std::max(spread, max_channel_diff(reference_trilinear_at(lit, d, l.u, l.v, m.options.wrap), centre));
-            const double first = std::min(lambda, device_lods[i]) - e, last = std::max(lambda, device_lods[i]) + e;
-            for (int level = std::max(0, int(first)); level <= std::min(top, int(last) + 1); ++level)
+            for (int level = std::max(0, int(probes[0])); level <= std::min(top, int(probes[1]) + 1); ++level)
                 weights = std::max(weights, pcf_bilinear_bound(lit.levels[size_t(level)], l.u, l.v, m.options.wrap));
             bound = spread + weights;
         }
