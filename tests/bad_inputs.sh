@@ -59,7 +59,7 @@ run_command() {
     timeout "$COMMAND_TIMEOUT" "$@" >stdout 2>stderr || rc=$?
 }
 
-# Temporary outputs are named OUT.tmp-PID; any left behind means a failure path forgot to clean up.
+# Temporary outputs are named OUT.tmp-XXXXXX; any left behind means a failure path forgot to clean up.
 leftover_temporaries() {
     find . -name '*.tmp-*' -print
 }
@@ -707,6 +707,123 @@ signals_remove_temporaries() {
     rm -f "$long"
 }
 
+# Temporaries are created exclusively under random names: whatever sits at the old predictable names
+# (NAME.tmp-PID, DIR.tmp-PID/) is never written, adopted or removed. Each case plants it for the PID the
+# command will have: a subshell's $BASHPID is kept by exec.
+exclusive_temporaries() {
+    cp ok.png input.png && cp good.csv input.csv
+    local input_sum csv_sum
+    input_sum=$(cksum <input.png)
+    csv_sum=$(cksum <input.csv)
+    # A link at the render's old temporary name, to its own texture: writing through it destroyed the input.
+    run_command bash -c 'ln -s input.png "out.png.tmp-$BASHPID"; echo foreign >"out.exr.tmp-$BASHPID"
+        exec "$@" -o out.png' _ "$TEXFILTER" render --scene zoom --texture input.png --filter nearest "${REF[@]}"
+    if [[ $rc -ne 0 || $(cksum <input.png) != "$input_sum" || -L out.png || ! -s out.png ]]; then
+        fail "render with a link planted at OUT.tmp-PID" "exit $rc; the texture must be unchanged and out.png a new file"
+    elif [[ $(find . -maxdepth 1 -name 'out.png.tmp-*' -type l | wc -l) -ne 1 ]]; then
+        fail "render with a link planted at OUT.tmp-PID" "the planted link was removed or replaced"
+    else
+        pass "render with a link planted at OUT.tmp-PID"
+    fi
+    # The same for sample and its lookups file.
+    run_command bash -c 'ln -s input.csv "out.csv.tmp-$BASHPID"; exec "$@"' _ "$TEXFILTER" sample --texture checker \
+        --filter bilinear --backend reference --lookups input.csv -o out.csv
+    if [[ $rc -ne 0 || $(cksum <input.csv) != "$csv_sum" || -L out.csv || ! -s out.csv ]]; then
+        fail "sample with a link planted at OUT.tmp-PID" "exit $rc; the lookups must be unchanged and out.csv a new file"
+    else
+        pass "sample with a link planted at OUT.tmp-PID"
+    fi
+    # A file someone left at the old name is neither overwritten nor renamed onto the output.
+    run_command bash -c 'echo theirs >"left.png.tmp-$BASHPID"; exec "$@" -o left.png' _ "${RENDER[@]}"
+    if [[ $rc -ne 0 || $(cat left.png.tmp-* 2>/dev/null) != theirs ]] || ! cmp -s left.png ok.png; then
+        fail "render with a file left at OUT.tmp-PID" "exit $rc; the file must be kept and left.png rendered"
+    else
+        pass "render with a file left at OUT.tmp-PID"
+    fi
+    # build --out adopted a foreign DIR.tmp-PID/ and published its files with the results.
+    run_command bash -c 'mkdir "built.tmp-$BASHPID" && echo theirs >"built.tmp-$BASHPID/notes.txt"; exec "$@"' _ \
+        "$TEXFILTER" build --texture checker --texture-size 16 --build cpu --out built
+    if [[ $rc -ne 0 || -e built/notes.txt || ! -s built/build.txt || $(cat built.tmp-*/notes.txt 2>/dev/null) != theirs ]]; then
+        fail "build with a directory planted at DIR.tmp-PID" "exit $rc; its file must stay there and not reach built/"
+    else
+        pass "build with a directory planted at DIR.tmp-PID"
+    fi
+    # SIGTERM during bench removed a foreign DIR.tmp-PID/ with everything in it.
+    if "$TEXFILTER" info >/dev/null 2>&1; then
+        bash -c 'mkdir "bench-out.tmp-$BASHPID" && echo theirs >"bench-out.tmp-$BASHPID/keep.txt"
+            exec "$@"' _ "$TEXFILTER" bench --quick --scenes zoom --out bench-out >stdout 2>stderr &
+        local pid=$! ours=0
+        for _ in $(seq 1 3000); do # until bench's own staging directory exists (or it ends)
+            if [[ $(find . -maxdepth 1 -name 'bench-out.tmp-*' -type d | wc -l) -ge 2 ]]; then
+                ours=1
+                break
+            fi
+            kill -0 "$pid" 2>/dev/null || break
+            sleep 0.01
+        done
+        kill -TERM "$pid" 2>/dev/null || true
+        rc=0
+        wait "$pid" || rc=$?
+        if [[ $ours -ne 1 && ( -e bench-out/keep.txt || $(cat bench-out.tmp-*/keep.txt 2>/dev/null) != theirs ) ]]; then
+            fail "SIGTERM during bench beside a foreign DIR.tmp-PID" "bench adopted or removed the foreign folder (exit $rc)"
+        elif [[ $ours -ne 1 ]]; then
+            skip "SIGTERM during bench beside a foreign DIR.tmp-PID" "bench's staging directory never appeared (exit $rc)"
+        elif [[ $rc -ne 143 || $(cat bench-out.tmp-*/keep.txt 2>/dev/null) != theirs ||
+            $(find . -maxdepth 1 -name 'bench-out.tmp-*' | wc -l) -ne 1 || -e bench-out ]]; then
+            fail "SIGTERM during bench beside a foreign DIR.tmp-PID" "exit $rc; the foreign folder must stay, bench's own go"
+        else
+            pass "SIGTERM during bench beside a foreign DIR.tmp-PID"
+        fi
+    else
+        skip "SIGTERM during bench beside a foreign DIR.tmp-PID" "no usable Vulkan device here"
+    fi
+    rm -rf input.png input.csv out.png out.csv out.*.tmp-* left.png left.png.tmp-* built built.tmp-* bench-out \
+        bench-out.tmp-* \
+        stdout stderr
+}
+
+# The output is created (as its temporary) before the work: the file system says whether it can be written,
+# not access(), which says yes to root everywhere. The wrong device proves that nothing ran first.
+outputs_created_first() {
+    if [[ $(id -u) -ne 0 ]]; then
+        skip "outputs in /proc as root" "not root: access() already says no there"
+    else
+        expect_error "render -o /proc/x.exr as root" "/proc/x.exr: cannot create files in /proc" - -- \
+            "$TEXFILTER" render --scene zoom --texture checker --filter nearest --device 99 -o /proc/x.exr
+        expect_error "build --out /proc/x as root" "/proc/x: cannot create a directory in /proc" - -- \
+            "$TEXFILTER" build --texture checker --device 99 --out /proc/x
+        expect_error "bench --out /proc/x as root" "/proc/x: cannot create a directory in /proc" - -- \
+            "$TEXFILTER" bench --quick --device 99 --out /proc/x
+    fi
+    # A parent that is a file is named as one.
+    expect_error "render -o under a file" "ok.png is a file, not a directory" - -- "${RENDER[@]}" -o ok.png/x.png
+    # --out through a link to an empty directory: the link is followed, as -o follows one.
+    mkdir -p empty-target && ln -s empty-target out-link
+    run_command "$TEXFILTER" build --texture checker --texture-size 16 --build cpu --out out-link
+    if [[ $rc -ne 0 || ! -L out-link || ! -s empty-target/build.txt ]]; then
+        fail "build --out a link to an empty directory" "exit $rc; the link must stay and its directory get the results"
+    else
+        pass "build --out a link to an empty directory"
+    fi
+    expect_error "build --out a link to a directory that is not empty" "out-link (a link to" - -- \
+        "$TEXFILTER" build --texture checker --texture-size 16 --build cpu --out out-link
+    rm -rf empty-target out-link
+    # Two golden runs into one --out: the second is refused while the first holds the directory.
+    if command -v flock >/dev/null && "$TEXFILTER" info >/dev/null 2>&1; then
+        mkdir -p busy
+        local lock_fd
+        exec {lock_fd}<busy
+        flock -n "$lock_fd" # held by this shell as another run would hold it
+        expect_error "golden --out a directory another run is writing" "another texfilter run is writing" - -- \
+            "$TEXFILTER" golden --case "$(awk '!/^#/ && NF { print $1; exit }' "$GOLDEN_DIR/manifest.txt")" --out busy
+        [[ -z $(ls -A busy) ]] || fail "golden --out a directory another run is writing" "it wrote $(ls -A busy)"
+        exec {lock_fd}<&-
+        rm -rf busy
+    else
+        skip "golden --out a directory another run is writing" "no flock(1) or no usable Vulkan device here"
+    fi
+}
+
 # Issue 10, item 4: truncated images are errors naming the file.
 truncated_images() {
     local render=("$TEXFILTER" render --scene zoom --filter nearest "${REF[@]}")
@@ -943,7 +1060,7 @@ environment_maps() {
 CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_resources diff_contract ground_truth_and_bench_errors
     golden_errors vulkan_errors golden_output_directory outputs_and_inputs unwritable_outputs
     signals_remove_temporaries truncated_images memory_budgets lookups_and_texels reproducible_outputs
-    bad_formats gpu_builds environment_maps)
+    bad_formats gpu_builds environment_maps exclusive_temporaries outputs_created_first)
 if [[ ${#SELECTED[@]} -eq 0 ]]; then
     SELECTED=("${CASE_GROUPS[@]}")
 fi

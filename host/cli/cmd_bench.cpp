@@ -211,13 +211,13 @@ int run_bench(const std::vector<std::string>& argv)
         out_text.pop_back();
     fs::path out = out_text;
     check_new_directory(out.string(), "bench --out");
+    StagingDirectory staging(out.string()); // made before any work: the real test that --out can be written
     GpuSession gpu(context_options_from(args));
     // Every filter runs, the SAT ones too: the texture must fit the table, the memory budget and the device.
     const DeviceLimits limits = device_limits(gpu.context.info);
     for (const BenchFilter& f : config.filters)
         check_format_support(gpu.context, config.texture.format, f.options);
     MipChain chain = load_texture(config.texture, {true, &limits});
-    StagingDirectory staging(out.string());
 
     bool cpu_device = gpu.context.info.type == "cpu";
     config.timer = parse_flag(args, "--timer", cpu_device ? "wall-clock" : "timestamps", parse_frame_timer);

@@ -121,6 +121,7 @@ int run_build(const std::vector<std::string>& argv)
     }
     const std::string out = args.require("--out");
     check_new_directory(out, "build --out");
+    StagingDirectory staging(out); // made before any work: the real test that --out can be written
     if (with_sat)
         check_texture(source, {true, nullptr}); // a texture too big for the table fails here, before any work
 
@@ -136,7 +137,6 @@ int run_build(const std::vector<std::string>& argv)
         built = build_on_host(source, with_sat);
     }
 
-    StagingDirectory staging(out);
     std::ostringstream summary;
     const Image& base = built.chain.levels[0];
     summary << "texture " << source.name_or_path << " " << base.width << "x" << base.height << ", format "

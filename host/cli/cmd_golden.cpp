@@ -16,6 +16,8 @@
 #include "io/report.h"
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 
 #ifndef TEXFILTER_SOURCE_DIR
@@ -99,6 +101,15 @@ Image render_environment_case(const VulkanContext& context, const GoldenCase& c,
     return gpu_render_environment(context, gpu, scene, c.sampler, c.render, &pipelines);
 }
 
+// A golden's bytes, copied beside the failure images as they are.
+std::string file_bytes(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in.is_open())
+        throw Error(path + ": cannot read the golden again");
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 // "cpu", "gpu" or "cpu,gpu".
 std::vector<std::string> split_list_of_builds(const std::string& text)
 {
@@ -167,12 +178,12 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
             entry.diff_png = "diff/" + label + ".png";
             for (const std::string* file : {&entry.actual_png, &entry.golden_png, &entry.diff_png}) {
                 record_file(out, *file);
-                fs::create_directories(fs::path(run.out_dir) / fs::path(*file).parent_path());
+                fs::create_directories(fs::path(out.path) / fs::path(*file).parent_path());
             }
-            write_image(run.out_dir + "/" + entry.actual_png, actual);
-            fs::copy_file(golden_path(run, c), run.out_dir + "/" + entry.golden_png, fs::copy_options::overwrite_existing);
+            write_image(out.path + "/" + entry.actual_png, actual);
+            write_file_atomic(out.path + "/" + entry.golden_png, file_bytes(golden_path(run, c)));
             // Amplified so that one 8-bit step shows; the diff is of sRGB-encoded values.
-            write_image(run.out_dir + "/" + entry.diff_png, diff_image(encoded, golden, 32.0));
+            write_image(out.path + "/" + entry.diff_png, diff_image(encoded, golden, 32.0));
         }
         std::printf("%-40s %s  max %.5f  over %.3f%%\n", label.c_str(), result.pass ? "PASS" : "FAIL",
                     result.max_error, result.fail_percent);
@@ -184,7 +195,7 @@ int check_goldens(const GoldenRun& run, const ContextOptions& context_options)
     environment_pipelines.reset();
     gpu.finish();
     record_file(out, "report.html");
-    std::string report_path = run.out_dir + "/report.html";
+    std::string report_path = out.path + "/report.html";
     write_html_report(report_path, "texfilter golden regression on " + device_name, report);
     if (skipped)
         std::printf("%zu cases, %d failed, %d skipped (--build gpu cannot build them); report: %s\n", run.cases.size(),

@@ -119,17 +119,11 @@ void write_image(const std::string& path, const Image& image) {
                     std::to_string(image.height) + " image");
     const tf_oiio_api& api = image_io_module();
 
-    const std::string temp = temporary_path_for(path);
-    Call call;
-    call.check(api.write_rgba(path.c_str(), temp.c_str(), png, image.width, image.height,
-                              reinterpret_cast<const float*>(image.texels.data()), &call.c)); // removed temp on failure
-    std::error_code ec;
-    fs::rename(temp, path, ec);
-    if (ec) {
-        const std::string why = ec.message();
-        fs::remove(temp, ec);
-        throw Error(path + ": cannot move the finished file into place: " + why);
-    }
+    write_output(path, [&](int fd) {
+        Call call;
+        call.check(api.write_rgba(path.c_str(), fd, png, image.width, image.height,
+                                  reinterpret_cast<const float*>(image.texels.data()), &call.c));
+    });
 }
 
 } // namespace tf

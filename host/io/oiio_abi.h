@@ -18,7 +18,7 @@ extern "C" {
 #endif
 
 // Bumped whenever the table or a call's meaning changes: the loader refuses any other.
-#define TF_OIIO_ABI_VERSION 1
+#define TF_OIIO_ABI_VERSION 2
 // The one symbol the module exports: tf_oiio_api_v1() returns its table.
 #define TF_OIIO_ENTRY "tf_oiio_api_v1"
 
@@ -47,9 +47,9 @@ struct tf_oiio_api {
     // read_image/read_image_into/read_image_raw: raw != 0 decodes nothing (read_image_raw), else
     // space (TF_OIIO_*) decides as image_io.h says.
     int (*read_rgba)(const char* path, int max_dimension, int raw, int space, const struct tf_oiio_call* call);
-    // write_image's .png (png != 0: 8-bit sRGB) or .exr (half linear) into temporary_path, which is removed
-    // again on failure; messages name path. The caller renames it into place.
-    int (*write_rgba)(const char* path, const char* temporary_path, int png, int width, int height,
+    // write_image's .png (png != 0: 8-bit sRGB) or .exr (half linear) into fd, the open temporary file the
+    // host created (never reopened by name); messages name path. The caller closes and renames it.
+    int (*write_rgba)(const char* path, int fd, int png, int width, int height,
                       const float* rgba, const struct tf_oiio_call* call);
 };
 

@@ -7,11 +7,14 @@
 #include "texture/error.h"
 #include "texture/image.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -381,9 +384,10 @@ tf_oiio_header read_header(const std::string& path, int max_dimension) {
     return header;
 }
 
-// write_image's OIIO half: the host has checked the path, the format and the image, and renames the result.
-void write_rgba(const std::string& path, const std::string& temp, bool png, int width, int height,
-                const glm::vec4* texels) {
+// write_image's OIIO half: the host has checked the path, the format and the image, created the temporary
+// file `fd` is open on, and renames it. OIIO writes through an I/O proxy on that descriptor: it never opens
+// a path itself, so nothing put in the temporary's place can be written.
+void write_rgba(const std::string& path, int fd, bool png, int width, int height, const glm::vec4* texels) {
     const size_t count = size_t(width) * size_t(height);
     // Created by format name, because the temporary file's extension is not .png/.exr.
     auto out = OIIO::ImageOutput::create(png ? "png" : "openexr");
@@ -409,30 +413,31 @@ void write_rgba(const std::string& path, const std::string& temp, bool png, int 
         spec.attribute("DateTime", "");  // an empty value keeps OIIO from stamping the time: same image, same bytes
     }
 
-    auto give_up = [&](const std::string& what) {
-        if (out) {
-            out->geterror();
-            out.reset();  // closes a half-written file before it is removed
-        }
-        std::error_code ec;
-        fs::remove(temp, ec);
-        throw Error(path + ": " + what);
-    };
-
+    const int own = dup(fd);  // fclose closes this copy; the host closes fd
+    FILE* file = own >= 0 ? fdopen(own, "wb") : nullptr;
+    if (!file) {
+        if (own >= 0) close(own);
+        throw Error(path + ": cannot write the file (" + std::strerror(errno) + ")");
+    }
+    OIIO::Filesystem::IOFile proxy(file, OIIO::Filesystem::IOProxy::Write);
     bool ok = false;
     std::string oiio_error;
     try {
-        ok = out->open(temp, spec);
+        out->set_ioproxy(&proxy);
+        ok = out->open(path, spec);
         if (ok) ok = out->write_image(data_type, data);
         if (ok) ok = out->close();
     } catch (const std::exception& e) {
         oiio_error = e.what();
         ok = false;
     }
-    if (!ok) {
-        if (oiio_error.empty()) oiio_error = out->geterror();
-        give_up("cannot write: " + oiio_message(oiio_error));
-    }
+    if (!ok && oiio_error.empty()) oiio_error = out->geterror();
+    out.reset();
+    const bool flushed = std::fflush(file) == 0 && !std::ferror(file);
+    const int flush_error = errno;
+    std::fclose(file);
+    if (!ok) throw Error(path + ": cannot write: " + oiio_message(oiio_error));
+    if (!flushed) throw Error(path + ": cannot write the file (" + std::strerror(flush_error) + ")");
 }
 
 // Runs one entry's work: 1, or 0 with the error handed to the host (nothing is thrown across the table).
@@ -465,10 +470,10 @@ int api_read_rgba(const char* path, int max_dimension, int raw, int space, const
     return guarded(call, [&] { read_rgba(path, max_dimension, raw != 0, space, *call); });
 }
 
-int api_write_rgba(const char* path, const char* temporary_path, int png, int width, int height, const float* rgba,
+int api_write_rgba(const char* path, int fd, int png, int width, int height, const float* rgba,
                    const tf_oiio_call* call) {
     return guarded(call, [&] {
-        write_rgba(path, temporary_path, png != 0, width, height, reinterpret_cast<const glm::vec4*>(rgba));
+        write_rgba(path, fd, png != 0, width, height, reinterpret_cast<const glm::vec4*>(rgba));
     });
 }
 

@@ -16,15 +16,18 @@ struct OwnedDirectory {
 // Before any work: creates `path` (its parent must exist and be writable), or takes an existing empty
 // directory, or one that an earlier run of `command` marked, removing the files that run listed (an old
 // failure image would mislead). Refuses anything else, naming the path and why. The marker is written at once.
+// The directory stays locked (flock) until the process ends: a second run into it is refused. A symbolic
+// link to a directory is followed.
 OwnedDirectory claim_directory(const std::string& path, const std::string& command);
 
 // A results directory written whole or not at all (bench --out, build --out): `out` must be new or an empty
-// directory whose parent is writable (checked_new_directory, before any work); the files go to a staging
-// directory beside it, which publish() renames into place. A staging directory not published is removed
-// (an error, a signal: temporary_path_for registers it with the signal cleanup).
+// directory whose parent is writable (check_new_directory, before any work; a link to one is followed);
+// the files go to a private staging directory beside it (io/temporary_files.h: created exclusively under a
+// random name), which publish() renames into place. A staging directory not published is removed (an
+// error, a signal, an exit).
 void check_new_directory(const std::string& out, const std::string& what);
 struct StagingDirectory {
-    std::string path;   // beside the target, unique per process
+    std::string path;   // beside the target: NAME.tmp-XXXXXX
     std::string target;
     bool published = false;
     explicit StagingDirectory(const std::string& target); // creates it

@@ -7,7 +7,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <map>
+#include <mutex>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -24,6 +25,8 @@ std::string lower(std::string s)
 }
 
 std::string errno_text(int error) { return std::strerror(error); }
+
+bool same_file(const struct stat& a, const struct stat& b) { return a.st_dev == b.st_dev && a.st_ino == b.st_ino; }
 
 // Follows a chain of symbolic links to the path that will really be written (which need not exist yet).
 fs::path follow_links(const std::string& path)
@@ -43,9 +46,50 @@ fs::path follow_links(const std::string& path)
     }
 }
 
-bool same_file(const struct stat& a, const struct stat& b) { return a.st_dev == b.st_dev && a.st_ino == b.st_ino; }
+// The first ancestor of `directory` that exists but is not a directory ("a/file.png" for a/file.png/x),
+// or "" when there is none (then a part is simply missing).
+std::string file_in_the_way(const fs::path& directory)
+{
+    for (fs::path p = directory; !p.empty() && p != p.root_path(); p = p.parent_path()) {
+        struct stat status {};
+        if (stat(p.c_str(), &status) == 0)
+            return S_ISDIR(status.st_mode) ? "" : p.string();
+    }
+    return "";
+}
+
+// Temporaries made by checked_output_path, by the target they will become, until write_output uses them.
+std::mutex reservations_mutex;
+std::map<std::string, TemporaryFile>& reservations()
+{
+    static std::map<std::string, TemporaryFile> files;
+    return files;
+}
+
+void reserve_temporary(const std::string& target)
+{
+    std::lock_guard<std::mutex> lock(reservations_mutex);
+    if (reservations().count(target) == 0)
+        reservations()[target] = create_temporary_file(target);
+}
+
+TemporaryFile take_temporary(const std::string& target)
+{
+    {
+        std::lock_guard<std::mutex> lock(reservations_mutex);
+        auto it = reservations().find(target);
+        if (it != reservations().end()) {
+            TemporaryFile file = it->second;
+            reservations().erase(it);
+            return file;
+        }
+    }
+    return create_temporary_file(target);
+}
 
 } // namespace
+
+std::string end_of_links(const std::string& path) { return follow_links(path).string(); }
 
 void check_writable_directory(const std::string& directory, const std::string& what)
 {
@@ -89,10 +133,11 @@ std::string checked_output_path(const std::string& path, const std::vector<std::
 
     const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     struct stat parent_status {};
-    if (stat(parent.c_str(), &parent_status) != 0 || !S_ISDIR(parent_status.st_mode))
+    if (stat(parent.c_str(), &parent_status) != 0 || !S_ISDIR(parent_status.st_mode)) {
+        if (const std::string file = file_in_the_way(parent); !file.empty())
+            throw Error(shown + ": " + file + " is a file, not a directory");
         throw Error(shown + ": the output directory " + parent.string() + " does not exist");
-    if (access(parent.c_str(), W_OK | X_OK) != 0)
-        throw Error(shown + ": cannot create files in " + parent.string() + " (" + errno_text(errno) + ")");
+    }
     // The name itself must fit the file system, or the finished file could not be moved into place.
     const long name_max = pathconf(parent.c_str(), _PC_NAME_MAX);
     const size_t name_size = target.filename().string().size();
@@ -107,46 +152,55 @@ std::string checked_output_path(const std::string& path, const std::vector<std::
                 throw Error(shown + ": is the input " + input + "; writing it would destroy the input "
                                     "(choose another output)");
         }
+    // Last, once everything else holds: creating the temporary is the real test that the directory takes
+    // files (access() says yes to root in /proc; a read-only mount says no only here).
+    reserve_temporary(target.string());
     return target.string();
 }
 
-std::string temporary_path_for(const std::string& path)
+void write_all(int fd, const void* bytes, size_t size, const std::string& path)
 {
-    const fs::path p(path);
-    const fs::path directory = p.parent_path();
-    const std::string suffix = ".tmp-" + std::to_string(getpid());
-    long name_max = pathconf(directory.empty() ? "." : directory.c_str(), _PC_NAME_MAX);
-    if (name_max <= 0)
-        name_max = NAME_MAX;
-    std::string name = p.filename().string();
-    if (name.size() + suffix.size() > size_t(name_max))
-        name.resize(size_t(name_max) - std::min(size_t(name_max), suffix.size()));
-    const std::string temporary = (directory / (name + suffix)).string();
-    register_temporary(temporary);
-    return temporary;
+    const char* p = static_cast<const char*>(bytes);
+    while (size > 0) {
+        const ssize_t n = ::write(fd, p, size);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            throw Error(path + ": cannot write the file (" + errno_text(n < 0 ? errno : ENOSPC) + ")");
+        p += n;
+        size -= size_t(n);
+    }
+}
+
+void write_output(const std::string& path, const std::function<void(int fd)>& write)
+{
+    const std::string target = follow_links(path).string();
+    const TemporaryFile temporary = take_temporary(target);
+    try {
+        const int fd = open_temporary_file(temporary, path);
+        try {
+            write(fd);
+        } catch (...) {
+            close(fd);
+            throw;
+        }
+        if (close(fd) != 0)
+            throw Error(path + ": cannot write the file (" + errno_text(errno) + ")");
+        // rename() replaces whatever is at the target, a link included, never what a link points to.
+        if (rename(temporary.path.c_str(), target.c_str()) != 0) {
+            const int error = errno;
+            throw Error(path + ": cannot move the finished file into place (" + errno_text(error) + ")");
+        }
+    } catch (...) {
+        remove_temporary(temporary.path);
+        throw;
+    }
+    release_temporary(temporary.path);
 }
 
 void write_file_atomic(const std::string& path, const std::string& content)
 {
-    std::string temp = temporary_path_for(path);
-    {
-        std::ofstream out(temp, std::ios::binary);
-        const int open_error = errno;
-        if (!out)
-            throw Error(path + ": cannot write the file (" + errno_text(open_error) + ")");
-        out << content;
-        out.close();
-        if (!out) {
-            std::remove(temp.c_str());
-            throw Error(path + ": cannot write the file (disk full?)");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::remove(temp.c_str());
-        throw Error(path + ": cannot write the file (" + ec.message() + ")");
-    }
+    write_output(path, [&](int fd) { write_all(fd, content.data(), content.size(), path); });
 }
 
 } // namespace tf
