@@ -5,6 +5,7 @@
 #include "view/script.h"
 #include <filesystem>
 #include <fstream>
+#include <sys/stat.h>
 
 using namespace tf;
 
@@ -246,7 +247,16 @@ TEST_CASE("file")
                   from_file[i].words == from_text[i].words,
               "action " + std::to_string(i));
     const std::string missing = (work / "missing.txt").string();
-    CHECK_THROWS_WITH(read_script(missing), missing + ": cannot open the script");
+    CHECK_THROWS_WITH(read_script(missing), missing + ": cannot open the script (No such file or directory)");
+    // Read from a regular file only, up to 16 MiB: a FIFO is refused without waiting for a writer, an oversized
+    // file from its size (sparse here: nothing is written).
+    const std::string fifo = (work / "fifo.txt").string();
+    CHECK(mkfifo(fifo.c_str(), 0600) == 0);
+    CHECK_THROWS_WITH(read_script(fifo), fifo + ": is a pipe (FIFO), not a regular file (the script must be one)");
+    const std::string big = (work / "big.txt").string();
+    std::ofstream(big) << kEveryAction;
+    std::filesystem::resize_file(big, (16u << 20) + 1);
+    CHECK_THROWS_WITH(read_script(big), big + ": the script is 16.0 MiB (16777217 bytes), over its cap of 16.0 MiB (16777216 bytes)");
     std::ofstream(work / "bad.txt") << "wait 1\nwiat 2\n";
     CHECK_THROWS_WITH(read_script((work / "bad.txt").string()), (work / "bad.txt").string() + ":2: unknown action 'wiat'");
 }
