@@ -10,7 +10,7 @@
 set -euo pipefail
 
 CASE_GROUPS=(no-display bad-script scene-plane scene-tunnel scene-zoom scene-minify scene-slanted scene-triangles
-             scene-mesh split debug-views truth camera state x-capture window-events ui dynamic-texture)
+             scene-mesh split debug-views truth camera state x-capture window-events ui dynamic-texture alpha)
 if [[ ${1:-} == --list ]]; then
     printf '%s\n' "${CASE_GROUPS[@]}"
     exit 0
@@ -304,6 +304,46 @@ quit" --texture dynamic --texture-size 128 --build gpu --filter trilinear
     grep -q "sat filters need a static texture" view.stderr || fail dynamic-texture "no message refusing sat"
     if cmp -s chosen.png still.png; then pass "sat refused on the dynamic texture, the frame kept"; else
         fail dynamic-texture "the frame changed after the refused sat filter"; fi
+    ;;
+alpha)
+    # A texture whose alpha varies (0..255) with a colour that does not follow it: the screenshot's PNG is the
+    # render line's RGBA (straight alpha, as render -o writes it), from the blits (fragment stage) and from the
+    # composition pass (compute stage); the window shows the colour as rendered, alpha not applied (the X
+    # server's capture of it equals the screenshot's RGB).
+    python3 - <<'PYTHON'
+import struct, zlib
+size = 64
+rows = b"".join(b"\0" + bytes(v for x in range(size) for v in
+                              ((x * 4) % 256, (y * 4) % 256, ((x ^ y) * 8) % 256, (x * 37 + y * 91) % 256))
+                for y in range(size))
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
+ihdr = struct.pack(">IIBBBBB", size, size, 8, 6, 0, 0, 0)  # 8-bit RGBA
+with open("rgba.png", "wb") as f:
+    f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+PYTHON
+    printf '%s\n' "scene tunnel" "texture rgba.png" "filter trilinear" "ui off" "screenshot alpha.png" "hold 6000" \
+        "stage compute" "filter aniso" "screenshot alpha-compute.png" "quit" >script.txt
+    rc=0
+    xvfb-run -a -s "-screen 0 640x480x24" bash -c '
+        "$1" view --script script.txt --size 256x256 >view.stdout 2>view.stderr & pid=$!
+        for i in $(seq 600); do [[ -s alpha.json ]] && break; sleep 0.1; done
+        sleep 1
+        xwd -root -screen -silent -out root.xwd
+        wait $pid' _ "$TEXFILTER" || rc=$?
+    viewer_ok alpha || exit 1
+    for shot in alpha alpha-compute; do
+        # The case proves something only where the alpha is far from 1: the render's PNG goes below 32 of 255.
+        render_like $shot.png 1 offscreen.png || fail $shot "its render line failed"
+        min_alpha=$(oiiotool --iconfig oiio:UnassociatedAlpha 1 offscreen.png --printstats 2>/dev/null |
+            sed -n 's/.*Stats Min: *[0-9.]* [0-9.]* [0-9.]* \([0-9]*\).*/\1/p')
+        [[ -n $min_alpha && $min_alpha -lt 32 ]] ||
+            fail $shot "the render's alpha stays at or above 32 of 255 (min '$min_alpha'): the case proves nothing"
+        same_as_render "alpha $shot: screenshot RGBA = texfilter render's" $shot.png
+    done
+    if "$XWD_COMPARE" root.xwd alpha.png --at 0,0 >cmp.out 2>stderr; then
+        pass "alpha: the window shows the rendered colour, not composited (X capture = the screenshot's RGB)"; else
+        fail alpha "$(cat cmp.out)"; fi
     ;;
 *) echo "unknown group $GROUP" >&2; exit 2 ;;
 esac

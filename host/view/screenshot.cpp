@@ -12,7 +12,10 @@ namespace tf {
 namespace {
 
 // The swapchain's 8-bit sRGB texels as a linear image: the PNG writer encodes them back to the same bytes.
-Image decode_capture(const Buffer& capture, VkExtent2D extent, VkFormat format, int width, int height)
+// with_alpha: the scene's alpha as the composition wrote it (the swapchain's alpha is stored linearly, as a
+// PNG's is), so the PNG is the render's RGBA; else 1, the window as it is seen (presented opaque, and the
+// UI's blending leaves no meaningful alpha).
+Image decode_capture(const Buffer& capture, VkExtent2D extent, VkFormat format, int width, int height, bool with_alpha)
 {
     const auto* bytes = static_cast<const uint8_t*>(capture.mapped);
     const bool bgra = format == VK_FORMAT_B8G8R8A8_SRGB;
@@ -22,7 +25,7 @@ Image decode_capture(const Buffer& capture, VkExtent2D extent, VkFormat format, 
             const uint8_t* p = bytes + (size_t(y) * extent.width + size_t(x)) * 4;
             const int r = bgra ? p[2] : p[0], b = bgra ? p[0] : p[2];
             image.at(x, y) = glm::vec4(float(srgb_to_linear(r / 255.0)), float(srgb_to_linear(p[1] / 255.0)),
-                                       float(srgb_to_linear(b / 255.0)), 1.0f);
+                                       float(srgb_to_linear(b / 255.0)), with_alpha ? float(p[3] / 255.0) : 1.0f);
         }
     return image;
 }
@@ -78,7 +81,7 @@ void screenshot(Viewer& v, const std::string& requested, bool with_ui)
         throw Error("screenshot " + requested + ": the window changed size while it was taken; take it again");
     // The scene alone is the scene's size (even sides: the renderer's); the whole window is the window's.
     const int w = with_ui ? int(extent.width) : v.scene_width, h = with_ui ? int(extent.height) : v.scene_height;
-    write_image(path, decode_capture(capture, extent, v.swapchain.format, w, h));
+    write_image(path, decode_capture(capture, extent, v.swapchain.format, w, h, !with_ui));
     if (!with_ui) {
         std::string lines;
         for (const std::string& line : render_command_lines(v.state, path))
