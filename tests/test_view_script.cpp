@@ -2,6 +2,7 @@
 // values it names, comments and blank lines are skipped with the line numbers kept, every bad line is an
 // error naming FILE:LINE and what is wrong, and the bounds are where the contract puts them. CPU only.
 #include "support.h"
+#include "view/screenshot_files.h"
 #include "view/script.h"
 #include <filesystem>
 #include <fstream>
@@ -304,6 +305,45 @@ TEST_CASE("texture-frame-actions")
     CHECK_GOOD_LINE("frame 1000001");
     // The texture action takes no frame: that is texture-frame's (its words are render's texture flags).
     CHECK_BAD_LINE("texture dynamic --texture-frame 3", "unknown flag --texture-frame");
+}
+
+// 8. A screenshot's files (PATH.png, .txt, .json) never replace a file the viewer did not write: each one that
+// exists is refused by name, before anything is written; one this viewer wrote (remember_written) may be
+// replaced, but not a file put in its place since.
+TEST_CASE("screenshot-files")
+{
+    const std::filesystem::path work = test::make_work_dir("view-screenshot-files");
+    const std::string png = (work / "notes.png").string(), txt = (work / "notes.txt").string(),
+                      json = (work / "notes.json").string();
+    CHECK(checked_screenshot_paths(png, false, {}) == png);
+    for (const std::string& theirs : {png, txt, json}) {
+        std::ofstream(theirs) << "someone's notes\n";
+        CHECK_THROWS_WITH(checked_screenshot_paths(png, false, {}),
+                          theirs + ": exists, and this viewer did not write it: a screenshot replaces no file it "
+                                   "did not create (remove it, or choose another name)");
+        std::filesystem::remove(theirs);
+    }
+    // The whole window's screenshot writes the .png alone: the .txt and .json beside it are not its concern.
+    std::ofstream(txt) << "someone's notes\n";
+    CHECK(checked_screenshot_paths(png, true, {}) == png);
+    // The files of an earlier screenshot in the same run are replaced.
+    WrittenFiles written;
+    std::ofstream(png) << "png";
+    std::ofstream(json) << "{}";
+    for (const std::string& ours : {png, txt, json})
+        remember_written(written, ours);
+    CHECK(checked_screenshot_paths(png, false, {}, written) == png);
+    // Not once another file took the place of one of them (as an editor saves: a new file renamed over it).
+    std::ofstream(txt + ".new") << "someone's notes\n";
+    std::filesystem::rename(txt + ".new", txt);
+    CHECK_THROWS_WITH(checked_screenshot_paths(png, false, {}, written), txt + ": exists, and this viewer did not");
+    // A symbolic link is something there too, even one that leads nowhere.
+    std::filesystem::remove_all(work);
+    std::filesystem::create_directories(work);
+    std::filesystem::create_symlink(work / "nowhere.json", json);
+    CHECK_THROWS_WITH(checked_screenshot_paths(png, false, {}), json + ": exists");
+    // The panel's and F12's name: the next stem none of whose three files exists.
+    CHECK(unused_screenshot_path(png) == (work / "notes-1.png").string());
 }
 
 TEST_SUITE_END();

@@ -10,7 +10,8 @@
 set -euo pipefail
 
 CASE_GROUPS=(no-display bad-script scene-plane scene-tunnel scene-zoom scene-minify scene-slanted scene-triangles
-             scene-mesh split debug-views truth camera state x-capture window-events ui dynamic-texture alpha)
+             scene-mesh split debug-views truth camera state x-capture window-events ui dynamic-texture alpha
+             side-files)
 if [[ ${1:-} == --list ]]; then
     printf '%s\n' "${CASE_GROUPS[@]}"
     exit 0
@@ -127,6 +128,16 @@ bad-script)
     if [[ $rc -eq 2 ]] && grep -q "self.txt:1: screenshot" stderr && [[ $(cksum <self.txt) == "$sum" && ! -e self.png ]]; then
         pass "a screenshot onto the script refused before any window"; else
         fail "screenshot onto the script" "exit $rc, $(head -c 300 stderr); expected 2 naming self.txt:1, the script unchanged"; fi
+    # A screenshot's .txt that this viewer did not write (here: someone's notes): refused before any window,
+    # naming it, and nothing written.
+    echo "my notes" >notes.txt
+    printf 'screenshot notes.png\nquit\n' >notes-script.txt
+    rc=0
+    env -u DISPLAY "$TEXFILTER" view --script notes-script.txt >stdout 2>stderr || rc=$?
+    if [[ $rc -eq 2 ]] && grep -q "notes-script.txt:1: screenshot: notes.txt: exists, and this viewer did not write it" stderr &&
+        [[ $(cat notes.txt) == "my notes" && ! -e notes.png && ! -e notes.json ]]; then
+        pass "a screenshot over an existing .txt refused before any window"; else
+        fail "screenshot over an existing .txt" "exit $rc, $(head -c 300 stderr); expected 2 naming notes.txt, it unchanged, no notes.png"; fi
     ;;
 scene-*) scene_group "${GROUP#scene-}" ;;
 split)
@@ -344,6 +355,26 @@ PYTHON
     if "$XWD_COMPARE" root.xwd alpha.png --at 0,0 >cmp.out 2>stderr; then
         pass "alpha: the window shows the rendered colour, not composited (X capture = the screenshot's RGB)"; else
         fail alpha "$(cat cmp.out)"; fi
+    ;;
+side-files)
+    # A screenshot replaces its own files from earlier in the run, and refuses one that appeared since the
+    # script was checked (someone's late.txt, made while the viewer holds), naming it, writing nothing.
+    printf '%s\n' "texture checker --texture-size 64" "ui off" "screenshot twice.png" "camera fly 0.1 0.05 0.3" \
+        "screenshot twice.png" "hold 5000" "screenshot late.png" "quit" >script.txt
+    rc=0
+    xvfb-run -a -s "-screen 0 640x480x24" bash -c '
+        "$1" view --script script.txt --size 256x256 >view.stdout 2>view.stderr & pid=$!
+        for i in $(seq 600); do grep -q -- --camera twice.txt 2>/dev/null && break; sleep 0.1; done
+        echo "my notes" >late.txt
+        wait $pid' _ "$TEXFILTER" || rc=$?
+    if [[ $rc -eq 2 ]] && grep -q "script.txt:7: late.txt: exists, and this viewer did not write it" view.stderr &&
+        [[ $(cat late.txt) == "my notes" && ! -e late.png && ! -e late.json ]]; then
+        pass "a screenshot over a file that appeared while the viewer ran: refused, naming it"; else
+        fail side-files "exit $rc; expected 2 naming script.txt:7 and late.txt, it unchanged, no late.png"; fi
+    grep -q "validation" view.stderr && fail side-files "validation messages"
+    if grep -q -- "--camera" twice.txt; then
+        same_as_render "the second screenshot replaced the first's files (its own)" twice.png; else
+        fail side-files "twice.txt is the first screenshot's: the second did not replace it"; fi
     ;;
 *) echo "unknown group $GROUP" >&2; exit 2 ;;
 esac
