@@ -1056,11 +1056,60 @@ environment_maps() {
         "$TEXFILTER" render --scene reflect --size 16x16 --texture checker --texture-size 16 --env latlong --filter trilinear -o ok_latlong.png
 }
 
+# Text inputs (view --script/--state, the golden manifest, sample --lookups) are read from regular files only,
+# up to a cap (host/io/text_file.h): a device, a FIFO or a link to one is refused at once, naming it, and an
+# oversized file from its size, before anything else is done. Each command must answer within seconds: a FIFO
+# that was opened for reading would wait for a writer, /dev/zero would be read until memory runs out.
+bounded_text_inputs() {
+    local COMMAND_TIMEOUT=30 # read by run_command: a refusal is immediate
+    local view=(env -u DISPLAY "$TEXFILTER" view) # the refusal comes before the window, so no display is needed
+    mkfifo fifo.txt
+    ln -s /dev/zero zero_link.txt
+    truncate -s 3G sparse_3g.txt # over every cap, and no disk space taken
+    local flag
+    for flag in --script --state; do
+        expect_error "view $flag /dev/zero" "/dev/zero: is a character device, not a regular file" - -- \
+            "${view[@]}" "$flag" /dev/zero
+        expect_error "view $flag a FIFO" "fifo.txt: is a pipe (FIFO), not a regular file" - -- \
+            "${view[@]}" "$flag" fifo.txt
+        expect_error "view $flag a link to /dev/zero" "zero_link.txt: is a character device, not a regular file" - -- \
+            "${view[@]}" "$flag" zero_link.txt
+        expect_error "view $flag a directory" ".: is a directory, not a regular file" - -- "${view[@]}" "$flag" .
+    done
+    expect_error "view --script a 3 GiB file" "sparse_3g.txt: the script is 3.0 GiB (3221225472 bytes), over its cap of 16.0 MiB" - -- \
+        "${view[@]}" --script sparse_3g.txt
+    expect_error "view --state a 3 GiB file" "sparse_3g.txt: the viewer state is 3.0 GiB (3221225472 bytes), over its cap of 1.0 MiB" - -- \
+        "${view[@]}" --state sparse_3g.txt
+    # golden --golden-dir DIR reads DIR/manifest.txt: a link to /dev/zero, a FIFO, an oversized file. No --out
+    # directory is made (it was, with a report of "0 cases", after reading /dev/zero until memory ran out).
+    mkdir -p manifest-zero manifest-fifo manifest-big
+    ln -s /dev/zero manifest-zero/manifest.txt
+    mkfifo manifest-fifo/manifest.txt
+    truncate -s 3G manifest-big/manifest.txt
+    expect_error "golden: manifest.txt a link to /dev/zero" \
+        "manifest-zero/manifest.txt: is a character device, not a regular file (the golden manifest must be one)" \
+        golden-out -- "$TEXFILTER" golden --golden-dir manifest-zero --out golden-out
+    expect_error "golden: manifest.txt a FIFO" "manifest-fifo/manifest.txt: is a pipe (FIFO), not a regular file" \
+        golden-out -- "$TEXFILTER" golden --golden-dir manifest-fifo --out golden-out
+    expect_error "golden: a 3 GiB manifest.txt" "manifest-big/manifest.txt: the golden manifest is 3.0 GiB (3221225472 bytes), over its cap of 16.0 MiB" \
+        golden-out -- "$TEXFILTER" golden --golden-dir manifest-big --out golden-out
+    # The lookups file: the same rule (its /dev/zero and FIFO cases are in bad_lookups).
+    expect_error "sample: --lookups a link to /dev/zero" "zero_link.txt: is a character device, not a regular file" \
+        out.csv -- "${SAMPLE[@]}" --lookups zero_link.txt -o out.csv
+    expect_error "sample: --lookups a 3 GiB file" "sparse_3g.txt: the lookups file is 3.0 GiB (3221225472 bytes), over its cap of 2.0 GiB" \
+        out.csv -- "${SAMPLE[@]}" --lookups sparse_3g.txt -o out.csv
+    rm -rf fifo.txt zero_link.txt sparse_3g.txt manifest-zero manifest-fifo manifest-big
+}
+
 # The groups, in order; ctest runs each as its own entry (bad_inputs.GROUP), listed by --list.
 CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_resources diff_contract ground_truth_and_bench_errors
     golden_errors vulkan_errors golden_output_directory outputs_and_inputs unwritable_outputs
     signals_remove_temporaries truncated_images memory_budgets lookups_and_texels reproducible_outputs
-    bad_formats gpu_builds environment_maps exclusive_temporaries outputs_created_first)
+    bad_formats gpu_builds environment_maps
+    exclusive_temporaries
+    outputs_created_first
+    bounded_text_inputs
+)
 if [[ ${#SELECTED[@]} -eq 0 ]]; then
     SELECTED=("${CASE_GROUPS[@]}")
 fi

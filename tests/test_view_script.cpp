@@ -2,9 +2,11 @@
 // values it names, comments and blank lines are skipped with the line numbers kept, every bad line is an
 // error naming FILE:LINE and what is wrong, and the bounds are where the contract puts them. CPU only.
 #include "support.h"
+#include "view/screenshot_files.h"
 #include "view/script.h"
 #include <filesystem>
 #include <fstream>
+#include <sys/stat.h>
 
 using namespace tf;
 
@@ -246,7 +248,16 @@ TEST_CASE("file")
                   from_file[i].words == from_text[i].words,
               "action " + std::to_string(i));
     const std::string missing = (work / "missing.txt").string();
-    CHECK_THROWS_WITH(read_script(missing), missing + ": cannot open the script");
+    CHECK_THROWS_WITH(read_script(missing), missing + ": cannot open the script (No such file or directory)");
+    // Read from a regular file only, up to 16 MiB: a FIFO is refused without waiting for a writer, an oversized
+    // file from its size (sparse here: nothing is written).
+    const std::string fifo = (work / "fifo.txt").string();
+    CHECK(mkfifo(fifo.c_str(), 0600) == 0);
+    CHECK_THROWS_WITH(read_script(fifo), fifo + ": is a pipe (FIFO), not a regular file (the script must be one)");
+    const std::string big = (work / "big.txt").string();
+    std::ofstream(big) << kEveryAction;
+    std::filesystem::resize_file(big, (16u << 20) + 1);
+    CHECK_THROWS_WITH(read_script(big), big + ": the script is 16.0 MiB (16777217 bytes), over its cap of 16.0 MiB (16777216 bytes)");
     std::ofstream(work / "bad.txt") << "wait 1\nwiat 2\n";
     CHECK_THROWS_WITH(read_script((work / "bad.txt").string()), (work / "bad.txt").string() + ":2: unknown action 'wiat'");
 }
@@ -294,6 +305,45 @@ TEST_CASE("texture-frame-actions")
     CHECK_GOOD_LINE("frame 1000001");
     // The texture action takes no frame: that is texture-frame's (its words are render's texture flags).
     CHECK_BAD_LINE("texture dynamic --texture-frame 3", "unknown flag --texture-frame");
+}
+
+// 8. A screenshot's files (PATH.png, .txt, .json) never replace a file the viewer did not write: each one that
+// exists is refused by name, before anything is written; one this viewer wrote (remember_written) may be
+// replaced, but not a file put in its place since.
+TEST_CASE("screenshot-files")
+{
+    const std::filesystem::path work = test::make_work_dir("view-screenshot-files");
+    const std::string png = (work / "notes.png").string(), txt = (work / "notes.txt").string(),
+                      json = (work / "notes.json").string();
+    CHECK(checked_screenshot_paths(png, false, {}) == png);
+    for (const std::string& theirs : {png, txt, json}) {
+        std::ofstream(theirs) << "someone's notes\n";
+        CHECK_THROWS_WITH(checked_screenshot_paths(png, false, {}),
+                          theirs + ": exists, and this viewer did not write it: a screenshot replaces no file it "
+                                   "did not create (remove it, or choose another name)");
+        std::filesystem::remove(theirs);
+    }
+    // The whole window's screenshot writes the .png alone: the .txt and .json beside it are not its concern.
+    std::ofstream(txt) << "someone's notes\n";
+    CHECK(checked_screenshot_paths(png, true, {}) == png);
+    // The files of an earlier screenshot in the same run are replaced.
+    WrittenFiles written;
+    std::ofstream(png) << "png";
+    std::ofstream(json) << "{}";
+    for (const std::string& ours : {png, txt, json})
+        remember_written(written, ours);
+    CHECK(checked_screenshot_paths(png, false, {}, written) == png);
+    // Not once another file took the place of one of them (as an editor saves: a new file renamed over it).
+    std::ofstream(txt + ".new") << "someone's notes\n";
+    std::filesystem::rename(txt + ".new", txt);
+    CHECK_THROWS_WITH(checked_screenshot_paths(png, false, {}, written), txt + ": exists, and this viewer did not");
+    // A symbolic link is something there too, even one that leads nowhere.
+    std::filesystem::remove_all(work);
+    std::filesystem::create_directories(work);
+    std::filesystem::create_symlink(work / "nowhere.json", json);
+    CHECK_THROWS_WITH(checked_screenshot_paths(png, false, {}), json + ": exists");
+    // The panel's and F12's name: the next stem none of whose three files exists.
+    CHECK(unused_screenshot_path(png) == (work / "notes-1.png").string());
 }
 
 TEST_SUITE_END();

@@ -10,7 +10,8 @@
 set -euo pipefail
 
 CASE_GROUPS=(no-display bad-script scene-plane scene-tunnel scene-zoom scene-minify scene-slanted scene-triangles
-             scene-mesh split debug-views truth camera state x-capture window-events ui dynamic-texture)
+             scene-mesh split debug-views truth camera state x-capture window-events ui dynamic-texture alpha
+             side-files)
 if [[ ${1:-} == --list ]]; then
     printf '%s\n' "${CASE_GROUPS[@]}"
     exit 0
@@ -127,6 +128,16 @@ bad-script)
     if [[ $rc -eq 2 ]] && grep -q "self.txt:1: screenshot" stderr && [[ $(cksum <self.txt) == "$sum" && ! -e self.png ]]; then
         pass "a screenshot onto the script refused before any window"; else
         fail "screenshot onto the script" "exit $rc, $(head -c 300 stderr); expected 2 naming self.txt:1, the script unchanged"; fi
+    # A screenshot's .txt that this viewer did not write (here: someone's notes): refused before any window,
+    # naming it, and nothing written.
+    echo "my notes" >notes.txt
+    printf 'screenshot notes.png\nquit\n' >notes-script.txt
+    rc=0
+    env -u DISPLAY "$TEXFILTER" view --script notes-script.txt >stdout 2>stderr || rc=$?
+    if [[ $rc -eq 2 ]] && grep -q "notes-script.txt:1: screenshot: notes.txt: exists, and this viewer did not write it" stderr &&
+        [[ $(cat notes.txt) == "my notes" && ! -e notes.png && ! -e notes.json ]]; then
+        pass "a screenshot over an existing .txt refused before any window"; else
+        fail "screenshot over an existing .txt" "exit $rc, $(head -c 300 stderr); expected 2 naming notes.txt, it unchanged, no notes.png"; fi
     ;;
 scene-*) scene_group "${GROUP#scene-}" ;;
 split)
@@ -304,6 +315,66 @@ quit" --texture dynamic --texture-size 128 --build gpu --filter trilinear
     grep -q "sat filters need a static texture" view.stderr || fail dynamic-texture "no message refusing sat"
     if cmp -s chosen.png still.png; then pass "sat refused on the dynamic texture, the frame kept"; else
         fail dynamic-texture "the frame changed after the refused sat filter"; fi
+    ;;
+alpha)
+    # A texture whose alpha varies (0..255) with a colour that does not follow it: the screenshot's PNG is the
+    # render line's RGBA (straight alpha, as render -o writes it), from the blits (fragment stage) and from the
+    # composition pass (compute stage); the window shows the colour as rendered, alpha not applied (the X
+    # server's capture of it equals the screenshot's RGB).
+    python3 - <<'PYTHON'
+import struct, zlib
+size = 64
+rows = b"".join(b"\0" + bytes(v for x in range(size) for v in
+                              ((x * 4) % 256, (y * 4) % 256, ((x ^ y) * 8) % 256, (x * 37 + y * 91) % 256))
+                for y in range(size))
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff)
+ihdr = struct.pack(">IIBBBBB", size, size, 8, 6, 0, 0, 0)  # 8-bit RGBA
+with open("rgba.png", "wb") as f:
+    f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+PYTHON
+    printf '%s\n' "scene tunnel" "texture rgba.png" "filter trilinear" "ui off" "screenshot alpha.png" "hold 6000" \
+        "stage compute" "filter aniso" "screenshot alpha-compute.png" "quit" >script.txt
+    rc=0
+    xvfb-run -a -s "-screen 0 640x480x24" bash -c '
+        "$1" view --script script.txt --size 256x256 >view.stdout 2>view.stderr & pid=$!
+        for i in $(seq 600); do [[ -s alpha.json ]] && break; sleep 0.1; done
+        sleep 1
+        xwd -root -screen -silent -out root.xwd
+        wait $pid' _ "$TEXFILTER" || rc=$?
+    viewer_ok alpha || exit 1
+    for shot in alpha alpha-compute; do
+        # The case proves something only where the alpha is far from 1: the render's PNG goes below 32 of 255.
+        render_like $shot.png 1 offscreen.png || fail $shot "its render line failed"
+        min_alpha=$(oiiotool --iconfig oiio:UnassociatedAlpha 1 offscreen.png --printstats 2>/dev/null |
+            sed -n 's/.*Stats Min: *[0-9.]* [0-9.]* [0-9.]* \([0-9]*\).*/\1/p')
+        [[ -n $min_alpha && $min_alpha -lt 32 ]] ||
+            fail $shot "the render's alpha stays at or above 32 of 255 (min '$min_alpha'): the case proves nothing"
+        same_as_render "alpha $shot: screenshot RGBA = texfilter render's" $shot.png
+    done
+    if "$XWD_COMPARE" root.xwd alpha.png --at 0,0 >cmp.out 2>stderr; then
+        pass "alpha: the window shows the rendered colour, not composited (X capture = the screenshot's RGB)"; else
+        fail alpha "$(cat cmp.out)"; fi
+    ;;
+side-files)
+    # A screenshot replaces its own files from earlier in the run, and refuses one that appeared since the
+    # script was checked (someone's late.txt, made while the viewer holds), naming it, writing nothing.
+    printf '%s\n' "texture checker --texture-size 64" "ui off" "screenshot twice.png" "camera fly 0.1 0.05 0.3" \
+        "screenshot twice.png" "hold 5000" "screenshot late.png" "quit" >script.txt
+    rc=0
+    xvfb-run -a -s "-screen 0 640x480x24" bash -c '
+        "$1" view --script script.txt --size 256x256 >view.stdout 2>view.stderr & pid=$!
+        for i in $(seq 600); do grep -q -- --camera twice.txt 2>/dev/null && break; sleep 0.1; done
+        echo "my notes" >late.txt
+        wait $pid' _ "$TEXFILTER" || rc=$?
+    if [[ $rc -eq 2 ]] && grep -q "script.txt:7: late.txt: exists, and this viewer did not write it" view.stderr &&
+        [[ $(cat late.txt) == "my notes" && ! -e late.png && ! -e late.json ]]; then
+        pass "a screenshot over a file that appeared while the viewer ran: refused, naming it"; else
+        fail side-files "exit $rc; expected 2 naming script.txt:7 and late.txt, it unchanged, no late.png"; fi
+    grep -q "validation" view.stderr && fail side-files "validation messages"
+    if grep -q -- "--camera" twice.txt; then
+        same_as_render "the second screenshot replaced the first's files (its own)" twice.png; else
+        fail side-files "twice.txt is the first screenshot's: the second did not replace it"; fi
     ;;
 *) echo "unknown group $GROUP" >&2; exit 2 ;;
 esac

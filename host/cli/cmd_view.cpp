@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #if TEXFILTER_VIEWER
+#include "view/screenshot_files.h"
 #include "view/script.h"
 #include "view/viewer.h"
 #endif

@@ -1,13 +1,10 @@
 #include "io/lookups_csv.h"
 #include "texture/error.h"
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include "io/output_path.h"
-#include <filesystem>
-#include <fstream>
+#include "io/text_file.h"
 #include <sstream>
-#include <system_error>
 
 namespace tf {
 
@@ -47,29 +44,10 @@ const std::string utf8_bom = "\xEF\xBB\xBF";
 
 std::vector<Lookup> read_lookups_csv(const std::string& path)
 {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (status.type() == fs::file_type::not_found)
-        throw Error(path + ": no such lookups file");
-    if (ec)
-        throw Error(path + ": cannot read the lookups file (" + ec.message() + ")");
-    if (fs::is_directory(status))
-        throw Error(path + ": is a directory, not a lookups file");
-    // A device or pipe may never end (/dev/zero is one endless line): only a file is read.
-    if (!fs::is_regular_file(status)) {
-        const char* kind = fs::is_character_file(status) ? "a character device"
-                           : fs::is_block_file(status)   ? "a block device"
-                           : fs::is_fifo(status)         ? "a pipe (FIFO)"
-                           : fs::is_socket(status)       ? "a socket"
-                                                         : "an unknown kind of file";
-        throw Error(path + ": is " + std::string(kind) + ", not a regular file (the lookups must be a CSV file)");
-    }
-    std::ifstream in(path);
-    if (!in) {
-        const int error = errno; // what open(2) said, before anything else can overwrite it
-        throw Error(path + ": cannot open the lookups file (" + std::generic_category().message(error) + ")");
-    }
+    // Held whole while it is parsed: capped at 128 bytes a row for max_lookups rows (a row of six numbers at
+    // 9 significant digits is under 100), refused from its size past that.
+    constexpr uint64_t max_lookups_file_bytes = uint64_t(max_lookups) * 128;
+    std::istringstream in(read_text_file(path, max_lookups_file_bytes, "the lookups file"));
     return parse_lookups_csv(in, path);
 }
 

@@ -105,6 +105,16 @@ void check_writable_directory(const std::string& directory, const std::string& w
 std::string checked_output_path(const std::string& path, const std::vector<std::string>& extensions,
                                 const std::vector<std::string>& inputs)
 {
+    const std::string target = check_output_path(path, extensions, inputs);
+    // Last, once everything else holds: creating the temporary is the real test that the directory takes
+    // files (access() says yes to root in /proc; a read-only mount says no only here).
+    reserve_temporary(target);
+    return target;
+}
+
+std::string check_output_path(const std::string& path, const std::vector<std::string>& extensions,
+                              const std::vector<std::string>& inputs)
+{
     if (path.empty())
         throw Error("the output path is empty");
     const fs::path target = follow_links(path);
@@ -152,9 +162,6 @@ std::string checked_output_path(const std::string& path, const std::vector<std::
                 throw Error(shown + ": is the input " + input + "; writing it would destroy the input "
                                     "(choose another output)");
         }
-    // Last, once everything else holds: creating the temporary is the real test that the directory takes
-    // files (access() says yes to root in /proc; a read-only mount says no only here).
-    reserve_temporary(target.string());
     return target.string();
 }
 

@@ -30,6 +30,11 @@ std::string checked_output_path(const std::string& path, const std::vector<std::
 // Throws tf::Error for a loop or an unreadable link.
 std::string end_of_links(const std::string& path);
 
+// The same checks, creating nothing: for outputs checked long before they are written (a viewer script's
+// screenshots, checked before its window opens; write_output makes the temporary when the file is written).
+std::string check_output_path(const std::string& path, const std::vector<std::string>& extensions,
+                              const std::vector<std::string>& inputs = {});
+
 // Throws tf::Error unless files can be created in `directory` (exists, is a directory, is writable).
 // `what` names the output in the message ("bench --out results").
 void check_writable_directory(const std::string& directory, const std::string& what);

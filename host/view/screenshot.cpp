@@ -5,14 +5,16 @@
 #include "texture/error.h"
 #include "vulkan/cleanup.h"
 #include <cstdint>
-#include <filesystem>
 
 namespace tf {
 
 namespace {
 
 // The swapchain's 8-bit sRGB texels as a linear image: the PNG writer encodes them back to the same bytes.
-Image decode_capture(const Buffer& capture, VkExtent2D extent, VkFormat format, int width, int height)
+// with_alpha: the scene's alpha as the composition wrote it (the swapchain's alpha is stored linearly, as a
+// PNG's is), so the PNG is the render's RGBA; else 1, the window as it is seen (presented opaque, and the
+// UI's blending leaves no meaningful alpha).
+Image decode_capture(const Buffer& capture, VkExtent2D extent, VkFormat format, int width, int height, bool with_alpha)
 {
     const auto* bytes = static_cast<const uint8_t*>(capture.mapped);
     const bool bgra = format == VK_FORMAT_B8G8R8A8_SRGB;
@@ -22,43 +24,20 @@ Image decode_capture(const Buffer& capture, VkExtent2D extent, VkFormat format, 
             const uint8_t* p = bytes + (size_t(y) * extent.width + size_t(x)) * 4;
             const int r = bgra ? p[2] : p[0], b = bgra ? p[0] : p[2];
             image.at(x, y) = glm::vec4(float(srgb_to_linear(r / 255.0)), float(srgb_to_linear(p[1] / 255.0)),
-                                       float(srgb_to_linear(b / 255.0)), 1.0f);
+                                       float(srgb_to_linear(b / 255.0)), with_alpha ? float(p[3] / 255.0) : 1.0f);
         }
     return image;
 }
 
-std::string stem_of(const std::string& path) { return path.substr(0, path.size() - 4); } // checked: ends in .png
-
-bool exists(const std::string& path) { return std::filesystem::symlink_status(path).type() != std::filesystem::file_type::not_found; }
-
 } // namespace
-
-std::string unused_screenshot_path(const std::string& wanted)
-{
-    const std::string stem = wanted.size() > 4 && wanted.substr(wanted.size() - 4) == ".png" ? stem_of(wanted) : wanted;
-    for (int n = 0; n < 10000; ++n) { // bounded: past that, checked_output_path says what is wrong
-        const std::string s = n ? stem + "-" + std::to_string(n) : stem;
-        if (!exists(s + ".png") && !exists(s + ".txt") && !exists(s + ".json"))
-            return s + ".png";
-    }
-    return wanted;
-}
-
-std::string checked_screenshot_paths(const std::string& requested, bool with_ui, const std::vector<std::string>& inputs)
-{
-    const std::string path = checked_output_path(requested, {".png"}, inputs);
-    if (!with_ui) { // the files beside it
-        checked_output_path(stem_of(path) + ".txt", {".txt"}, inputs);
-        checked_output_path(stem_of(path) + ".json", {".json"}, inputs);
-    }
-    return path;
-}
 
 void screenshot(Viewer& v, const std::string& requested, bool with_ui)
 {
     std::vector<std::string> inputs = v.options.inputs; // the script and the --state file are never written
     inputs.push_back(v.state.texture.name_or_path);
-    const std::string path = checked_screenshot_paths(requested, with_ui, inputs); // before any work
+    // Before any work, and again here for a script's (checked before the window opened): a file may have
+    // appeared since.
+    const std::string path = checked_screenshot_paths(requested, with_ui, inputs, v.written);
     if (!with_ui)
         finish_images(v);
     int width = 0, height = 0;
@@ -78,13 +57,17 @@ void screenshot(Viewer& v, const std::string& requested, bool with_ui)
         throw Error("screenshot " + requested + ": the window changed size while it was taken; take it again");
     // The scene alone is the scene's size (even sides: the renderer's); the whole window is the window's.
     const int w = with_ui ? int(extent.width) : v.scene_width, h = with_ui ? int(extent.height) : v.scene_height;
-    write_image(path, decode_capture(capture, extent, v.swapchain.format, w, h));
+    write_image(path, decode_capture(capture, extent, v.swapchain.format, w, h, !with_ui));
+    remember_written(v.written, path);
     if (!with_ui) {
         std::string lines;
         for (const std::string& line : render_command_lines(v.state, path))
             lines += line + "\n";
-        write_file_atomic(stem_of(path) + ".txt", lines);
-        write_file_atomic(stem_of(path) + ".json", state_to_json(v.state));
+        const std::string txt = screenshot_side_file(path, ".txt"), json = screenshot_side_file(path, ".json");
+        write_file_atomic(txt, lines);
+        remember_written(v.written, txt);
+        write_file_atomic(json, state_to_json(v.state));
+        remember_written(v.written, json);
     }
     std::printf("%s\n", path.c_str());
     std::fflush(stdout);

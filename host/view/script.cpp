@@ -3,10 +3,10 @@
 #include "flags/args.h"
 #include "flags/cli_common.h"
 #include "texture/error.h"
+#include "io/text_file.h"
 #include "view/view_state.h"
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 namespace tf {
@@ -319,12 +319,8 @@ std::vector<ScriptAction> parse_script(const std::string& text, const std::strin
 
 std::vector<ScriptAction> read_script(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw Error(path + ": cannot open the script");
-    std::stringstream text;
-    text << in.rdbuf();
-    return parse_script(text.str(), path);
+    constexpr uint64_t max_script_bytes = 16u << 20; // hundreds of thousands of lines
+    return parse_script(read_text_file(path, max_script_bytes, "the script"), path);
 }
 
 SceneKind script_scene(const ScriptAction& a)

@@ -40,7 +40,8 @@ struct ScriptAction {
 
 // Parses and checks a whole script; `name` stands for the file in messages.
 std::vector<ScriptAction> parse_script(const std::string& text, const std::string& name);
-// parse_script of a file; one that cannot be read is an error naming it.
+// parse_script of a file (read_text_file: a regular file of at most 16 MiB); one that cannot be read is an
+// error naming it.
 std::vector<ScriptAction> read_script(const std::string& path);
 
 // Typed values of one checked action.

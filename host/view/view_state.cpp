@@ -4,10 +4,10 @@
 #include "flags/args.h"
 #include "flags/cli_common.h"
 #include "texture/error.h"
+#include "io/text_file.h"
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iterator>
 #include <sstream>
 #include <nlohmann/json.hpp>
@@ -428,12 +428,8 @@ ViewState state_from_json(const std::string& text, const std::string& name)
 
 ViewState read_state_file(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw Error(path + ": cannot open the viewer state");
-    std::stringstream text;
-    text << in.rdbuf();
-    return state_from_json(text.str(), path);
+    constexpr uint64_t max_state_bytes = 1u << 20; // a screenshot's state is about a kilobyte
+    return state_from_json(read_text_file(path, max_state_bytes, "the viewer state"), path);
 }
 
 } // namespace tf

@@ -72,7 +72,8 @@ std::string check_debug_view(const std::string& name);
 // parser) and throws tf::Error naming `name` and the field ("shot.json: a.band: ...").
 std::string state_to_json(const ViewState& state);
 ViewState state_from_json(const std::string& text, const std::string& name);
-// state_from_json of a file (`texfilter view --state FILE`); a file that cannot be read is an error naming it.
+// state_from_json of a file (`texfilter view --state FILE`; read_text_file: a regular file of at most 1 MiB); a
+// file that cannot be read is an error naming it.
 ViewState read_state_file(const std::string& path);
 
 } // namespace tf

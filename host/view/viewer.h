@@ -6,6 +6,7 @@
 #include "view/compose.h"
 #include "view/imgui_layer.h"
 #include "view/scene_images.h"
+#include "view/screenshot_files.h"
 #include "view/script.h"
 #include "view/swapchain.h"
 #include "view/view_state.h"
@@ -82,6 +83,7 @@ struct Viewer {
     std::chrono::steady_clock::time_point last_move{};
     bool quit = false;
     int scene_width = 0, scene_height = 0; // even: the framebuffer's size rounded down
+    WrittenFiles written; // the screenshots' files: the only existing files a screenshot replaces
 };
 
 int run_viewer(const ViewOptions& options);
@@ -115,13 +117,9 @@ void create_frame_objects(Viewer& viewer);  // the acquire semaphore, the frame 
 void destroy_frame_objects(Viewer& viewer);
 
 // screenshot.cpp: the frame just presented (the scene alone, or with_ui the whole window) to PNG, and beside a
-// scene screenshot PATH.txt (the texfilter render lines) and PATH.json (the state, for --state).
+// scene screenshot PATH.txt (the texfilter render lines) and PATH.json (the state, for --state). Refused,
+// naming the file, where one of them exists and is not in viewer.written (screenshot_files.h).
 void screenshot(Viewer& viewer, const std::string& path, bool with_ui);
-// The files a screenshot writes (PATH.png; and .txt and .json without the UI), each checked as an output
-// that is none of `inputs` (checked_output_path); returns the .png's path to write. Throws tf::Error.
-std::string checked_screenshot_paths(const std::string& path, bool with_ui, const std::vector<std::string>& inputs);
-// `wanted`, or with -1, -2, ... before .png where it or its .txt/.json exists already.
-std::string unused_screenshot_path(const std::string& wanted);
 
 // script_runner.cpp: runs actions until one needs frames to pass. Returns false when the script is over.
 struct ScriptRun {
