@@ -4,18 +4,12 @@
 #include "vulkan/device_memory_check.h"
 #include "texture/error.h"
 #include "core/memory_budget.h"
-#include "core/cube_textures.h"
 #include "core/numbers.h"
-#include "core/procedural.h"
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
-#include <fcntl.h>
 #include <filesystem>
 #include <optional>
-#include <unistd.h>
 
 namespace tf {
 
@@ -104,17 +98,6 @@ std::vector<FlagSpec> join(std::vector<std::vector<FlagSpec>> groups)
 
 namespace {
 
-// "checker, zoneplate, grid, noise, mipcolors or dynamic": the 2D procedural names (the environment scenes
-// take cube-labels, cube-hash and cube-smooth as well).
-std::string procedural_list(bool with_cubes)
-{
-    const std::vector<std::string>& names = with_cubes ? procedural_cube_names() : procedural_names();
-    std::string list;
-    for (size_t i = 0; i < names.size(); ++i)
-        list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-    return list;
-}
-
 bool has_extension(const std::string& path, std::initializer_list<const char*> extensions)
 {
     std::string ext = std::filesystem::path(path).extension().string();
@@ -125,41 +108,23 @@ bool has_extension(const std::string& path, std::initializer_list<const char*> e
 
 } // namespace
 
-bool is_procedural_texture(const std::string& name) { return is_procedural(name) || is_procedural_cube(name); }
-
-void check_texture_name(const std::string& path)
-{
-    if (is_procedural_texture(path))
-        return;
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (status.type() == std::filesystem::file_type::not_found)
-        throw Error("unknown texture '" + path + "': not a procedural texture (" + procedural_list(true) +
-                    ") and no such file");
-    if (ec)
-        throw Error(path + ": " + ec.message());
-    if (std::filesystem::is_directory(status))
-        return; // the image reader says it is a directory
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0)
-        throw Error(path + ": " + std::strerror(errno));
-    ::close(fd);
-}
-
 void check_texture_size_flag(const Args& args, const std::string& name)
 {
     if (args.has("--texture-size") && !is_procedural_texture(name))
         throw Error("--texture-size is not read by --texture " + name + " (it applies to the procedural textures: " +
-                    procedural_list(true) + "; a file has its own size)");
+                    procedural_texture_names() + "; a file has its own size)");
 }
 
-TextureSource texture_source_from(const Args& args)
+TextureSource texture_source_from(const Args& args) { return texture_source_from(args, TextureCheck::now); }
+
+TextureSource texture_source_from(const Args& args, TextureCheck when)
 {
     TextureSource source;
     source.name_or_path = args.require("--texture");
     const std::string& name = source.name_or_path;
     const bool procedural = is_procedural_texture(name);
-    check_texture_name(name);
+    if (when == TextureCheck::now)
+        check_texture_name(name);
     source.procedural_size = args.get_int("--texture-size", 256, 1, max_texture_dimension);
     check_texture_size_flag(args, name);
     source.color = args.has("--linear") ? ColorSpace::linear : ColorSpace::automatic;

@@ -30,10 +30,11 @@ std::vector<FlagSpec> join(std::vector<std::vector<FlagSpec>> groups);
 // readable file (the message lists the names), --texture-size on a file, --linear on a procedural texture or a
 // float file (.exr, .pfm, .hdr: linear already).
 TextureSource texture_source_from(const Args& args);
-// The parts of it for a command with texture flags of its own (bench): a procedural name (2D or cube), or a
-// file this process can read; --texture-size on a procedural texture only. Throw tf::Error.
-bool is_procedural_texture(const std::string& name);
-void check_texture_name(const std::string& name_or_path);
+// when = later: the file is checked when the texture loads (the viewer's script, whose screenshots may write
+// the file a later line loads). For a command with texture flags of its own (bench): check_texture_name
+// (io/texture_source.h), and --texture-size on a procedural texture only. Throw tf::Error.
+enum class TextureCheck { now, later };
+TextureSource texture_source_from(const Args& args, TextureCheck when);
 void check_texture_size_flag(const Args& args, const std::string& name_or_path);
 
 // Who reads the sampler flags besides the filter (core/filter.h's table): a flag that nothing reads is refused,

@@ -107,7 +107,8 @@ TextureSource texture(const ScriptAction& a)
     for (const FlagSpec& f : texture_flags())
         if (f.name == "--texture" || f.name == "--texture-size" || f.name == "--linear")
             specs.push_back(f);
-    return texture_source_from(flag_args(a, "--texture", specs));
+    // The file is checked when the line runs: a screenshot line before it may write it.
+    return texture_source_from(flag_args(a, "--texture", specs), TextureCheck::later);
 }
 
 std::pair<int, int> size(const ScriptAction& a)
