@@ -965,6 +965,7 @@ flag_rules() {
     expect_error "--wrap on an environment scene" "--wrap is not read on the environment scenes" out.png -- \
         "$TEXFILTER" render --scene skybox --texture checker --texture-size 16 --filter trilinear "${REF[@]}" \
         --wrap clamp -o out.png
+    expect_error "view --env" "--env is not read by view" - -- "$TEXFILTER" view --texture checker --env latlong
     expect_error "sample --env" "--env is not read by sample" out.csv -- \
         "${SAMPLE[@]}" --env latlong --lookups good.csv -o out.csv
     expect_error "--linear on a procedural texture" "--linear is not read by --texture checker" out.png -- \

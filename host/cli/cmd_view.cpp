@@ -53,6 +53,7 @@ int run_view(const std::vector<std::string>& argv)
     throw Error("the viewer was left out of this build (configure with -DTEXFILTER_VIEWER=ON; it needs GLFW and "
                 "Dear ImGui: tools/setup.sh)");
 #else
+    check_env_flag(args, {}, "view, which shows the 2D scenes only");
     ViewOptions options;
     ViewState& s = options.state;
     if (args.has("--state")) {
