@@ -990,6 +990,9 @@ flag_rules() {
     else
         expect_error "view script: trilinear with --probes" "--probes is not read by --filter trilinear" - -- \
             "$TEXFILTER" view --script rules.txt
+        printf 'filter tri\033[2Jlinear\nquit\n' >rules.txt
+        EXPECT_ONE_LINE=1 expect_error "view script: control bytes in a line" "unknown filter 'tri\x1b[2Jlinear'" - -- \
+            "$TEXFILTER" view --script rules.txt
     fi
     rm -f rules.txt
     # Positive controls: the flags the filter reads still work.
