@@ -232,7 +232,7 @@ bad_flag_values() {
     expect_error "--size followed by -o" "flag --size needs a value (WxH), but the next argument is the flag -o" \
         out.png -- "${base[@]}" --size -o out.png
     expect_success "--lod-bias -1 (a negative number is a value, not a flag)" negative_bias.png -- \
-        "${RENDER[@]}" --lod-bias -1 -o negative_bias.png
+        "$TEXFILTER" render --scene zoom --texture checker --filter trilinear "${REF[@]}" --lod-bias -1 -o negative_bias.png
     rm -f negative_bias.png
     # An empty --device is part of every device's name: it picked the first one without a word.
     expect_error "info --device ''" "bad value for --device: ''" - -- "$TEXFILTER" info --device ''
@@ -253,13 +253,13 @@ bad_flag_values() {
     expect_error "--boxes 17" --boxes out.png -- "${RENDER[@]}" --boxes 17 -o out.png
     expect_error "--magnify bogus" "unknown reconstruction 'bogus' (expected one of: bilinear, bspline, catmull-rom)" \
         out.png -- "${RENDER[@]}" --magnify bogus -o out.png
-    expect_error "--magnify on bilinear" "--magnify bspline applies to trilinear, aniso and ewa" out.png -- \
+    expect_error "--magnify on bilinear" "--magnify is not read by --filter bilinear (it applies to trilinear, aniso and ewa)" out.png -- \
         "$TEXFILTER" render --scene zoom --texture checker --filter bilinear --magnify bspline "${REF[@]}" -o out.png
     # --stochastic / --accumulate: the noise, the filters that take it, the frame count, the combinations.
     local stoch=("$TEXFILTER" render --scene zoom --texture checker --filter trilinear "${REF[@]}")
     expect_error "--stochastic bogus" "bad value for --stochastic: 'bogus' is not a noise (expected white or blue)" \
         out.png -- "${stoch[@]}" --stochastic bogus -o out.png
-    expect_error "--stochastic on sat" "--stochastic applies to bilinear, trilinear, aniso and ewa" out.png -- \
+    expect_error "--stochastic on sat" "--stochastic is not read by --filter sat (it applies to bilinear, trilinear, aniso and ewa)" out.png -- \
         "$TEXFILTER" render --scene zoom --texture checker --filter sat --stochastic white "${REF[@]}" -o out.png
     expect_error "--stochastic with --magnify" "--stochastic reads level 0 bilinearly" out.png -- \
         "${stoch[@]}" --stochastic blue --magnify bspline -o out.png
@@ -275,7 +275,7 @@ bad_flag_values() {
         "${stoch[@]}" --accumulate 8 -o out.png
     expect_error "--stochastic ewa --taps hardware on the reference" "has no CPU reference" out.png -- \
         "$TEXFILTER" render --scene zoom --texture checker --filter ewa --taps hardware --stochastic white "${REF[@]}" -o out.png
-    expect_error "--stochastic nearest on an environment scene" "--stochastic applies to bilinear, trilinear, aniso and ewa" \
+    expect_error "--stochastic nearest on an environment scene" "--stochastic is not read by --filter nearest (it applies to bilinear, trilinear, aniso and ewa)" \
         out.png -- "$TEXFILTER" render --scene skybox --texture checker --filter nearest --stochastic white "${REF[@]}" -o out.png
     # Quad derivatives: bad values, and combinations the mesh scene cannot do.
     expect_error "--stage bogus" --stage out.png -- "${RENDER[@]}" --stage bogus -o out.png
@@ -289,7 +289,7 @@ bad_flag_values() {
         "${RENDER[@]}" --camera 0,0,0,0 -o out.png
     expect_error "--camera with a word" "--camera: camera YAW 'left' is not a number" out.png -- \
         "${RENDER[@]}" --camera 0,0,0,left,0 -o out.png
-    expect_error "--camera nan" "--camera: camera X is nan" out.png -- "${RENDER[@]}" --camera nan,0,0,0,0 -o out.png
+    expect_error "--camera nan" "--camera: camera X 'nan' is not a number" out.png -- "${RENDER[@]}" --camera nan,0,0,0,0 -o out.png
     expect_error "--camera pitch 90" "--camera: camera PITCH = 90 degrees" out.png -- \
         "${RENDER[@]}" --camera 0,0,0,0,90 -o out.png
     expect_error "--camera 1e9 away" "--camera: camera Z = 1000000000 is too large" out.png -- \
@@ -384,7 +384,7 @@ sample_resources() {
     expect_success "sample: --stochastic white --accumulate 4 (reference)" ok_stochastic.csv -- \
         "$TEXFILTER" sample --texture checker --filter trilinear --stochastic white --accumulate 4 \
         --backend reference --lookups good.csv -o ok_stochastic.csv
-    expect_error "sample: --stochastic on sat" "--stochastic applies to bilinear, trilinear, aniso and ewa" out.csv -- \
+    expect_error "sample: --stochastic on sat" "--stochastic is not read by --filter sat (it applies to bilinear, trilinear, aniso and ewa)" out.csv -- \
         "$TEXFILTER" sample --texture checker --filter sat --stochastic white --backend reference \
         --lookups good.csv -o out.csv
     expect_success "sample: --stochastic on an array (reference)" ok_stochastic_array.csv -- \
@@ -414,7 +414,7 @@ ground_truth_and_bench_errors() {
     expect_error "render --truth bogus" "unknown truth 'bogus'" out.png -- "${truth[@]}" --truth bogus -o out.png
     expect_error "render --truth analytic --texture noise" "texture 'noise' has no analytic definition" out.png -- \
         "$TEXFILTER" render --scene zoom --texture noise --filter ground-truth --truth analytic "${REF[@]}" -o out.png
-    expect_error "render --truth without --filter ground-truth" "--truth applies to --filter ground-truth only" out.png -- \
+    expect_error "render --truth without --filter ground-truth" "--truth is not read by --filter trilinear (it applies to ground-truth)" out.png -- \
         "$TEXFILTER" render --scene zoom --texture checker --filter trilinear --truth analytic "${REF[@]}" -o out.png
     expect_error "render --truth analytic --scene skybox" "no analytic definition" out.png -- \
         "$TEXFILTER" render --scene skybox --texture checker --texture-size 16 --filter ground-truth --truth analytic \
@@ -1101,6 +1101,144 @@ bounded_text_inputs() {
     rm -rf fifo.txt zero_link.txt sparse_3g.txt manifest-zero manifest-fifo manifest-big
 }
 
+# One rule for every flag: a flag the chosen filter (scene, texture, command) does not read is refused, naming
+# the flag and what it applies to; numbers have one grammar (decimal only); messages escape control bytes.
+flag_rules() {
+    local trilinear=("$TEXFILTER" render --scene zoom --texture checker --filter trilinear "${REF[@]}")
+    local flag
+    for flag in "--probes 4" "--band 0.5" "--alpha 3" "--max-aniso 4" "--aniso 4" "--boxes 2" "--spp 16" \
+        "--pixel-filter gaussian" "--aniso-shape feline" "--taps manual"; do
+        # shellcheck disable=SC2086 # flag and value, two words
+        EXPECT_ONE_LINE=1 expect_error "trilinear refuses ${flag%% *}" \
+            "${flag%% *} is not read by --filter trilinear (it applies to " out.png -- "${trilinear[@]}" $flag -o out.png
+    done
+    expect_error "nearest refuses --lod-bias" "--lod-bias is not read by --filter nearest" out.png -- \
+        "${RENDER[@]}" --lod-bias 1 -o out.png
+    expect_error "sat refuses --lod-min (it has no levels)" "--lod-min is not read by --filter sat" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter sat "${REF[@]}" --lod-min 1 -o out.png
+    expect_error "none refuses --wrap" "--wrap is not read by --filter none" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter none "${REF[@]}" --wrap clamp -o out.png
+    expect_error "sample: trilinear refuses --probes" "--probes is not read by --filter trilinear" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter trilinear --backend reference --probes 4 --lookups good.csv \
+        -o out.csv
+    # The scene's and the texture's flags.
+    expect_error "--env on a 2D scene" "--env is not read by --scene zoom (it applies to the environment scenes" \
+        out.png -- "${trilinear[@]}" --env latlong -o out.png
+    expect_error "--wrap on an environment scene" "--wrap is not read on the environment scenes" out.png -- \
+        "$TEXFILTER" render --scene skybox --texture checker --texture-size 16 --filter trilinear "${REF[@]}" \
+        --wrap clamp -o out.png
+    expect_error "view --env" "--env is not read by view" - -- "$TEXFILTER" view --texture checker --env latlong
+    expect_error "sample --env" "--env is not read by sample" out.csv -- \
+        "${SAMPLE[@]}" --env latlong --lookups good.csv -o out.csv
+    expect_error "--linear on a procedural texture" "--linear is not read by --texture checker" out.png -- \
+        "${trilinear[@]}" --linear -o out.png
+    cp ok.png texture.png
+    expect_error "--texture-size on a file" "--texture-size is not read by --texture texture.png" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture texture.png --texture-size 64 --filter trilinear "${REF[@]}" \
+        -o out.png
+    expect_error "bench --env without an environment scene" "--env is not read by --scenes without skybox" \
+        bench-out -- "$TEXFILTER" bench --quick --scenes zoom --env latlong --out bench-out
+    expect_error "bench --texture-size on a file" "--texture-size is not read by --texture texture.png" bench-out -- \
+        "$TEXFILTER" bench --quick --scenes zoom --texture texture.png --texture-size 64 --out bench-out
+    mkdir -p rules-golden
+    printf 'a zoom checker trilinear size=16x16 texture-size=16 probes=4\n' >rules-golden/manifest.txt
+    expect_error "golden manifest: trilinear with probes=" \
+        "rules-golden/manifest.txt:1: --probes is not read by --filter trilinear" rules-golden/a.png -- \
+        "$TEXFILTER" golden --golden-dir rules-golden --update
+    rm -rf rules-golden
+    printf 'filter trilinear --probes 4\nquit\n' >rules.txt
+    if "$TEXFILTER" view --script rules.txt 2>&1 | grep -q 'left out of this build'; then
+        skip "view script: trilinear with --probes" "the viewer was left out of this build"
+    else
+        expect_error "view script: trilinear with --probes" "--probes is not read by --filter trilinear" - -- \
+            "$TEXFILTER" view --script rules.txt
+        printf 'filter tri\033[2Jlinear\nquit\n' >rules.txt
+        EXPECT_ONE_LINE=1 expect_error "view script: control bytes in a line" "unknown filter 'tri\x1b[2Jlinear'" - -- \
+            "$TEXFILTER" view --script rules.txt
+    fi
+    rm -f rules.txt
+    # Positive controls: the flags the filter reads still work.
+    expect_success "aniso reads --probes" ok1.png -- \
+        "$TEXFILTER" render --scene slanted --texture checker --filter aniso --probes 4 --aniso-shape feline \
+        "${REF[@]}" -o ok1.png
+    expect_success "brilinear reads --band, ewa --alpha, --max-aniso, --taps" ok2.png -- \
+        "$TEXFILTER" render --scene slanted --texture checker --filter ewa --alpha 3 --max-aniso 4 --taps manual \
+        --lod-bias 0.5 "${REF[@]}" -o ok2.png
+    expect_success "sat reads --lod-bias, sat-assembly --boxes" ok3.png -- \
+        "$TEXFILTER" render --scene slanted --texture checker --filter sat-assembly --boxes 2 --lod-bias 1 \
+        "${REF[@]}" -o ok3.png
+    expect_success "stochastic bilinear reads --taps" ok4.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter bilinear --stochastic white --taps manual \
+        "${REF[@]}" -o ok4.png
+    expect_success "ground-truth reads --spp, --pixel-filter, --wrap" ok5.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter ground-truth --spp 16 --pixel-filter gaussian \
+        --wrap clamp "${REF[@]}" -o ok5.png
+    expect_success "skybox reads --env" ok6.png -- \
+        "$TEXFILTER" render --scene skybox --texture checker --texture-size 16 --filter trilinear --env latlong \
+        "${REF[@]}" -o ok6.png
+    expect_success "an 8-bit file reads --linear" ok7.png -- \
+        "$TEXFILTER" render --scene zoom --texture texture.png --linear --filter trilinear "${REF[@]}" -o ok7.png
+    rm -f ok[1-7].png
+    # Numbers: decimal only, no spaces, no inf or nan, whole byte sizes.
+    local ewa=("$TEXFILTER" render --scene zoom --texture checker --filter ewa "${REF[@]}")
+    expect_error "--alpha 0x10 (hexadecimal)" "bad value for --alpha: '0x10'" out.png -- "${ewa[@]}" --alpha 0x10 -o out.png
+    expect_error "--lod-bias inf" "bad value for --lod-bias: 'inf'" out.png -- "${trilinear[@]}" --lod-bias inf -o out.png
+    expect_error "--lod-bias 1e999" "bad value for --lod-bias: '1e999'" out.png -- "${trilinear[@]}" --lod-bias 1e999 -o out.png
+    expect_error "--texture-size ' 5' (a space)" "bad value for --texture-size: ' 5'" out.png -- \
+        "${trilinear[@]}" --texture-size ' 5' -o out.png
+    expect_error "--texture-size '5 ' (a space)" "bad value for --texture-size: '5 '" out.png -- \
+        "${trilinear[@]}" --texture-size '5 ' -o out.png
+    expect_error "--size 0x10x16 (hexadecimal)" "bad value for --size" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter trilinear --backend reference --size 0x10x16 -o out.png
+    expect_error "--spp 0x10" "bad value for --spp: '0x10'" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter ground-truth "${REF[@]}" --spp 0x10 -o out.png
+    expect_error "--camera 0x1,0,0,0,0" "camera X '0x1' is not a number" out.png -- \
+        "${trilinear[@]}" --camera 0x1,0,0,0,0 -o out.png
+    expect_error "--memory-budget 1.5 (a fraction of a byte)" "bad value for --memory-budget: '1.5' is not a size" \
+        out.png -- "${trilinear[@]}" --memory-budget 1.5 -o out.png
+    expect_error "--memory-budget 1.5G" "'1.5G' is not a size" out.png -- "${trilinear[@]}" --memory-budget 1.5G -o out.png
+    expect_error "--memory-budget ' 5G'" "' 5G' is not a size" out.png -- "${trilinear[@]}" --memory-budget ' 5G' -o out.png
+    expect_success "--memory-budget 1536M, --lod-bias +0.5, --lod-max 2e0 (the grammar's forms)" ok.png -- \
+        "${trilinear[@]}" --memory-budget 1536M --lod-bias +0.5 --lod-max 2e0 -o ok.png
+    # Messages: the system's reason for an unreadable file; the procedural names for an unknown name, before any
+    # Vulkan start-up; control bytes escaped; TEXFILTER_VALIDATE checked.
+    if [[ $(id -u) -eq 0 ]] && ! command -v setpriv >/dev/null; then
+        skip "unreadable texture" "running as root without setpriv"
+    else
+        chmod 755 "$WORK"
+        mkdir -p writable && chmod 777 writable
+        cp ok.png unreadable.png && chmod 000 unreadable.png
+        expect_error "unreadable texture" "unreadable.png: Permission denied" writable/out.png -- \
+            "${AS_USER[@]}" "$TEXFILTER" render --scene zoom --texture unreadable.png --filter trilinear "${REF[@]}" \
+            -o writable/out.png
+        expect_error "diff an unreadable image" "unreadable.png: Permission denied" - -- \
+            "${AS_USER[@]}" "$TEXFILTER" diff unreadable.png ok.png
+        rm -rf unreadable.png writable
+        chmod 700 "$WORK"
+    fi
+    expect_error "unknown texture name" \
+        "unknown texture 'chekcer': not a procedural texture (cube-labels, cube-hash, cube-smooth, checker, zoneplate, grid, noise, mipcolors or dynamic) and no such file" \
+        out.png -- "$TEXFILTER" render --scene zoom --texture chekcer --filter trilinear "${REF[@]}" -o out.png
+    EXPECT_ONE_LINE=1 expect_error "unknown texture name without a Vulkan driver" "unknown texture 'chekcer'" out.png -- \
+        "${WITHOUT_VULKAN_DRIVER[@]}" "$TEXFILTER" render --scene zoom --texture chekcer --filter trilinear \
+        --size 16x16 --backend vulkan -o out.png
+    EXPECT_ONE_LINE=1 expect_error "bench: unknown texture name without a Vulkan driver" "unknown texture 'chekcer'" \
+        bench-out -- "${WITHOUT_VULKAN_DRIVER[@]}" "$TEXFILTER" bench --quick --scenes zoom --texture chekcer \
+        --out bench-out
+    EXPECT_ONE_LINE=1 expect_error "control bytes in a flag value" "unknown filter 'tri\x1b[2Jlinear\x0aforged'" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture checker --filter $'tri\e[2Jlinear\nforged' "${REF[@]}" -o out.png
+    EXPECT_ONE_LINE=1 expect_error "control bytes in a texture name" "unknown texture 'a\x07b'" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture $'a\ab' --filter trilinear "${REF[@]}" -o out.png
+    if [[ -n $("$TEXFILTER" render --scene zoom --texture checker --filter $'a\e' "${REF[@]}" -o out.png 2>&1 | tr -d '\n -~') ]]; then
+        fail "control bytes in a flag value" "a byte outside printable ASCII reached stderr"
+    fi
+    EXPECT_ONE_LINE=1 expect_error "TEXFILTER_VALIDATE=yes" "TEXFILTER_VALIDATE='yes' is neither 1" out.png -- \
+        env TEXFILTER_VALIDATE=yes "${trilinear[@]}" -o out.png
+    expect_error "TEXFILTER_VALIDATE=true (info)" "TEXFILTER_VALIDATE='true'" - -- env TEXFILTER_VALIDATE=true "$TEXFILTER" info
+    expect_success "TEXFILTER_VALIDATE=0" validate0.png -- env TEXFILTER_VALIDATE=0 "${trilinear[@]}" -o validate0.png
+    rm -f validate0.png texture.png
+}
+
 # The groups, in order; ctest runs each as its own entry (bad_inputs.GROUP), listed by --list.
 CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_resources diff_contract ground_truth_and_bench_errors
     golden_errors vulkan_errors golden_output_directory outputs_and_inputs unwritable_outputs
@@ -1109,6 +1247,7 @@ CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_re
     exclusive_temporaries
     outputs_created_first
     bounded_text_inputs
+    flag_rules
 )
 if [[ ${#SELECTED[@]} -eq 0 ]]; then
     SELECTED=("${CASE_GROUPS[@]}")

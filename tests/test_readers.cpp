@@ -2,6 +2,9 @@
 // manifest, the PFM reader and the flag parser, through their file and stream entry points. Each test of
 // a fixed bug says which input showed it; all run on the CPU, in milliseconds.
 #include "flags/args.h"
+#include "core/escape.h"
+#include "core/memory_budget.h"
+#include "core/numbers.h"
 #include "texture/error.h"
 #include "cli/golden.h"
 #include "io/lookups_csv.h"
@@ -10,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -165,6 +169,70 @@ TEST_CASE("flags")
     CHECK_EQ(args.get_double("--x", 0, 0, 10), 2.5);
     CHECK(tf::parse_size("--size", args.get("--size", ""), 2, 16) == std::make_pair(8, 8));
     CHECK_THROWS_WITH(tf::parse_size("--size", "8" + std::string(1, '\0') + "1x8", 2, 16), "bad value for --size");
+}
+
+// core/numbers.h: the one grammar of every numeric flag. Decimal only; the forms strtol/strtod also took
+// (hexadecimal, inf, nan, spaces) are refused; byte sizes are whole.
+TEST_CASE("number-grammar")
+{
+    using tf::parse_real_number;
+    using tf::parse_whole_number;
+    CHECK(parse_whole_number("16") == 16);
+    CHECK(parse_whole_number("+16") == 16);
+    CHECK(parse_whole_number("-0") == 0);
+    CHECK(parse_whole_number("0016") == 16);
+    for (const char* bad : {"", "+", "-", "0x10", "1e3", "1.0", " 5", "5 ", "5\n", "1_000", "++1", "١"})
+        CHECK(!parse_whole_number(bad), bad);
+    // Beyond 64 bits: saturated, so that a range check names it out of range.
+    CHECK(parse_whole_number("99999999999999999999") == std::numeric_limits<long long>::max());
+    CHECK(parse_whole_number("-99999999999999999999") == std::numeric_limits<long long>::min());
+
+    CHECK(parse_real_number("16") == 16.0);
+    CHECK(parse_real_number("2.5") == 2.5);
+    CHECK(parse_real_number("-.5") == -0.5);
+    CHECK(parse_real_number("1.") == 1.0);
+    CHECK(parse_real_number("+1e-3") == 0.001);
+    CHECK(parse_real_number("2E2") == 200.0);
+    CHECK(parse_real_number("1e-999") == 0.0);
+    CHECK(parse_real_number("0.1000000000000000055511151231257827") == 0.1);
+    for (const char* bad : {"", ".", "-", "e5", "1e", "1e+", "0x10", "0x1p3", "inf", "-inf", "nan", "infinity",
+                            " 1", "1 ", "1.5.2", "1,5", "1e999", "-1e999", "1f"})
+        CHECK(!parse_real_number(bad), bad);
+
+    CHECK(tf::parse_byte_count("512") == 512u);
+    CHECK(tf::parse_byte_count("1k") == 1024u);
+    CHECK(tf::parse_byte_count("1536M") == 1536ull << 20);
+    CHECK(tf::parse_byte_count("8G") == 8ull << 30);
+    CHECK(tf::parse_byte_count("2T") == 2ull << 40);
+    for (const char* bad : {"", "G", "1.5", "1.5G", "-1G", "+1G", "8GB", "8GiB", "8 G", " 8G", "0x10", "1e9"})
+        CHECK(!tf::parse_byte_count(bad), bad);
+    CHECK(tf::parse_byte_count("99999999999999999999") == std::numeric_limits<uint64_t>::max());
+    CHECK(tf::parse_byte_count("17179869184G") == std::numeric_limits<uint64_t>::max()); // 2^34 G = 2^64 bytes
+
+    // The flags read through it.
+    const std::vector<tf::FlagSpec> specs = {{"--n", "N", ""}, {"--x", "X", ""}};
+    CHECK_THROWS_WITH(tf::parse_args("t", {"--x", "0x10"}, specs, 0).get_double("--x", 0, 0, 100),
+                      "bad value for --x: '0x10' (expected a number in [0, 100])");
+    CHECK_THROWS_WITH(tf::parse_args("t", {"--x", "inf"}, specs, 0).get_double("--x", 0, 0, INFINITY),
+                      "bad value for --x: 'inf' (expected a number in [0, inf])");
+    CHECK_THROWS_WITH(tf::parse_args("t", {"--n", " 5"}, specs, 0).get_int("--n", 0, 0, 100),
+                      "bad value for --n: ' 5' (expected an integer in [0, 100])");
+    CHECK_THROWS_WITH(tf::parse_args("t", {"--n", "99999999999999999999"}, specs, 0).get_int("--n", 0, 0, 100),
+                      "bad value for --n: '99999999999999999999' (expected an integer in [0, 100])");
+    CHECK_THROWS_WITH(tf::parse_byte_size("1.5"), "'1.5' is not a size (a whole number of bytes, or of K, M, G or T: "
+                                                  "512M, 8G; 1536M, not 1.5G)");
+    CHECK_THROWS_WITH(tf::parse_byte_size("0"), "'0' is out of range (expected 1 byte to 1e18 bytes, e.g. 512M, 8G)");
+    CHECK_THROWS_WITH(tf::parse_byte_size("99999999999999999999G"), "'99999999999999999999G' is out of range "
+                                                                    "(expected 1 byte to 1e18 bytes, e.g. 512M, 8G)");
+}
+
+// core/escape.h: what every message and the lookups CSV's quotes write for bytes a terminal would act on.
+TEST_CASE("escape-bytes")
+{
+    using tf::Escape;
+    const std::string text = std::string("a\x1b[2J\n\t\x7f\\b") + std::string(1, '\0') + "\xc3\xa9";
+    CHECK(tf::escape_bytes(text, Escape::control) == "a\\x1b[2J\\x0a\\x09\\x7f\\b\\x00\xc3\xa9");
+    CHECK(tf::escape_bytes(text, Escape::all_but_ascii) == "a\\x1b[2J\\x0a\\x09\\x7f\\x5cb\\x00\\xc3\\xa9");
 }
 
 } // namespace

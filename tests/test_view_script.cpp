@@ -43,7 +43,7 @@ void check_good_line(const std::string& line, const char* file, int at)
 
 const char* const kEveryAction = R"(# every action once
 scene tunnel
-texture checker --texture-size 64 --linear
+texture checker --texture-size 64
 filter ewa --alpha 3 --max-aniso 8 --taps hardware
 compare aniso --probes 4 --aniso-shape feline
 resize 640x480
@@ -87,7 +87,7 @@ TEST_CASE("every-action")
         return;
     CHECK(a[0].verb == "scene" && a[0].line == 2 && script_scene(a[0]) == SceneKind::tunnel);
     const TextureSource t = script_texture(a[1]);
-    CHECK(t.name_or_path == "checker" && t.procedural_size == 64 && t.color == ColorSpace::linear);
+    CHECK(t.name_or_path == "checker" && t.procedural_size == 64 && t.color == ColorSpace::automatic);
     const SamplerOptions f = script_sampler(a[2]);
     CHECK(f.filter == Filter::ewa && f.alpha == 3.0f && f.max_aniso == 8.0f && f.taps == Taps::hardware);
     const SamplerOptions c = script_sampler(a[3]);
@@ -150,6 +150,17 @@ TEST_CASE("errors-name-the-line")
     CHECK_BAD_LINE("filter --band 0.5", "missing its first word before any flag (F)");
     CHECK_BAD_LINE("texture checker --texture-size 0", "--texture-size");
     CHECK_BAD_LINE("texture checker --filter ewa", "unknown flag --filter");
+    // A line sets the whole half or texture: a flag it does not read is refused as render refuses it, but for
+    // what the viewer's own views read (the LOD view: --lod-*; the error view's truth: --spp, --pixel-filter).
+    CHECK_BAD_LINE("texture checker --linear", "--linear is not read by --texture checker");
+    CHECK_GOOD_LINE("texture not-yet-written.png"); // a file is checked when the line runs: a screenshot may write it
+    CHECK_BAD_LINE("filter trilinear --probes 4", "--probes is not read by --filter trilinear (it applies to aniso)");
+    CHECK_BAD_LINE("compare bilinear --alpha 3", "--alpha is not read by --filter bilinear (it applies to ewa)");
+    CHECK_GOOD_LINE("filter nearest --lod-bias 1");
+    CHECK_GOOD_LINE("filter trilinear --spp 16 --pixel-filter gaussian");
+    CHECK_BAD_LINE("filter ewa --alpha 0x10", "bad value for --alpha: '0x10'");
+    CHECK_BAD_LINE("wait 0x10", "'0x10' is not a whole number");
+    CHECK_BAD_LINE("divider inf", "'inf' is not a finite number");
     CHECK_BAD_LINE("filter", "missing");
     CHECK_BAD_LINE("filter blurry", "blurry");
     CHECK_BAD_LINE("filter ewa --alpha 99", "--alpha");
@@ -173,7 +184,7 @@ TEST_CASE("errors-name-the-line")
     CHECK_BAD_LINE("camera zoom 2", "unknown camera action 'zoom'");
     CHECK_BAD_LINE("camera reset now", "camera reset");
     CHECK_BAD_LINE("camera set 1,2,3,4", "X,Y,Z,YAW,PITCH");
-    CHECK_BAD_LINE("camera set 1,2,3,4,nan", "PITCH is nan"); // tf::parse_camera's words, as render --camera's
+    CHECK_BAD_LINE("camera set 1,2,3,4,nan", "PITCH 'nan' is not a number"); // tf::parse_camera's words, as render --camera's
     CHECK_BAD_LINE("camera set 0,0,0,0,90", "PITCH");
     CHECK_BAD_LINE("camera set 1 2 3 4 5", "camera set X,Y,Z,YAW,PITCH");
     CHECK_BAD_LINE("camera fly 1 2", "camera fly DX DY DZ");

@@ -168,7 +168,9 @@ int run_bench(const std::vector<std::string>& argv)
     config.height = height;
     config.stage = parse_flag(args, "--stage", "fragment", parse_stage);
     config.texture.name_or_path = args.get("--texture", "checker");
+    check_texture_name(config.texture.name_or_path); // before the device is opened
     config.texture.procedural_size = args.get_int("--texture-size", config.quick ? 256 : 512, 1, 16384);
+    check_texture_size_flag(args, config.texture.name_or_path);
     if (args.has("--memory-budget"))
         config.texture.memory_budget = parse_flag(args, "--memory-budget", "", parse_byte_size);
     config.texture.format = parse_flag(args, "--format", "rgba32f", parse_texture_format);
@@ -198,6 +200,7 @@ int run_bench(const std::vector<std::string>& argv)
             throw Error(std::string("bad value for --scenes: ") + e.what());
         }
     }
+    check_env_flag(args, config.scenes, "--scenes without skybox or reflect");
     for (SceneKind kind : config.scenes) // before any work: the environment maps' own limits
         if (is_environment_scene(kind) && (config.texture.format != TextureFormat::rgba32f || config.texture.build != TextureBuild::cpu))
             throw Error("--scenes " + to_string(kind) + ": environment maps are uploaded as rgba32f and built on the host "

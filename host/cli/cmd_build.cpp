@@ -109,6 +109,7 @@ int run_build(const std::vector<std::string>& argv)
     std::vector<std::string> source_argv = argv;
     if (!args.has("--build")) // this command's default: the device's build (the host's is --build cpu)
         source_argv.insert(source_argv.end(), {"--build", "gpu"});
+    check_env_flag(args, {}, "build, which builds 2D textures");
     const TextureSource source = texture_source_from(parse_args("build", source_argv, specs, 0));
     const bool with_sat = args.has("--sat");
     const std::string level_format = args.get("--level-format", "pfm");

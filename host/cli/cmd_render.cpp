@@ -76,7 +76,11 @@ int run_render(const std::vector<std::string>& argv)
     RenderOptions render = make_render_options(kind, parse_flag(args, "--stage", "fragment", parse_stage),
                                                parse_flag(args, "--derivatives", "fine", parse_gradients));
     render.view = parse_flag(args, "--view", "color", parse_view);
-    SamplerOptions options = sampler_options_from(args);
+    SamplerFlagUse flag_use;
+    flag_use.lod_view = render.view == DebugView::lod || render.view == DebugView::data; // they show the LOD
+    flag_use.environment = is_environment_scene(kind);
+    SamplerOptions options = sampler_options_from(args, flag_use);
+    check_env_flag(args, {kind}, "--scene " + to_string(kind));
     check_view(options.filter, render.view); // before any work
     const int frame = args.get_int("--frame", 0, 0, 1000000);
     std::optional<Camera> camera;

@@ -57,6 +57,7 @@ int run_sample(const std::vector<std::string>& argv)
         return 0;
     }
     SamplerOptions options = sampler_options_from(args);
+    check_env_flag(args, {}, "sample, whose lookups are 2D uv");
     if (options.filter == Filter::ground_truth)
         throw Error("bad value for --filter: ground-truth integrates over a scene's pixels, not around a lookup "
                     "(use render)");

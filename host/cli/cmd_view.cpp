@@ -54,6 +54,7 @@ int run_view(const std::vector<std::string>& argv)
     throw Error("the viewer was left out of this build (configure with -DTEXFILTER_VIEWER=ON; it needs GLFW and "
                 "Dear ImGui: tools/setup.sh)");
 #else
+    check_env_flag(args, {}, "view, which shows the 2D scenes only");
     ViewOptions options;
     ViewState& s = options.state;
     if (args.has("--state")) {
@@ -72,7 +73,8 @@ int run_view(const std::vector<std::string>& argv)
         Args filter_args = args;
         if (!args.has("--filter"))
             filter_args = parse_args("view", {"--filter", "trilinear"}, sampler_flags(SamplerFlags::scenes), 0);
-        s.a.options = sampler_options_from(filter_args);
+        // Every filter's flags are kept: the keys and the compare half change the filter at run time.
+        s.a.options = sampler_options_from(filter_args, {.keep_unread = true});
         check_viewer_sampler(s.a.options);
     }
     if (args.has("--compare")) {

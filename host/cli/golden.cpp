@@ -69,7 +69,10 @@ std::vector<GoldenCase> parse_manifest(std::istream& in, const std::string& path
             Args args = parse_args("manifest", argv, specs, 0);
             c.scene = parse_flag(args, "--scene", "", parse_scene);
             c.texture = texture_source_from(args);
-            c.sampler = sampler_options_from(args);
+            SamplerFlagUse use;
+            use.environment = is_environment_scene(c.scene);
+            c.sampler = sampler_options_from(args, use);
+            check_env_flag(args, {c.scene}, "scene " + to_string(c.scene));
             if (is_environment_scene(c.scene))
                 check_environment_truth(c.sampler);
             resolve_analytic_truth(c.sampler, c.texture.name_or_path); // truth=analytic: the texture's function

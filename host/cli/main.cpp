@@ -1,5 +1,7 @@
 // texfilter: render test scenes, run point lookups, compare images, check goldens.
 #include "cli/commands.h"
+#include "core/escape.h"
+#include "flags/cli_common.h"
 #include "texture/error.h"
 #include "io/temporary_files.h"
 #include <cstdio>
@@ -23,6 +25,13 @@ const char* usage = "usage: texfilter COMMAND [options]\n"
                     "\n"
                     "texfilter COMMAND --help shows a command's options.\n";
 
+// Every message leaves through here: a control byte from a flag, a script line or a file name is written as
+// \xNN, so that no input can move the cursor or forge a line of its own.
+void print_error(const std::string& message)
+{
+    std::fprintf(stderr, "texfilter: %s\n", tf::escape_bytes(message, tf::Escape::control).c_str());
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -35,6 +44,7 @@ int main(int argc, char** argv)
     std::string command = argv[1];
     std::vector<std::string> rest(argv + 2, argv + argc);
     try {
+        tf::validate_from_environment(); // TEXFILTER_VALIDATE=yes is refused by every command, not ignored
         if (command == "--help" || command == "-h" || command == "help") {
             std::fputs(usage, stdout);
             return 0;
@@ -55,17 +65,18 @@ int main(int argc, char** argv)
             return tf::run_build(rest);
         if (command == "view")
             return tf::run_view(rest);
-        std::fprintf(stderr, "texfilter: unknown command '%s'\n\n%s", command.c_str(), usage);
+        print_error("unknown command '" + command + "'");
+        std::fprintf(stderr, "\n%s", usage);
         return 2;
     } catch (const tf::Error& e) {
-        std::fprintf(stderr, "texfilter: %s\n", e.what());
+        print_error(e.what());
         return 2;
     } catch (const std::filesystem::filesystem_error& e) {
         // A file system call that a command did not check first: still a message about a path, not a bug report.
-        std::fprintf(stderr, "texfilter: %s: %s\n", e.path1().c_str(), e.code().message().c_str());
+        print_error(e.path1().string() + ": " + e.code().message());
         return 2;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "texfilter: internal error: %s\n", e.what());
+        print_error(std::string("internal error: ") + e.what());
         return 2;
     }
 }

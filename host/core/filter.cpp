@@ -118,6 +118,105 @@ bool takes_taps(Filter filter) {
 
 bool takes_magnify(Filter filter) { return filter == Filter::trilinear || filter == Filter::aniso || filter == Filter::ewa; }
 
+namespace {
+
+bool reads_lod_bias(Filter f)
+{
+    switch (f) {
+    case Filter::nearest_mip:
+    case Filter::bilinear_mip:
+    case Filter::trilinear:
+    case Filter::brilinear:
+    case Filter::aniso:
+    case Filter::ewa:
+    case Filter::sat:          // scales the footprint by exp2(bias) (sat.glsl)
+    case Filter::sat_assembly:
+    case Filter::hw_trilinear: // mipLodBias
+    case Filter::hw_aniso:
+        return true;
+    default: // level 0 only (hw-nearest and hw-bilinear: maxLod 0), ground-truth, none
+        return false;
+    }
+}
+
+// The clamps of the LOD: every filter that picks levels (not sat, which has none).
+bool reads_lod_range(Filter f) { return reads_lod_bias(f) && f != Filter::sat && f != Filter::sat_assembly; }
+
+struct FlagReaders {
+    const char* flag;
+    bool (*reads)(Filter filter, bool stochastic);
+};
+
+const FlagReaders kFlagReaders[] = {
+    {"--wrap", [](Filter f, bool) { return f != Filter::none; }}, // none shows fract(uv), no texel
+    {"--aniso", [](Filter f, bool) { return f == Filter::hw_aniso; }},
+    {"--band", [](Filter f, bool) { return f == Filter::brilinear; }},
+    {"--probes", [](Filter f, bool) { return f == Filter::aniso; }},
+    {"--aniso-shape", [](Filter f, bool) { return f == Filter::aniso; }},
+    {"--taps", [](Filter f, bool stochastic) {
+         return takes_taps(f) || (stochastic && (f == Filter::bilinear || f == Filter::trilinear));
+     }},
+    {"--magnify", [](Filter f, bool) { return takes_magnify(f); }},
+    {"--alpha", [](Filter f, bool) { return f == Filter::ewa; }},
+    {"--max-aniso", [](Filter f, bool) { return f == Filter::ewa; }},
+    {"--boxes", [](Filter f, bool) { return f == Filter::sat_assembly; }},
+    {"--pixel-filter", [](Filter f, bool) { return f == Filter::ground_truth; }},
+    {"--spp", [](Filter f, bool) { return f == Filter::ground_truth; }},
+    {"--truth", [](Filter f, bool) { return f == Filter::ground_truth; }},
+    {"--stochastic", [](Filter f, bool) { return takes_stochastic(f); }},
+    {"--lod-bias", [](Filter f, bool) { return reads_lod_bias(f); }},
+    {"--lod-min", [](Filter f, bool) { return reads_lod_range(f); }},
+    {"--lod-max", [](Filter f, bool) { return reads_lod_range(f); }},
+};
+
+const FlagReaders& flag_readers(const std::string& flag)
+{
+    for (const FlagReaders& r : kFlagReaders)
+        if (flag == r.flag)
+            return r;
+    throw Error("filter_reads: " + flag + " is not a sampler flag");
+}
+
+std::string and_list(const std::vector<std::string>& names)
+{
+    std::string list;
+    for (size_t i = 0; i < names.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return list;
+}
+
+} // namespace
+
+const std::vector<std::string>& sampler_flag_names()
+{
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> list;
+        for (const FlagReaders& r : kFlagReaders)
+            list.push_back(r.flag);
+        return list;
+    }();
+    return names;
+}
+
+bool filter_reads(Filter filter, const std::string& flag, bool stochastic)
+{
+    return flag_readers(flag).reads(filter, stochastic);
+}
+
+std::string filters_reading(const std::string& flag)
+{
+    const FlagReaders& r = flag_readers(flag);
+    std::vector<std::string> always, stochastic;
+    for (const auto& [filter, name] : kFilterNames)
+        if (r.reads(filter, false))
+            always.push_back(name);
+        else if (r.reads(filter, true))
+            stochastic.push_back(name);
+    return and_list(always) + (stochastic.empty() ? "" : "; with --stochastic also " + and_list(stochastic));
+}
+
+bool is_lod_flag(const std::string& flag) { return flag == "--lod-bias" || flag == "--lod-min" || flag == "--lod-max"; }
+
 void check_magnify(const SamplerOptions& options) {
     if (options.magnify != Reconstruction::bilinear && !takes_magnify(options.filter))
         throw Error("--magnify " + to_string(options.magnify) + " applies to trilinear, aniso and ewa (level 0's "

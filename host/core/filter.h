@@ -66,6 +66,17 @@ bool is_scene_level(Filter filter); // ground-truth, none: they need a scene, no
 bool takes_taps(Filter filter);      // --taps applies: aniso, ewa, bspline, catmull-rom
 bool takes_magnify(Filter filter);   // --magnify applies: trilinear, aniso, ewa
 
+// The sampler flags each filter reads: one table (filter.cpp), taken from what the harness
+// (shaders/harness/filter_select.glsl, env_select.glsl, the hardware sampler's state) and the CPU reference
+// really read, so that every command refuses a flag its filter would ignore (flags/cli_common.h).
+// `stochastic`: the one-texel forms (--stochastic), whose bilinear and trilinear read --taps as well.
+// Not in it: --filter itself, --backend, and --accumulate (it needs --stochastic: check_stochastic).
+const std::vector<std::string>& sampler_flag_names(); // "--wrap", "--aniso", ... in --help's order
+bool filter_reads(Filter filter, const std::string& flag, bool stochastic);
+// The filters that read `flag`, for messages: "aniso", "trilinear, aniso and ewa".
+std::string filters_reading(const std::string& flag);
+bool is_lod_flag(const std::string& flag); // --lod-bias, --lod-min, --lod-max
+
 Wrap parse_wrap(const std::string& name);
 std::string to_string(Wrap wrap);
 AnisoShape parse_aniso_shape(const std::string& name);

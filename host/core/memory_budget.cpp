@@ -1,4 +1,5 @@
 #include "core/memory_budget.h"
+#include "core/numbers.h"
 #include "texture/error.h"
 #include <algorithm>
 #include <cmath>
@@ -47,31 +48,13 @@ uint64_t default_memory_budget()
 
 uint64_t parse_byte_size(const std::string& text)
 {
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    double unit = 1;
-    std::string suffix = end ? std::string(end) : std::string();
-    if (!suffix.empty() && (suffix.back() == 'B' || suffix.back() == 'b') && suffix.size() > 1)
-        suffix.pop_back(); // 8GB, 8GiB read as 8G
-    if (suffix.size() == 2 && (suffix[1] == 'i' || suffix[1] == 'I'))
-        suffix.pop_back();
-    if (suffix.size() == 1) {
-        switch (suffix[0]) {
-        case 'k': case 'K': unit = 1024.0; break;
-        case 'm': case 'M': unit = 1024.0 * 1024; break;
-        case 'g': case 'G': unit = 1024.0 * 1024 * 1024; break;
-        case 't': case 'T': unit = 1024.0 * 1024 * 1024 * 1024; break;
-        default: unit = 0;
-        }
-    } else if (!suffix.empty()) {
-        unit = 0;
-    }
-    const double bytes = value * unit;
-    if (text.empty() || end == text.c_str() || unit == 0 || std::isnan(bytes))
-        throw Error("'" + text + "' is not a size (a number of bytes, or with K, M, G or T: 512M, 8G)");
-    if (bytes < 1 || bytes > 1e18) // a number of bytes, but none a budget can be
+    const std::optional<uint64_t> bytes = parse_byte_count(text);
+    if (!bytes)
+        throw Error("'" + text + "' is not a size (a whole number of bytes, or of K, M, G or T: 512M, 8G; "
+                    "1536M, not 1.5G)");
+    if (*bytes < 1 || *bytes > uint64_t(1e18)) // a number of bytes, but none a budget can be
         throw Error("'" + text + "' is out of range (expected 1 byte to 1e18 bytes, e.g. 512M, 8G)");
-    return uint64_t(bytes);
+    return *bytes;
 }
 
 std::string format_bytes(uint64_t bytes)

@@ -29,7 +29,8 @@ TextureMemory estimate_texture_memory(int width, int height, bool with_sat, Text
 // The default host budget: half of physical memory (the rest is the system's, the driver's and the scene's).
 uint64_t default_memory_budget();
 
-// "512M", "8G", "1.5T", "1048576" (binary units: K = 1024). Throws tf::Error naming the text.
+// "512M", "8G", "1048576": core/numbers.h's byte size (binary units: K = 1024; whole numbers, so not 1.5G),
+// from 1 byte to 1e18. Throws tf::Error naming the text.
 uint64_t parse_byte_size(const std::string& text);
 
 // "4.2 GiB", "512 MiB", "900 bytes".

@@ -1,8 +1,8 @@
 #include "flags/args.h"
+#include "core/numbers.h"
 #include "texture/error.h"
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <optional>
 
 namespace tf {
 
@@ -25,12 +25,11 @@ int Args::get_int(const std::string& flag, int fallback, int min, int max) const
     if (!has(flag))
         return fallback;
     const std::string& text = values.at(flag);
-    char* end = nullptr;
-    long value = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || end != text.c_str() + text.size() || value < min || value > max)
+    const std::optional<long long> value = parse_whole_number(text);
+    if (!value || *value < min || *value > max)
         throw Error("bad value for " + flag + ": '" + text + "' (expected an integer in [" + std::to_string(min) +
                     ", " + std::to_string(max) + "])");
-    return int(value);
+    return int(*value);
 }
 
 namespace {
@@ -47,12 +46,11 @@ double Args::get_double(const std::string& flag, double fallback, double min, do
     if (!has(flag))
         return fallback;
     const std::string& text = values.at(flag);
-    char* end = nullptr;
-    double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || value < min || value > max)
+    const std::optional<double> value = parse_real_number(text);
+    if (!value || *value < min || *value > max)
         throw Error("bad value for " + flag + ": '" + text + "' (expected a number in [" + format_number(min) +
                     ", " + format_number(max) + "])");
-    return value;
+    return *value;
 }
 
 Args parse_args(const std::string& command, const std::vector<std::string>& argv, const std::vector<FlagSpec>& specs,
@@ -129,15 +127,11 @@ std::pair<int, int> parse_size(const std::string& flag, const std::string& text,
     };
     if (x == std::string::npos)
         throw bad();
-    std::string w = text.substr(0, x), h = text.substr(x + 1);
-    char* end = nullptr;
-    long width = std::strtol(w.c_str(), &end, 10);
-    if (w.empty() || end != w.c_str() + w.size())
+    const std::optional<long long> width = parse_whole_number(text.substr(0, x));
+    const std::optional<long long> height = parse_whole_number(text.substr(x + 1));
+    if (!width || !height || *width < min || *width > max || *height < min || *height > max)
         throw bad();
-    long height = std::strtol(h.c_str(), &end, 10);
-    if (h.empty() || end != h.c_str() + h.size() || width < min || width > max || height < min || height > max)
-        throw bad();
-    return {int(width), int(height)};
+    return {int(*width), int(*height)};
 }
 
 } // namespace tf

@@ -21,6 +21,8 @@ struct Args {
     bool has(const std::string& flag) const { return values.count(flag) != 0; }
     std::string get(const std::string& flag, const std::string& fallback) const;
     std::string require(const std::string& flag) const;
+    // The flag's value in core/numbers.h's grammar (decimal only, no spaces, no inf or nan) and in [min, max],
+    // or `fallback` where the flag is absent; throws naming the flag, the text and the range.
     int get_int(const std::string& flag, int fallback, int min, int max) const;
     double get_double(const std::string& flag, double fallback, double min, double max) const;
 };

@@ -4,8 +4,12 @@
 #include "vulkan/device_memory_check.h"
 #include "texture/error.h"
 #include "core/memory_budget.h"
+#include "core/numbers.h"
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
+#include <filesystem>
+#include <optional>
 
 namespace tf {
 
@@ -92,12 +96,44 @@ std::vector<FlagSpec> join(std::vector<std::vector<FlagSpec>> groups)
     return out;
 }
 
-TextureSource texture_source_from(const Args& args)
+namespace {
+
+bool has_extension(const std::string& path, std::initializer_list<const char*> extensions)
+{
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+    return std::find(extensions.begin(), extensions.end(), ext) != extensions.end();
+}
+
+} // namespace
+
+void check_texture_size_flag(const Args& args, const std::string& name)
+{
+    if (args.has("--texture-size") && !is_procedural_texture(name))
+        throw Error("--texture-size is not read by --texture " + name + " (it applies to the procedural textures: " +
+                    procedural_texture_names() + "; a file has its own size)");
+}
+
+TextureSource texture_source_from(const Args& args) { return texture_source_from(args, TextureCheck::now); }
+
+TextureSource texture_source_from(const Args& args, TextureCheck when)
 {
     TextureSource source;
     source.name_or_path = args.require("--texture");
+    const std::string& name = source.name_or_path;
+    const bool procedural = is_procedural_texture(name);
+    if (when == TextureCheck::now)
+        check_texture_name(name);
     source.procedural_size = args.get_int("--texture-size", 256, 1, max_texture_dimension);
+    check_texture_size_flag(args, name);
     source.color = args.has("--linear") ? ColorSpace::linear : ColorSpace::automatic;
+    if (args.has("--linear") && procedural)
+        throw Error("--linear is not read by --texture " + name + " (it applies to image files: a procedural "
+                    "texture is made in linear values)");
+    if (args.has("--linear") && has_extension(name, {".exr", ".pfm", ".hdr"}))
+        throw Error("--linear is not read by --texture " + name + " (it applies to 8- and 16-bit image files: "
+                    "floats are read as linear values already)");
     source.format = parse_flag(args, "--format", "rgba32f", parse_texture_format);
     source.build = parse_flag(args, "--build", "cpu", parse_texture_build);
     if (args.has("--texture-frame")) {
@@ -117,7 +153,17 @@ TextureSource texture_source_from(const Args& args)
     return source;
 }
 
-SamplerOptions sampler_options_from(const Args& args)
+void check_env_flag(const Args& args, const std::vector<SceneKind>& scenes, const std::string& where)
+{
+    if (!args.has("--env"))
+        return;
+    for (SceneKind kind : scenes)
+        if (is_environment_scene(kind))
+            return;
+    throw Error("--env is not read by " + where + " (it applies to the environment scenes, skybox and reflect)");
+}
+
+SamplerOptions sampler_options_from(const Args& args, const SamplerFlagUse& use)
 {
     SamplerOptions options;
     options.filter = parse_flag(args, "--filter", "", parse_filter);
@@ -128,35 +174,46 @@ SamplerOptions sampler_options_from(const Args& args)
     options.aniso_shape = parse_flag(args, "--aniso-shape", "gpu", parse_aniso_shape);
     options.taps = parse_flag(args, "--taps", "manual", parse_taps);
     options.magnify = parse_flag(args, "--magnify", "bilinear", parse_reconstruction);
-    check_magnify(options);
     options.alpha = float(args.get_double("--alpha", options.alpha, 0.05, 16.0));
     options.max_aniso = float(args.get_double("--max-aniso", options.max_aniso, 1.0, 64.0));
     options.boxes = args.get_int("--boxes", options.boxes, 1, 16);
     options.pixel_filter = parse_flag(args, "--pixel-filter", "box", parse_pixel_filter);
     options.truth_side = parse_flag(args, "--spp", "256", parse_spp_side);
     options.truth = parse_flag(args, "--truth", "texels", parse_truth); // its texture: resolve_analytic_truth
-    if (args.has("--truth") && options.filter != Filter::ground_truth)
-        throw Error("--truth applies to --filter ground-truth only (what the truth integrates), not to --filter " +
-                    to_string(options.filter));
     if (args.has("--stochastic")) {
         options.stochastic = true;
         options.noise = parse_flag(args, "--stochastic", "", parse_noise);
     }
     if (args.has("--accumulate")) {
         const std::string n = args.get("--accumulate", "");
-        char* end = nullptr;
-        const long value = std::strtol(n.c_str(), &end, 10);
-        if (n.empty() || *end != '\0')
+        const std::optional<long long> value = parse_whole_number(n);
+        if (!value)
             throw Error("bad value for --accumulate: '" + n + "' (expected a whole number of frames, 1..4096)");
-        if (value < 1 || value > HARNESS_MAX_ACCUMULATE) // named as given: 99999999999 must not read as 4097
+        if (*value < 1 || *value > HARNESS_MAX_ACCUMULATE) // named as given: 99999999999 must not read as 4097
             throw Error("bad value for --accumulate: " + n + " (expected 1.." + std::to_string(HARNESS_MAX_ACCUMULATE) +
                         " frames)");
-        options.accumulate = int(value);
+        options.accumulate = int(*value);
     }
-    check_stochastic(options); // --accumulate's range, the filter, --magnify
     options.lod_bias = float(args.get_double("--lod-bias", 0.0, -16.0, 16.0));
     options.lod_min = float(args.get_double("--lod-min", 0.0, 0.0, 1000.0));
     options.lod_max = float(args.get_double("--lod-max", 1000.0, 0.0, 1000.0));
+    // Every value is well formed; now whether the filter reads it, before the combinations of what it reads.
+    if (!use.keep_unread)
+        for (const std::string& flag : sampler_flag_names()) {
+            if (!args.has(flag) || filter_reads(options.filter, flag, options.stochastic))
+                continue;
+            if (use.lod_view && is_lod_flag(flag) && !is_scene_level(options.filter))
+                continue;
+            if (use.truth_view && (flag == "--spp" || flag == "--pixel-filter"))
+                continue;
+            throw Error(flag + " is not read by --filter " + to_string(options.filter) + " (it applies to " +
+                        filters_reading(flag) + ")");
+        }
+    if (use.environment && args.has("--wrap") && !use.keep_unread)
+        throw Error("--wrap is not read on the environment scenes (skybox, reflect: a cube or lat-long map has no "
+                    "edge to wrap)");
+    check_magnify(options);
+    check_stochastic(options); // --accumulate's range, the filter, --magnify
     if (options.lod_min > options.lod_max)
         throw Error("bad values: --lod-min " + args.get("--lod-min", "0") + " is above --lod-max " +
                     args.get("--lod-max", "1000"));
@@ -176,14 +233,13 @@ void check_viewer_sampler(const SamplerOptions& options)
 int parse_spp_side(const std::string& text)
 {
     const int largest = max_ground_truth_side * max_ground_truth_side;
-    char* end = nullptr;
-    long spp = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || spp < 1 || spp > largest)
+    const std::optional<long long> spp = parse_whole_number(text);
+    if (!spp || *spp < 1 || *spp > largest)
         throw Error("'" + text + "' is not a whole number in 1.." + std::to_string(largest));
     int side = 1;
-    while ((side + 1) * (side + 1) <= spp)
+    while ((side + 1) * (side + 1) <= *spp)
         ++side;
-    if (side * side != spp)
+    if (side * side != *spp)
         throw Error("'" + text + "' is not a square number (the samples form a side x side grid: 64, 256, 1024, ...)");
     return side;
 }
@@ -199,12 +255,23 @@ std::string device_flag(const Args& args)
 }
 } // namespace
 
+bool validate_from_environment()
+{
+    const char* env = std::getenv("TEXFILTER_VALIDATE");
+    const std::string value = env ? env : "";
+    if (value.empty() || value == "0")
+        return false;
+    if (value == "1")
+        return true;
+    throw Error("TEXFILTER_VALIDATE='" + value + "' is neither 1 (the Vulkan validation layers on, as --validate) nor "
+                "0 or empty (off)");
+}
+
 ContextOptions context_options_from(const Args& args)
 {
     ContextOptions options;
     options.device = device_flag(args);
-    const char* env = std::getenv("TEXFILTER_VALIDATE");
-    options.validate = args.has("--validate") || (env && std::string(env) == "1");
+    options.validate = args.has("--validate") || validate_from_environment();
     return options;
 }
 

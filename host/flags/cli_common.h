@@ -26,14 +26,39 @@ std::string scene_names();
 std::vector<FlagSpec> device_flags();
 std::vector<FlagSpec> join(std::vector<std::vector<FlagSpec>> groups);
 
+// The texture flags. Refused before any device is opened: a --texture that is neither a procedural name nor a
+// readable file (the message lists the names), --texture-size on a file, --linear on a procedural texture or a
+// float file (.exr, .pfm, .hdr: linear already).
 TextureSource texture_source_from(const Args& args);
-SamplerOptions sampler_options_from(const Args& args);
+// when = later: the file is checked when the texture loads (the viewer's script, whose screenshots may write
+// the file a later line loads). For a command with texture flags of its own (bench): check_texture_name
+// (io/texture_source.h), and --texture-size on a procedural texture only. Throw tf::Error.
+enum class TextureCheck { now, later };
+TextureSource texture_source_from(const Args& args, TextureCheck when);
+void check_texture_size_flag(const Args& args, const std::string& name_or_path);
+
+// Who reads the sampler flags besides the filter (core/filter.h's table): a flag that nothing reads is refused,
+// naming the flag and the filters that read it (docs/CLI.md, "Flags a filter does not read").
+struct SamplerFlagUse {
+    // The viewer's command line and state files: its keys and its compare half change the filter at run time,
+    // so every filter's flags are kept for later.
+    bool keep_unread = false;
+    bool lod_view = false;    // render --view lod|data, the viewer's script: the view shows the LOD --lod-* make
+    bool truth_view = false;  // the viewer's script: the error view's ground truth reads --spp, --pixel-filter
+    bool environment = false; // skybox, reflect: directions have no edges, so --wrap is read by nothing
+};
+SamplerOptions sampler_options_from(const Args& args, const SamplerFlagUse& use = {});
 // What the viewer cannot show, pointing at render: --truth analytic (its ground truth integrates the texels,
 // and its texture can change under it) and --stochastic (one deterministic frame a change). Throws tf::Error.
 void check_viewer_sampler(const SamplerOptions& options);
 // --spp: a square number of samples a pixel, 1..4096; returns the grid side. Throws naming what is wrong.
 int parse_spp_side(const std::string& text);
+// TEXFILTER_VALIDATE: unset, empty or 0 off, 1 on (as --validate); anything else is refused (tf::Error).
+bool validate_from_environment();
 ContextOptions context_options_from(const Args& args);
+// --env is read on the environment scenes only: throws naming `where` ("--scene plane") when none of `scenes`
+// is one.
+void check_env_flag(const Args& args, const std::vector<SceneKind>& scenes, const std::string& where);
 Backend backend_from(const Args& args);
 
 // parse(value of flag), with the flag's name put in front of any error ("bad value for --filter: ...").

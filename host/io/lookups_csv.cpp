@@ -1,4 +1,5 @@
 #include "io/lookups_csv.h"
+#include "core/escape.h"
 #include "texture/error.h"
 #include <cstdio>
 #include <cstdlib>
@@ -21,18 +22,7 @@ std::string trim(const std::string& s)
 constexpr size_t quote_limit = 40;
 std::string quote(const std::string& s)
 {
-    std::string out = "'";
-    for (size_t i = 0; i < s.size() && i < quote_limit; ++i) {
-        unsigned char c = static_cast<unsigned char>(s[i]);
-        if (c >= 0x20 && c < 0x7f && c != '\\') {
-            out += char(c);
-        } else {
-            char hex[8];
-            std::snprintf(hex, sizeof(hex), "\\x%02x", c);
-            out += hex;
-        }
-    }
-    out += "'";
+    std::string out = "'" + escape_bytes(std::string_view(s).substr(0, quote_limit), Escape::all_but_ascii) + "'";
     if (s.size() > quote_limit)
         out += "... (" + std::to_string(s.size()) + " characters)";
     return out;

@@ -50,6 +50,11 @@ void check_readable_file(const std::string& path) {
     const fs::file_status status = fs::status(path, ec);
     if (ec || !fs::exists(status)) throw Error(path + ": no such file");
     if (fs::is_directory(status)) throw Error(path + ": is a directory, not an image file");
+    // OpenImageIO would say only "cannot open as an image"; the system says why (Permission denied).
+    if (std::FILE* file = std::fopen(path.c_str(), "rb"))
+        std::fclose(file);
+    else
+        throw Error(path + ": " + std::strerror(errno));
     const auto size = fs::file_size(path, ec);
     if (ec) throw Error(path + ": cannot read (" + ec.message() + ")");
     if (size == 0) throw Error(path + ": file is empty");

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -55,7 +56,7 @@ Image read_pfm(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw Error(path + ": cannot open");
+        throw Error(path + ": cannot open (" + std::strerror(errno) + ")");
     return read_pfm(in, path);
 }
 

@@ -1,16 +1,55 @@
 #include "io/texture_source.h"
 #include "texture/error.h"
 #include "core/memory_budget.h"
+#include "core/cube_textures.h"
 #include "core/procedural.h"
 #include "texture/sat.h"
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <system_error>
+#include <unistd.h>
 
 namespace tf {
+
+bool is_procedural_texture(const std::string& name) { return is_procedural(name) || is_procedural_cube(name); }
+
+std::string procedural_texture_names()
+{
+    const std::vector<std::string>& names = procedural_cube_names(); // the cube-only names, then the 2D ones
+    std::string list;
+    for (size_t i = 0; i < names.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return list;
+}
+
+void check_texture_name(const std::string& path)
+{
+    if (is_procedural_texture(path))
+        return;
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (status.type() == std::filesystem::file_type::not_found)
+        throw Error("unknown texture '" + path + "': not a procedural texture (" + procedural_texture_names() +
+                    ") and no such file");
+    if (ec)
+        throw Error(path + ": " + ec.message());
+    if (std::filesystem::is_directory(status))
+        return; // the image reader says it is a directory
+    // Opened as the reader will open it: the system's reason, not the image library's "cannot open".
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0)
+        throw Error(path + ": " + std::strerror(errno));
+    ::close(fd);
+}
 
 TextureSize check_texture(const TextureSource& source, const TextureUse& use)
 {
     const bool procedural = is_procedural(source.name_or_path);
     int width = source.procedural_size, height = source.procedural_size;
     if (!procedural) {
+        check_texture_name(source.name_or_path);
         const ImageHeader header = read_image_header(source.name_or_path, max_texture_dimension);
         width = header.width;
         height = header.height;

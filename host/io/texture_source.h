@@ -30,6 +30,16 @@ struct TextureSource {
     EnvMap env = EnvMap::cube;
 };
 
+// A --texture is a procedural name (the 2D ones, or the environment scenes' cube-only ones) or an image file.
+bool is_procedural_texture(const std::string& name);
+// "cube-labels, cube-hash, ..., mipcolors or dynamic": every procedural name, for messages.
+std::string procedural_texture_names();
+// A procedural name, or a file this process can open: else tf::Error "unknown texture 'NAME': not a procedural
+// texture (...) and no such file", or the system's reason ("PATH: Permission denied"). Commands call it as
+// they read their flags, before any device is opened; check_texture calls it again when the texture loads
+// (the viewer's script names files that a screenshot may write first).
+void check_texture_name(const std::string& name_or_path);
+
 // The animated procedural texture: the only one with frames (--texture-frame), rebuilt every frame on the
 // device by the viewer with --build gpu (vulkan/dynamic_texture.h).
 bool is_dynamic_texture(const TextureSource& source);

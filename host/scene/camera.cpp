@@ -3,8 +3,9 @@
 #include "scene/camera.h"
 #include "harness/config.h"
 #include "texture/error.h"
+#include "core/numbers.h"
+#include <optional>
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -194,12 +195,10 @@ Camera parse_camera(const std::string& text)
     double values[5];
     for (int i = 0; i < 5; ++i) {
         const std::string& field = fields[size_t(i)];
-        const char* end = field.data() + field.size();
-        auto [stop, error] = std::from_chars(field.data(), end, values[i]);
-        if (field.empty() || error == std::errc::invalid_argument || stop != end)
+        const std::optional<double> value = parse_real_number(field); // decimal and finite (core/numbers.h)
+        if (!value)
             throw Error(std::string("camera ") + field_names[i] + " '" + field + "' is not a number");
-        if (error == std::errc::result_out_of_range)
-            throw Error(std::string("camera ") + field_names[i] + " '" + field + "' is out of double's range");
+        values[i] = *value;
     }
     Camera camera{{values[0], values[1], values[2]}, values[3], values[4]};
     check_camera(camera);

@@ -1,5 +1,6 @@
 #include "view/script.h"
 #include "scene/camera.h"
+#include "core/numbers.h"
 #include "flags/args.h"
 #include "flags/cli_common.h"
 #include "texture/error.h"
@@ -7,6 +8,7 @@
 #include "view/view_state.h"
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 
 namespace tf {
@@ -23,23 +25,22 @@ void expect_words(const ScriptAction& a, size_t count, const char* form)
                     a.verb + "'");
 }
 
+// Numbers in core/numbers.h's grammar, as every flag writes them.
 long whole(const std::string& text, long min, long max, const char* what)
 {
-    char* end = nullptr;
-    const long value = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || end != text.c_str() + text.size() || value < min || value > max)
+    const std::optional<long long> value = parse_whole_number(text);
+    if (!value || *value < min || *value > max)
         throw Error(std::string(what) + " '" + text + "' is not a whole number in " + std::to_string(min) + ".." +
                     std::to_string(max));
-    return value;
+    return long(*value);
 }
 
 double number(const std::string& text, const char* what)
 {
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+    const std::optional<double> value = parse_real_number(text);
+    if (!value)
         throw Error(std::string(what) + " '" + text + "' is not a finite number");
-    return value;
+    return *value;
 }
 
 bool on_off(const ScriptAction& a)
@@ -94,7 +95,10 @@ std::string view_name(const ScriptAction& a)
 
 SamplerOptions sampler(const ScriptAction& a)
 {
-    SamplerOptions options = sampler_options_from(flag_args(a, "--filter", script_sampler_flags()));
+    // A line sets the whole half, so a flag its filter does not read is refused as render refuses it, but for
+    // what the viewer's own views read: the LOD view (--lod-*) and the error view's truth (--spp, --pixel-filter).
+    SamplerOptions options = sampler_options_from(flag_args(a, "--filter", script_sampler_flags()),
+                                                  {.lod_view = true, .truth_view = true});
     check_viewer_sampler(options);
     return options;
 }
@@ -105,7 +109,8 @@ TextureSource texture(const ScriptAction& a)
     for (const FlagSpec& f : texture_flags())
         if (f.name == "--texture" || f.name == "--texture-size" || f.name == "--linear")
             specs.push_back(f);
-    return texture_source_from(flag_args(a, "--texture", specs));
+    // The file is checked when the line runs: a screenshot line before it may write it.
+    return texture_source_from(flag_args(a, "--texture", specs), TextureCheck::later);
 }
 
 std::pair<int, int> size(const ScriptAction& a)

@@ -34,55 +34,29 @@ std::string format_float(double value) // %.9g: every float comes back the same 
     return text;
 }
 
-bool uses_lod(Filter f)
-{
-    switch (f) {
-    case Filter::trilinear:
-    case Filter::nearest_mip:
-    case Filter::bilinear_mip:
-    case Filter::brilinear:
-    case Filter::aniso:
-    case Filter::ewa:
-    case Filter::hw_trilinear:
-    case Filter::hw_aniso:
-        return true;
-    default:
-        return false; // level 0 only (nearest, bilinear, hw-nearest, hw-bilinear, sat, ground-truth), none
-    }
-}
-
 // Every sampler flag of sampler_options_from but --filter (first, always) and --backend (the viewer's is
-// Vulkan): its value written the way the flag reads it, and the filters it matters for.
+// Vulkan): its value written the way the flag reads it (which filters read it: core/filter.h's table).
 struct SamplerFlag {
     const char* flag;
     std::string (*value)(const SamplerOptions&);
-    bool (*matters)(Filter);
 };
 
 const SamplerFlag kSamplerFlags[] = {
-    {"--wrap", [](const SamplerOptions& o) { return to_string(o.wrap); }, [](Filter f) { return f != Filter::none; }},
-    {"--aniso", [](const SamplerOptions& o) { return std::to_string(o.aniso); },
-     [](Filter f) { return f == Filter::hw_aniso; }},
-    {"--band", [](const SamplerOptions& o) { return format_float(o.band); },
-     [](Filter f) { return f == Filter::brilinear; }},
-    {"--probes", [](const SamplerOptions& o) { return std::to_string(o.probes); },
-     [](Filter f) { return f == Filter::aniso; }},
-    {"--aniso-shape", [](const SamplerOptions& o) { return to_string(o.aniso_shape); },
-     [](Filter f) { return f == Filter::aniso; }},
-    {"--taps", [](const SamplerOptions& o) { return to_string(o.taps); }, takes_taps},
-    {"--magnify", [](const SamplerOptions& o) { return to_string(o.magnify); }, takes_magnify},
-    {"--alpha", [](const SamplerOptions& o) { return format_float(o.alpha); }, [](Filter f) { return f == Filter::ewa; }},
-    {"--max-aniso", [](const SamplerOptions& o) { return format_float(o.max_aniso); },
-     [](Filter f) { return f == Filter::ewa; }},
-    {"--boxes", [](const SamplerOptions& o) { return std::to_string(o.boxes); },
-     [](Filter f) { return f == Filter::sat_assembly; }},
-    {"--pixel-filter", [](const SamplerOptions& o) { return to_string(o.pixel_filter); },
-     [](Filter f) { return f == Filter::ground_truth; }},
-    {"--spp", [](const SamplerOptions& o) { return std::to_string(o.truth_side * o.truth_side); },
-     [](Filter f) { return f == Filter::ground_truth; }},
-    {"--lod-bias", [](const SamplerOptions& o) { return format_float(o.lod_bias); }, uses_lod},
-    {"--lod-min", [](const SamplerOptions& o) { return format_float(o.lod_min); }, uses_lod},
-    {"--lod-max", [](const SamplerOptions& o) { return format_float(o.lod_max); }, uses_lod},
+    {"--wrap", [](const SamplerOptions& o) { return to_string(o.wrap); }},
+    {"--aniso", [](const SamplerOptions& o) { return std::to_string(o.aniso); }},
+    {"--band", [](const SamplerOptions& o) { return format_float(o.band); }},
+    {"--probes", [](const SamplerOptions& o) { return std::to_string(o.probes); }},
+    {"--aniso-shape", [](const SamplerOptions& o) { return to_string(o.aniso_shape); }},
+    {"--taps", [](const SamplerOptions& o) { return to_string(o.taps); }},
+    {"--magnify", [](const SamplerOptions& o) { return to_string(o.magnify); }},
+    {"--alpha", [](const SamplerOptions& o) { return format_float(o.alpha); }},
+    {"--max-aniso", [](const SamplerOptions& o) { return format_float(o.max_aniso); }},
+    {"--boxes", [](const SamplerOptions& o) { return std::to_string(o.boxes); }},
+    {"--pixel-filter", [](const SamplerOptions& o) { return to_string(o.pixel_filter); }},
+    {"--spp", [](const SamplerOptions& o) { return std::to_string(o.truth_side * o.truth_side); }},
+    {"--lod-bias", [](const SamplerOptions& o) { return format_float(o.lod_bias); }},
+    {"--lod-min", [](const SamplerOptions& o) { return format_float(o.lod_min); }},
+    {"--lod-max", [](const SamplerOptions& o) { return format_float(o.lod_max); }},
 };
 
 const char* const kDebugViews[] = {"color", "lod", "anisotropy", "fetches", "error"};
@@ -180,11 +154,13 @@ SamplerOptions read_half(const Reader& reader, const json& object, const std::st
     if (!object.is_object())
         reader.fail(field, "expected an object, got " + object.dump());
     // The CLI's own parser checks every value: first the filter alone, then each flag with it (so that a
-    // message names its field), then all together (--lod-min above --lod-max).
+    // message names its field), then all together (--lod-min above --lod-max). A half keeps every filter's
+    // options (the keys change the filter), so none is refused for being unread by this one.
+    const SamplerFlagUse kept{.keep_unread = true};
     Args args;
     args.command = field;
     args.values["--filter"] = reader.string(reader.member(object, field + ".filter", "filter"), field + ".filter");
-    reader.parsed(field + ".filter", [&] { return sampler_options_from(args); });
+    reader.parsed(field + ".filter", [&] { return sampler_options_from(args, kept); });
     for (auto it = object.begin(); it != object.end(); ++it) {
         if (it.key() == "filter")
             continue;
@@ -199,10 +175,10 @@ SamplerOptions read_half(const Reader& reader, const json& object, const std::st
         one.command = key;
         one.values["--filter"] = args.values["--filter"];
         one.values[spec->flag] = flag_text(reader, it.value(), key);
-        reader.parsed(key, [&] { return sampler_options_from(one); });
+        reader.parsed(key, [&] { return sampler_options_from(one, kept); });
         args.values[spec->flag] = one.values[spec->flag];
     }
-    return reader.parsed(field, [&] { return sampler_options_from(args); });
+    return reader.parsed(field, [&] { return sampler_options_from(args, kept); });
 }
 
 json write_half(const SamplerOptions& o)
@@ -255,15 +231,15 @@ std::string shell_quote(const std::string& word)
     return quoted + "'";
 }
 
-std::vector<std::string> sampler_flag_words(const SamplerOptions& options)
+std::vector<std::string> sampler_flag_words(const SamplerOptions& options, bool lod_view)
 {
-    const SamplerOptions defaults;
+    // The flags the filter reads, each with its value, and no other: render refuses a flag its filter does not
+    // read. The LOD view shows --lod-* on every filter that makes a lookup (render --view lod takes them).
     std::vector<std::string> words = {"--filter", to_string(options.filter)};
-    for (const SamplerFlag& f : kSamplerFlags) {
-        const std::string value = f.value(options);
-        if (f.matters(options.filter) || value != f.value(defaults))
-            words.insert(words.end(), {f.flag, value});
-    }
+    for (const SamplerFlag& f : kSamplerFlags)
+        if (filter_reads(options.filter, f.flag, options.stochastic) ||
+            (lod_view && is_lod_flag(f.flag) && !is_scene_level(options.filter)))
+            words.insert(words.end(), {f.flag, f.value(options)});
     return words;
 }
 
@@ -281,7 +257,10 @@ std::vector<std::string> render_flag_words(const ViewState& state, const ViewHal
         words.insert(words.end(), {"--build", "gpu"});
     if (is_dynamic_texture(state.texture)) // the frame shown: the viewer animates it
         words.insert(words.end(), {"--texture-frame", std::to_string(state.texture.texture_frame)});
-    const std::vector<std::string> sampler = sampler_flag_words(half.options);
+    const Filter f = half.options.filter;
+    const bool view_written = state.view != "color" && state.view != "error" && f != Filter::ground_truth &&
+                              f != Filter::none;
+    const std::vector<std::string> sampler = sampler_flag_words(half.options, view_written && state.view == "lod");
     words.insert(words.end(), sampler.begin(), sampler.end());
     words.insert(words.end(), {"--size", std::to_string(state.width) + "x" + std::to_string(state.height), "--stage",
                                to_string(state.render.stage), "--derivatives", to_string(state.render.gradients)});
@@ -291,8 +270,7 @@ std::vector<std::string> render_flag_words(const ViewState& state, const ViewHal
         words.insert(words.end(), {"--frame", std::to_string(state.frame)});
     // The debug views are the harness's; the error view is the viewer's own (A against the truth, below), and
     // the ground truth and none have no view but colour.
-    const Filter f = half.options.filter;
-    if (state.view != "color" && state.view != "error" && f != Filter::ground_truth && f != Filter::none)
+    if (view_written)
         words.insert(words.end(), {"--view", state.view});
     return words;
 }

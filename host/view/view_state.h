@@ -7,8 +7,9 @@
 // Use:     ViewState s; s.texture.name_or_path = "checker"; s.a.options.filter = Filter::ewa;
 //          for (const std::string& line : render_command_lines(s, "shot.png")) ...; // shot.png, shot-b.png
 //          ViewState back = state_from_json(state_to_json(s), "shot.json");
-// Options: a flag goes on the command line when it matters for the half's filter (its exact value, floats
-//          %.9g so they round-trip) or when it differs from the CLI's default; the ground truth's sample range
+// Options: a flag goes on the command line when the half's filter reads it (core/filter.h's table; its exact
+//          value, floats %.9g so they round-trip), and no other (render refuses a flag its filter does not
+//          read); with the LOD view, --lod-* as well (it shows them); the ground truth's sample range
 //          (truth_first, truth_count) is the viewer's progressive state and never written: the line renders
 //          the whole grid, what the accumulation converges to. The dynamic texture's line always names its
 //          frame (--texture-frame N, JSON texture.frame): the viewer animates it.
@@ -53,7 +54,8 @@ ViewHalf truth_half(const ViewHalf& a);
 std::vector<std::string> render_flag_words(const ViewState& state, const ViewHalf& half);
 
 // The sampler flags of `options` as words ("--filter", "ewa", "--alpha", "2", ...): see Options above.
-std::vector<std::string> sampler_flag_words(const SamplerOptions& options);
+// lod_view: the line renders --view lod.
+std::vector<std::string> sampler_flag_words(const SamplerOptions& options, bool lod_view);
 
 // One word for a POSIX shell: as it is when it holds only safe characters, else in single quotes.
 std::string shell_quote(const std::string& word);

@@ -136,10 +136,10 @@ std::vector<DeviceInfo> list_devices(VkInstance instance)
 
 int select_device(const std::vector<DeviceInfo>& devices, const std::string& request)
 {
-    auto account = [&]() {
+    auto account = [&]() { // one line, as every message: " [0] NAME: usable; [1] NAME: why not"
         std::string s;
         for (const DeviceInfo& d : devices)
-            s += "\n  [" + std::to_string(d.index) + "] " + d.name + ": " +
+            s += std::string(s.empty() ? " [" : "; [") + std::to_string(d.index) + "] " + d.name + ": " +
                  (d.usable ? "usable" : d.why_not_usable);
         return s;
     };
