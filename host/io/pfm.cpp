@@ -73,20 +73,32 @@ PfmHeader read_pfm_header(std::istream& in, const std::string& path, int max_dim
     char magic[2] = {};
     in.read(magic, 2);
     const bool colour = in && magic[0] == 'P' && magic[1] == 'F' && std::isspace(in.peek());
-    long long width = 0, height = 0;
-    in >> width >> height;
-    if (!in || !colour)
+    if (!colour)
         throw Error(path + ": not a colour PFM file (expected a \"PF\" header)");
-    // The scale as a word of at most a few dozen characters: "nan" and "inf" must be read to be refused.
-    std::string scale_text;
-    in >> std::ws;
-    for (int c = in.peek(); c != EOF && !std::isspace(c) && scale_text.size() < 40; c = in.peek())
-        scale_text += char(in.get());
+    // Each field as a word of at most a few dozen characters, quoted as written: "nan" must be read to be
+    // refused, and a side past any integer must not wrap.
+    auto word = [&] {
+        std::string text;
+        in >> std::ws;
+        for (int c = in.peek(); c != EOF && !std::isspace(c) && text.size() <= 24; c = in.peek())
+            text += char(in.get());
+        return text.size() > 24 ? text.substr(0, 24) + "..." : text;
+    };
+    const std::string width_text = word(), height_text = word(), scale_text = word();
+    auto side = [](const std::string& text) {
+        char* end = nullptr;
+        const long long value = std::strtoll(text.c_str(), &end, 10);
+        const bool digits = !text.empty() && end == text.c_str() + text.size() && std::isdigit(text[0]);
+        return !digits ? -1LL : value; // strtoll saturates: an absurd side stays absurd
+    };
+    const long long width = side(width_text), height = side(height_text);
+    const std::string size = width_text + "x" + height_text;
+    if (width < 1 || height < 1)
+        throw Error(path + ": bad PFM header: size '" + size + "' (expected two positive integers)");
+    if (width > max_dimension || height > max_dimension)
+        throw Error(path + ": " + size + " exceeds the maximum texture size " + std::to_string(max_dimension));
     char* end = nullptr;
     const double scale = std::strtod(scale_text.c_str(), &end);
-    const std::string size = std::to_string(width) + "x" + std::to_string(height);
-    if (width < 1 || height < 1 || width > max_dimension || height > max_dimension)
-        throw Error(path + ": bad PFM header: size " + size + " (sides 1.." + std::to_string(max_dimension) + ")");
     if (scale_text.empty() || end != scale_text.c_str() + scale_text.size() || !std::isfinite(scale) || scale == 0)
         throw Error(path + ": bad PFM header: scale '" + scale_text +
                     "' (a finite number other than 0: its sign gives the byte order)");
