@@ -28,8 +28,8 @@ TextureMemory estimate_texture_memory(int width, int height, bool with_sat, Text
     const uint64_t device = m.device_in_host_memory ? m.device : 0;
     const uint64_t decoding = m.decode + m.decoder;
     switch (load) {
-    case TextureLoad::host: // the reference's sat sums level 0's texels directly: no table
-        m.host_peak = std::max(decoding, m.chain);
+    case TextureLoad::host: // the table as texfilter build --build cpu makes it (the reference's sat reads level 0)
+        m.host_peak = std::max(decoding, m.chain + m.sat);
         break;
     case TextureLoad::device: // the chain and table stay until the upload ends; the chain's staging buffer and
         // the table's may both be held (measured: lavapipe, 4096^2 with sat)
@@ -37,7 +37,7 @@ TextureMemory estimate_texture_memory(int width, int height, bool with_sat, Text
         m.host_peak = std::max(decoding, m.chain + m.sat + m.staging + device);
         break;
     case TextureLoad::device_streamed: // level 0 decoded into the staging buffer, the device's images beside it
-        m.staging = m.decode;
+        m.level0_in_staging = true;
         m.chain_on_host = false;
         m.host_peak = decoding + device;
         break;
@@ -122,7 +122,8 @@ void check_memory_budget(const std::string& what, int width, int height, const T
 {
     if (need.host_peak <= budget)
         return;
-    std::string parts = need.chain_on_host ? "MIP chain " + format_bytes(need.chain) : "level 0 " + format_bytes(need.decode);
+    std::string parts = need.chain_on_host ? "MIP chain " + format_bytes(need.chain)
+                        : "level 0 " + format_bytes(need.decode) + (need.level0_in_staging ? " in the staging buffer" : "");
     if (need.sat && need.chain_on_host)
         parts += ", summed-area table " + format_bytes(need.sat);
     if (need.staging)

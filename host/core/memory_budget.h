@@ -8,7 +8,7 @@ namespace tf {
 
 // How a texture is loaded, which decides what the host holds at once.
 enum class TextureLoad {
-    host,            // the CPU reference: the MIP chain in host memory (its sat reads level 0: no table)
+    host,            // the CPU reference: the MIP chain (and the table, where one is built) in host memory
     device,          // a MipChain (and table) built on the host, then staged to a Vulkan device one image at a time
     device_streamed, // an image file decoded straight into the staging buffer, its levels built there in place
     device_level0,   // --build gpu: level 0 on the host, staged whole; the device builds the chain and table
@@ -24,6 +24,7 @@ struct TextureMemory {
     uint64_t sat = 0;     // RGBA32UI + R32UI table of (w+1) x (h+1) entries, 0 unless asked for
     uint64_t staging = 0; // staging buffers held at once: level 0's, and the table's (0 for the CPU reference)
     bool chain_on_host = true; // false when streamed or built on the device: the host never holds the chain
+    bool level0_in_staging = false; // streamed: level 0 is decoded into the staging buffer (staging 0)
     uint64_t device = 0;  // what a Vulkan device holds: chain + sat (0 for the CPU reference)
     bool device_in_host_memory = false; // a CPU device: `device` is part of host_peak
     uint64_t other = 0;   // what the command holds beside the texture (add_other)
