@@ -1239,6 +1239,116 @@ flag_rules() {
     rm -f validate0.png texture.png
 }
 
+# Texture values and memory bounds: PFM headers, NaN/Inf texels for every filter, nan in CSVs, and the memory
+# budget covering what a command allocates (device memory on a CPU device, the output image, the lookups).
+# Commands that would allocate gigabytes on a regression run under a virtual memory limit, so they fail fast.
+texture_values_and_budgets() {
+    local limited=(bash -c 'ulimit -v 3000000 && exec "$@"' limited)
+    local render=("$TEXFILTER" render --scene zoom --filter nearest "${REF[@]}")
+    printf '%s\n0.5,0.5,0.01,0,0,0.01\n' "$LOOKUPS_HEADER" >values.csv
+    # 32x32 PFMs: scale 0 and nan say nothing about the byte order; one 100 bytes short; one with 3 bad texels.
+    python3 - <<'EOF'
+import struct
+def pfm(name, scale, bad=(), cut=0):
+    values = [0.5] * (32 * 32 * 3)
+    for x, y, c, v in bad:
+        values[((31 - y) * 32 + x) * 3 + c] = v  # PFM rows run bottom first
+    data = struct.pack("<%df" % len(values), *values)
+    with open(name, "wb") as f:
+        f.write(b"PF\n32 32\n" + scale + b"\n" + (data[:-cut] if cut else data))
+pfm("scale_zero.pfm", b"0")
+pfm("scale_nan.pfm", b"nan")
+pfm("short.pfm", b"-1.0", cut=100)
+pfm("three_bad.pfm", b"-1.0", bad=[(7, 3, 1, float("nan")), (20, 9, 0, float("inf")), (1, 30, 2, float("-inf"))])
+# Finite texels that rgba16f cannot hold: +-1e6 side by side become +-Inf, and a lookup between them NaN.
+values = [0.5] * 48
+values[0], values[3] = 1e6, -1e6
+with open("over_half.pfm", "wb") as f:
+    f.write(b"PF\n4 4\n-1.0\n" + struct.pack("<48f", *values))
+EOF
+    oiiotool three_bad.pfm -d half -o three_bad.exr
+    expect_error "PFM with scale 0" "scale_zero.pfm: bad PFM header: scale '0'" out.png -- \
+        "${render[@]}" --texture scale_zero.pfm -o out.png
+    expect_error "PFM with scale nan" "scale_nan.pfm: bad PFM header: scale 'nan'" out.png -- \
+        "${render[@]}" --texture scale_nan.pfm -o out.png
+    expect_error "PFM shorter than its header says" "short.pfm: truncated" out.png -- \
+        "${render[@]}" --texture short.pfm -o out.png
+    local file filter backend
+    for file in three_bad.pfm three_bad.exr; do
+        for backend in reference vulkan; do
+            for filter in trilinear ewa bilinear sat; do
+                expect_error "$file, 3 non-finite texels: sample --filter $filter --backend $backend" \
+                    "$file: texel (7, 3) is NaN (channel G; 3 of 1024 texels hold NaN or Inf)" out.csv -- \
+                    "$TEXFILTER" sample --texture "$file" --filter $filter --backend $backend --lookups values.csv -o out.csv
+            done
+        done
+    done
+    expect_error "3 non-finite texels: render --build gpu" "three_bad.exr: texel (7, 3) is NaN" out.png -- \
+        "$TEXFILTER" render --scene plane --size 16x16 --texture three_bad.exr --filter trilinear --build gpu -o out.png
+    expect_error "3 non-finite texels: an environment map" "three_bad.pfm: texel (7, 3) is NaN" out.png -- \
+        "$TEXFILTER" render --scene skybox --size 16x16 --env latlong --texture three_bad.pfm --filter trilinear \
+        --backend reference -o out.png
+    # A NaN result is written "nan" (printf writes "-nan" for a negative one), on both backends.
+    printf '%s\n0.25,0.875,0.01,0,0,0.01\n' "$LOOKUPS_HEADER" >between.csv
+    for backend in reference vulkan; do
+        run_command "$TEXFILTER" sample --texture over_half.pfm --format rgba16f --filter bilinear --backend $backend \
+            --lookups between.csv -o nan_out.csv
+        if [[ $rc -ne 0 ]] || ! grep -q '^nan,' nan_out.csv || grep -q -- '-nan' nan_out.csv; then
+            fail "sample's CSV writes nan, not -nan ($backend)" "exit $rc; $(tail -1 nan_out.csv 2>/dev/null)"
+        else
+            pass "sample's CSV writes nan, not -nan ($backend)"
+        fi
+        rm -f nan_out.csv
+    done
+    # Every side of bench --gpu-build is checked before the first is built: nothing printed, no 9 GB allocated.
+    run_command "${limited[@]}" "$TEXFILTER" bench --gpu-build --sizes 64,16384 --dynamic-size 0 --memory-budget 1G
+    if [[ $rc -ne 2 ]] || ! grep -q '^texfilter: bench --gpu-build --sizes 16384' stderr || [[ -s stdout ]]; then
+        fail "bench --gpu-build --sizes 64,16384 refused before any work" "exit $rc; stdout $(wc -l <stdout) lines"
+    else
+        pass "bench --gpu-build --sizes 64,16384 refused before any work"
+    fi
+    rm -f stdout stderr
+    # The same by the device's own limit, where it has one the 16384^2 chain (5.3 GiB) exceeds (lavapipe: 2 GiB).
+    local limit
+    limit=$("$TEXFILTER" info 2>/dev/null | sed -n 's/.*maxMemoryAllocationSize \([0-9.]*\) GiB.*/\1/p' | awk 'NR == 1')
+    if [[ -n $limit ]] && awk "BEGIN { exit !($limit < 5.3) }"; then
+        expect_error "bench --gpu-build --sizes 64,16384 over the device's allocation limit" maxMemoryAllocationSize - -- \
+            "${limited[@]}" "$TEXFILTER" bench --gpu-build --sizes 64,16384 --dynamic-size 0
+    else
+        skip "bench --gpu-build --sizes 64,16384 over the device's allocation limit" "no device with a limit under 5.3 GiB"
+    fi
+    expect_error "bench --mip-build --texture-size 16384 over the budget" "bench --mip-build --texture-size 16384" - -- \
+        "${limited[@]}" "$TEXFILTER" bench --mip-build --texture-size 16384 --memory-budget 1G
+    # The output image is in the budget: an 8192x8192 render holds 3-5.5 GiB, whatever its texture.
+    for backend in reference vulkan; do
+        expect_error "render --size 8192x8192 --memory-budget 64M ($backend)" "a 8192x8192 render" out.png -- \
+            "${limited[@]}" "$TEXFILTER" render --scene plane --texture checker --filter trilinear --size 8192x8192 \
+            --backend $backend --memory-budget 64M -o out.png
+    done
+    # So are the lookups: 200000 of them take tens of MiB.
+    python3 -c "
+print('$LOOKUPS_HEADER')
+for i in range(200000): print('0.5,0.5,0.01,0,0,0.01')" >many.csv
+    expect_error "sample: 200000 lookups over --memory-budget 16M" "200000 lookups" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter trilinear --backend reference --lookups many.csv \
+        --memory-budget 16M -o out.csv
+    # On a CPU device (lavapipe) the device's images are the process's memory: a 2048x2048 PNG streamed to it
+    # peaks near 150 MiB (level 0 staged, 64 MiB, and the chain's images, 85 MiB), not 64 MiB.
+    write_constant_png k2048.png 2048 2048
+    if "$TEXFILTER" info 2>/dev/null | grep -q '^texfilter would use: .*llvmpipe'; then
+        expect_error "2048x2048 PNG on lavapipe over --memory-budget 100M" "the CPU device's images" out.png -- \
+            "$TEXFILTER" render --scene plane --size 16x16 --texture k2048.png --filter trilinear --memory-budget 100M \
+            -o out.png
+    else
+        skip "2048x2048 PNG on lavapipe over --memory-budget 100M" "the device is not lavapipe"
+    fi
+    expect_success "2048x2048 PNG under --memory-budget 400M (control)" out.png -- \
+        "$TEXFILTER" render --scene plane --size 16x16 --texture k2048.png --filter trilinear --memory-budget 400M \
+        -o out.png
+    rm -f out.png values.csv between.csv many.csv scale_zero.pfm scale_nan.pfm short.pfm three_bad.pfm three_bad.exr \
+        over_half.pfm k2048.png
+}
+
 # The groups, in order; ctest runs each as its own entry (bad_inputs.GROUP), listed by --list.
 CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_resources diff_contract ground_truth_and_bench_errors
     golden_errors vulkan_errors golden_output_directory outputs_and_inputs unwritable_outputs
@@ -1248,6 +1358,7 @@ CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_re
     outputs_created_first
     bounded_text_inputs
     flag_rules
+    texture_values_and_budgets
 )
 if [[ ${#SELECTED[@]} -eq 0 ]]; then
     SELECTED=("${CASE_GROUPS[@]}")

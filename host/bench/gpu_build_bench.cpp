@@ -222,6 +222,36 @@ std::string today()
 
 } // namespace
 
+void check_gpu_build_bench(const std::vector<int>& sides, int dynamic_side, const DeviceLimits& device,
+                           uint64_t budget)
+{
+    for (int side : sides) {
+        const std::string what = "bench --gpu-build --sizes " + std::to_string(side);
+        const bool sat = side <= sat_max_dimension;
+        TextureMemory need = estimate_texture_memory(side, side, sat, TextureLoad::device, false, device.host_memory);
+        // run_side: level 0 stays; beside it a chain built from a copy, the table, memcpy's two buffers of half a
+        // build's bytes, or a staging copy with the device's images and the copy's source buffer.
+        const double bytes = std::max(mip_bytes(side), sat ? sat_bytes(side) : 0.0);
+        const uint64_t source = uint64_t(std::min(bytes / 2, double(copy_chunk)));
+        need.device += source;
+        need.staging = need.decode;
+        need.host_peak = need.decode + std::max({need.chain, need.sat, uint64_t(bytes),
+                                                 need.staging + (device.host_memory ? need.device : 0)});
+        check_device_limits(what, side, side, need, device);
+        check_memory_budget(what, side, side, need, budget);
+    }
+    if (dynamic_side > 0) { // run_dynamic: the device's own chain, and a static copy built on the host and uploaded
+        const std::string what = "bench --gpu-build --dynamic-size " + std::to_string(dynamic_side);
+        TextureMemory need = estimate_texture_memory(dynamic_side, dynamic_side, false, TextureLoad::device, false,
+                                                     device.host_memory);
+        need.device *= 2;
+        if (device.host_memory)
+            need.host_peak += need.chain;
+        check_device_limits(what, dynamic_side, dynamic_side, need, device);
+        check_memory_budget(what, dynamic_side, dynamic_side, need, budget);
+    }
+}
+
 GpuBuildBench run_gpu_build_bench(const VulkanContext& context, const std::vector<int>& sides, int repeats,
                                   FrameTimer timer, int dynamic_side)
 {

@@ -3,6 +3,7 @@
 // the same bytes on each (vkCmdCopyBufferToImage on the device, memcpy on the host), in one run, for each
 // side; and the dynamic texture, generated, rebuilt and filtered in one submission a frame, beside the same
 // frame with a static texture. A benchmark: printed, never asserted on.
+#include "core/memory_budget.h"
 #include "vulkan/context.h"
 #include "vulkan/frame_timer.h"
 #include <string>
@@ -37,6 +38,13 @@ struct GpuBuildBench {
     std::vector<GpuBuildRow> rows;
     DynamicRow dynamic;
 };
+
+// Refuses, before anything is built, a run whose sides (or the dynamic texture's) cannot fit: one of its
+// images over the device's maxMemoryAllocationSize, all of them over its heap, or the host memory a side
+// holds at once (level 0, a copy of it built into a chain, the table, the memcpy yardstick's two buffers,
+// staging, and the device's memory on a CPU device) over `budget`. Every side is checked before the first runs.
+void check_gpu_build_bench(const std::vector<int>& sides, int dynamic_side, const DeviceLimits& device,
+                           uint64_t budget);
 
 GpuBuildBench run_gpu_build_bench(const VulkanContext& context, const std::vector<int>& sides, int repeats,
                                   FrameTimer timer, int dynamic_side);

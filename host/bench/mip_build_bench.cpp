@@ -1,4 +1,5 @@
 #include "bench/mip_build_bench.h"
+#include "core/memory_budget.h"
 #include "texture/mip.h"
 #include "texture/threads.h"
 
@@ -32,6 +33,18 @@ double median_seconds(int repeats, Prepare prepare, Work work)
 double gb_per_second(double bytes, double seconds) { return bytes / seconds / 1e9; }
 
 } // namespace
+
+void check_mip_build_bench(int side, uint64_t budget)
+{
+    TextureMemory need = estimate_texture_memory(side, side, false, TextureLoad::host);
+    // run_mip_build_bench: level 0 beside a chain built from it, then beside the in-place buffer (a level 0) and
+    // memcpy's source and destination (half the build's traffic each; the fresh one is freed before the next).
+    double traffic = 0;
+    for (int w = side, h = side; w > 1 || h > 1; w = std::max(1, w >> 1), h = std::max(1, h >> 1))
+        traffic += (double(w) * h + double(std::max(1, w >> 1)) * std::max(1, h >> 1)) * sizeof(glm::vec4);
+    need.host_peak = need.decode + std::max(need.chain, need.decode + uint64_t(traffic));
+    check_memory_budget("bench --mip-build --texture-size " + std::to_string(side), side, side, need, budget);
+}
 
 MipBuildBench run_mip_build_bench(int side, int repeats)
 {

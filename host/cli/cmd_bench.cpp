@@ -47,6 +47,12 @@ std::vector<std::string> list_flag(const Args& args, const std::string& flag, co
     return items;
 }
 
+// --memory-budget, or half of physical memory.
+uint64_t memory_budget_from(const Args& args)
+{
+    return args.has("--memory-budget") ? parse_flag(args, "--memory-budget", "", parse_byte_size) : default_memory_budget();
+}
+
 // All filters where no label is given.
 std::vector<BenchFilter> select_filters(const std::vector<std::string>& labels)
 {
@@ -128,15 +134,16 @@ int run_bench(const std::vector<std::string>& argv)
     if (args.has("--mip-build") && args.has("--gpu-build"))
         throw Error("bench: --mip-build and --gpu-build are two different runs: give one of them");
     if (args.has("--mip-build")) {
-        check_mode_flags(args, "--mip-build", {"--texture-size", "--repeat"});
+        check_mode_flags(args, "--mip-build", {"--texture-size", "--repeat", "--memory-budget"});
         const int side = args.get_int("--texture-size", 8192, 1, 16384);
         const int repeats = args.get_int("--repeat", 5, 1, 100);
+        check_mip_build_bench(side, memory_budget_from(args));
         std::fputs(format_mip_build_bench(run_mip_build_bench(side, repeats)).c_str(), stdout);
         return 0;
     }
     if (args.has("--gpu-build")) {
         check_mode_flags(args, "--gpu-build",
-                         {"--sizes", "--repeat", "--dynamic-size", "--timer", "--device", "--validate"});
+                         {"--sizes", "--repeat", "--dynamic-size", "--timer", "--device", "--validate", "--memory-budget"});
         std::vector<int> sides;
         for (const std::string& item : list_flag(args, "--sizes", "1024,4096,8192", "texture sides")) {
             Args one = parse_args("bench", {"--sizes", item}, {{"--sizes", "N", ""}}, 0);
@@ -145,6 +152,7 @@ int run_bench(const std::vector<std::string>& argv)
         const int repeats = args.get_int("--repeat", 3, 1, 100);
         const int dynamic_side = args.get_int("--dynamic-size", 1024, 0, max_texture_dimension);
         GpuSession gpu(context_options_from(args));
+        check_gpu_build_bench(sides, dynamic_side, device_limits(gpu.context.info), memory_budget_from(args));
         const bool cpu_device = gpu.context.info.type == "cpu";
         const FrameTimer timer = parse_flag(args, "--timer", cpu_device ? "wall-clock" : "timestamps", parse_frame_timer);
         const std::string text =

@@ -21,12 +21,21 @@ namespace tf {
 
 namespace {
 
+// The output image and what rendering it takes, counted in the texture's memory budget check.
+void add_render_output(TextureUse& use, int width, int height, const CommandDevice& device)
+{
+    use.other_bytes = render_output_bytes(width, height, !device.gpu, device.gpu && device.limits.host_memory);
+    use.other_what = "a " + std::to_string(width) + "x" + std::to_string(height) + " render";
+}
+
 // skybox and reflect: the environment map --env makes of --texture, rendered on either backend.
 Image render_environment_scene(SceneKind kind, int width, int height, int frame, const std::optional<Camera>& camera,
                                const TextureSource& source, const SamplerOptions& options, const RenderOptions& render,
                                CommandDevice& device)
 {
-    const EnvironmentMap env = load_environment(source, device.texture_use(false));
+    TextureUse use = device.texture_use(false);
+    add_render_output(use, width, height, device);
+    const EnvironmentMap env = load_environment(source, use);
     const int size = environment_size(env);
     SceneParams scene = scene_at_frame(make_scene(kind, width, height, size), frame, size);
     if (camera)
@@ -125,6 +134,7 @@ int run_render(const std::vector<std::string>& argv)
     const bool streamed = device.gpu && streams_level0(source) && !sat && source.format == TextureFormat::rgba32f &&
                           source.build == TextureBuild::cpu;
     TextureUse use = device.texture_use(sat);
+    add_render_output(use, width, height, device);
     use.streamed = streamed;
     use.level0_only = source.build == TextureBuild::gpu; // the device builds the rest
     // Every path checks the texture (size, budget, device limits) once, before decoding it.

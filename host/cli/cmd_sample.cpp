@@ -83,6 +83,8 @@ int run_sample(const std::vector<std::string>& argv)
         check_format_support(device.gpu->context, source.format, options);
     TextureUse use = device.texture_use(needs_sat(options.filter));
     use.level0_only = source.build == TextureBuild::gpu;
+    use.other_bytes = uint64_t(lookups.size()) * sample_lookup_bytes(!device.gpu);
+    use.other_what = std::to_string(lookups.size()) + " lookups";
     MipChain chain = load_texture(source, use);
     GpuSession* gpu = device.gpu.get();
 

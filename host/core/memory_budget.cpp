@@ -9,11 +9,13 @@
 
 namespace tf {
 
-TextureMemory estimate_texture_memory(int width, int height, bool with_sat, TextureLoad load)
+TextureMemory estimate_texture_memory(int width, int height, bool with_sat, TextureLoad load, bool from_file,
+                                      bool device_in_host_memory)
 {
     const uint64_t texel = 4 * sizeof(float);
     TextureMemory m;
     m.decode = uint64_t(width) * uint64_t(height) * texel;
+    m.decoder = from_file ? uint64_t(4) << 20 : 0; // oiio_module.cpp's band: 1 Mi values of at most 4 bytes
     for (uint64_t w = uint64_t(width), h = uint64_t(height);; w = std::max<uint64_t>(1, w / 2),
                   h = std::max<uint64_t>(1, h / 2)) {
         m.chain += w * h * texel;
@@ -22,21 +24,47 @@ TextureMemory estimate_texture_memory(int width, int height, bool with_sat, Text
     }
     if (with_sat)
         m.sat = (uint64_t(width) + 1) * (uint64_t(height) + 1) * (4 + 1) * sizeof(uint32_t);
+    m.device = load == TextureLoad::host ? 0 : m.chain + m.sat;
+    m.device_in_host_memory = device_in_host_memory && load != TextureLoad::host;
+    const uint64_t device = m.device_in_host_memory ? m.device : 0;
+    const uint64_t decoding = m.decode + m.decoder;
     switch (load) {
-    case TextureLoad::host: m.host_peak = m.chain + m.sat; break;
-    case TextureLoad::device: // the chain and table stay until the upload ends; one image is staged at a time
-        m.staging = std::max(m.decode, m.sat);
-        m.host_peak = m.chain + m.sat + m.staging;
+    case TextureLoad::host: // the table as texfilter build --build cpu makes it (the reference's sat reads level 0)
+        m.host_peak = std::max(decoding, m.chain + m.sat);
         break;
-    case TextureLoad::device_streamed: // level 0 decoded into the staging buffer; each level built over it
+    case TextureLoad::device: // the chain and table stay until the upload ends; the chain's staging buffer and
+        // the table's may both be held (measured: lavapipe, 4096^2 with sat)
+        m.staging = m.decode + m.sat;
+        m.host_peak = std::max(decoding, m.chain + m.sat + m.staging + device);
+        break;
+    case TextureLoad::device_streamed: // level 0 decoded into the staging buffer, the device's images beside it
+        m.level0_in_staging = true;
+        m.chain_on_host = false;
+        m.host_peak = decoding + device;
+        break;
+    case TextureLoad::device_level0: // level 0 decoded, then a copy of it staged; the device builds the rest
         m.staging = m.decode;
         m.chain_on_host = false;
-        m.host_peak = m.staging;
+        m.host_peak = std::max(decoding, m.decode + m.staging + device);
         break;
     }
-    m.device = load == TextureLoad::host ? 0 : m.chain + m.sat;
     return m;
 }
+
+void add_other(TextureMemory& need, uint64_t bytes, const std::string& what)
+{
+    need.other += bytes;
+    need.other_what += (need.other_what.empty() ? "" : ", ") + what + " " + format_bytes(bytes);
+    need.host_peak += bytes;
+}
+
+uint64_t render_output_bytes(int width, int height, bool reference, bool device_in_host_memory)
+{
+    const uint64_t per_pixel = reference ? 32 + 56 : device_in_host_memory ? 48 : 32;
+    return uint64_t(width) * uint64_t(height) * per_pixel;
+}
+
+uint64_t sample_lookup_bytes(bool reference) { return 2 * 48 + 32 + 72 + (reference ? 0 : 80); }
 
 uint64_t default_memory_budget()
 {
@@ -61,7 +89,7 @@ std::string format_bytes(uint64_t bytes)
 {
     const char* units[] = {"KiB", "MiB", "GiB", "TiB"};
     if (bytes < 1024)
-        return std::to_string(bytes) + " bytes";
+        return std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes");
     double value = double(bytes) / 1024;
     int u = 0;
     while (value >= 1024 && u < 3) {
@@ -77,13 +105,19 @@ void check_memory_budget(const std::string& what, int width, int height, const T
 {
     if (need.host_peak <= budget)
         return;
+    std::string parts = need.chain_on_host ? "MIP chain " + format_bytes(need.chain)
+                        : "level 0 " + format_bytes(need.decode) + (need.level0_in_staging ? " in the staging buffer" : "");
+    if (need.sat && need.chain_on_host)
+        parts += ", summed-area table " + format_bytes(need.sat);
+    if (need.staging)
+        parts += ", staging " + format_bytes(need.staging);
+    if (need.device_in_host_memory)
+        parts += ", the CPU device's images " + format_bytes(need.device);
+    if (!need.other_what.empty())
+        parts += ", " + need.other_what;
     throw Error(what + ": a " + std::to_string(width) + "x" + std::to_string(height) + " texture needs " +
-                format_bytes(need.host_peak) + " of memory (" +
-                (need.chain_on_host ? "MIP chain " + format_bytes(need.chain) : std::string("level 0 only")) +
-                (need.sat ? ", summed-area table " + format_bytes(need.sat) : "") +
-                (need.staging ? ", staging " + format_bytes(need.staging) : "") +
-                (need.device ? ", staging for the device" : "") + "), over the memory budget of " +
-                format_bytes(budget) + " (half of physical memory by default; --memory-budget SIZE raises it)");
+                format_bytes(need.host_peak) + " of memory at the peak (" + parts + "), over the memory budget of " +
+                format_bytes(budget) + " (set by --memory-budget SIZE; half of physical memory without it)");
 }
 
 void check_device_limits(const std::string& what, int width, int height, const TextureMemory& need,

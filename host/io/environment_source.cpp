@@ -16,7 +16,10 @@ void check_procedural_environment(const TextureSource& source, const TextureUse&
     const bool cube = source.env == EnvMap::cube;
     // Six faces, or the cube and its 2:1 resampling (both held while it is made).
     const int width = cube ? side : 3 * side, height = cube ? 6 * side : 2 * side;
-    const TextureMemory need = estimate_texture_memory(width, height, false, use.device ? TextureLoad::device : TextureLoad::host);
+    TextureMemory need = estimate_texture_memory(width, height, false, use.device ? TextureLoad::device : TextureLoad::host,
+                                                 false, use.device && use.device->host_memory);
+    if (use.other_bytes)
+        add_other(need, use.other_bytes, use.other_what);
     check_memory_budget("environment " + source.name_or_path, width, height, need,
                         source.memory_budget ? source.memory_budget : default_memory_budget());
     if (use.device)

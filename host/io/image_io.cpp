@@ -4,6 +4,7 @@
 #include "io/oiio_loader.h"
 #include "io/output_path.h"
 #include "io/pfm.h"
+#include "io/pfm_image.h"
 
 #include "texture/error.h"
 
@@ -79,6 +80,7 @@ bool image_io_available() { return true; }
 void load_image_io() { image_io_module(); }
 
 ImageHeader read_image_header(const std::string& path, int max_dimension) {
+    if (is_pfm_file(path)) return read_pfm_image_header(path, max_dimension); // built in: io/pfm_image.h
     const tf_oiio_api& api = image_io_module();
     Call call;
     tf_oiio_header header{};
@@ -87,11 +89,13 @@ ImageHeader read_image_header(const std::string& path, int max_dimension) {
 }
 
 Image read_image(const std::string& path, ColorSpace space, int max_dimension) {
+    if (is_pfm_file(path)) return read_pfm_image(path, max_dimension, true);
     return read_rgba_image(path, max_dimension, false, space);
 }
 
 void read_image_into(const std::string& path, ColorSpace space, int max_dimension, int width, int height,
                      glm::vec4* texels) {
+    if (is_pfm_file(path)) return read_pfm_image_into(path, max_dimension, width, height, texels);
     const tf_oiio_api& api = image_io_module();
     Call call;
     call.destination = [&](int w, int h) {
@@ -104,6 +108,7 @@ void read_image_into(const std::string& path, ColorSpace space, int max_dimensio
 }
 
 Image read_image_raw(const std::string& path) {
+    if (is_pfm_file(path)) return read_pfm_image(path, raw_image_max_dimension, false);
     return read_rgba_image(path, raw_image_max_dimension, true, ColorSpace::automatic);
 }
 

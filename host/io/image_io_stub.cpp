@@ -4,6 +4,7 @@
 
 #include "texture/error.h"
 #include "io/pfm.h"
+#include "io/pfm_image.h"
 
 namespace tf {
 namespace {
@@ -20,10 +21,27 @@ void load_image_io() {
     throw Error("image I/O was left out of this build (configure with -DTEXFILTER_IMAGE_IO=ON)");
 }
 
-Image read_image(const std::string& path, ColorSpace, int) { left_out(path); }
-void read_image_into(const std::string& path, ColorSpace, int, int, int, glm::vec4*) { left_out(path); }
+// PFM files are read by the built-in reader (io/pfm_image.h), as in a build with image I/O.
+Image read_image(const std::string& path, ColorSpace, int max_dimension)
+{
+    if (!is_pfm_file(path))
+        left_out(path);
+    return read_pfm_image(path, max_dimension, true);
+}
 
-ImageHeader read_image_header(const std::string& path, int) { left_out(path); }
+void read_image_into(const std::string& path, ColorSpace, int max_dimension, int width, int height, glm::vec4* texels)
+{
+    if (!is_pfm_file(path))
+        left_out(path);
+    read_pfm_image_into(path, max_dimension, width, height, texels);
+}
+
+ImageHeader read_image_header(const std::string& path, int max_dimension)
+{
+    if (!is_pfm_file(path))
+        left_out(path);
+    return read_pfm_image_header(path, max_dimension);
+}
 
 void write_image(const std::string& path, const Image& image)
 {
@@ -32,6 +50,11 @@ void write_image(const std::string& path, const Image& image)
     write_pfm(path, image);
 }
 
-Image read_image_raw(const std::string& path) { left_out(path); }
+Image read_image_raw(const std::string& path)
+{
+    if (!is_pfm_file(path))
+        left_out(path);
+    return read_pfm_image(path, raw_image_max_dimension, false);
+}
 
 } // namespace tf

@@ -1,6 +1,8 @@
 #include "io/lookups_csv.h"
 #include "core/escape.h"
 #include "texture/error.h"
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include "io/output_path.h"
@@ -29,6 +31,13 @@ std::string quote(const std::string& s)
 }
 
 const std::string utf8_bom = "\xEF\xBB\xBF";
+
+// %.9g (every float comes back the same from strtod), NaN as "nan" whatever its sign bit: printf writes a
+// negative NaN "-nan", which is no number in most CSV readers. Infinities are "inf" and "-inf".
+int format_value(char* out, size_t size, double value)
+{
+    return std::isnan(value) ? std::snprintf(out, size, "nan") : std::snprintf(out, size, "%.9g", value);
+}
 
 } // namespace
 
@@ -89,7 +98,11 @@ void write_colors_csv(const std::string& path, const std::vector<glm::dvec4>& co
     char row[200];
     for (size_t i = 0; i < colors.size(); ++i) {
         const glm::dvec4& c = colors[i];
-        int n = std::snprintf(row, sizeof(row), "%.9g,%.9g,%.9g,%.9g", c.r, c.g, c.b, c.a);
+        int n = 0;
+        for (int k = 0; k < 4; ++k) {
+            n += k ? std::snprintf(row + n, sizeof(row) - size_t(n), ",") : 0;
+            n += format_value(row + n, sizeof(row) - size_t(n), c[k]);
+        }
         if (stats)
             std::snprintf(row + n, sizeof(row) - size_t(n), ",%u,%u", (*stats)[i].texel_fetches,
                           (*stats)[i].hardware_lookups);

@@ -5,6 +5,7 @@
 #include "io/oiio_abi.h"
 
 #include "texture/error.h"
+#include "texture/finite.h"
 #include "texture/image.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -297,7 +298,8 @@ private:
 // Opens, validates and decodes the first subimage into the host's destination, a band of rows at a time
 // (a few MB of float values), so no whole-image float copy is ever held. Files with more than four channels
 // (EXR with extra layers, say) contribute their first four: OIIO orders R, G, B, A first. raw: no colour
-// decode at all (read_image_raw); else `space` (TF_OIIO_*) decides as image_io.h says.
+// decode at all (read_image_raw); else `space` (TF_OIIO_*) decides as image_io.h says, and a NaN or ±Inf
+// texel is refused once every band is read (texture/finite.h: the count and the first in the message).
 void read_rgba(const std::string& path, int max_dimension, bool raw, int space, const tf_oiio_call& call) {
     StderrCapture capture;
     auto in = open_checked(path, max_dimension, capture);
@@ -327,6 +329,7 @@ void read_rgba(const std::string& path, int max_dimension, bool raw, int space, 
     const bool bytes = format.integer_levels == 255;
     std::vector<float> band;
     std::vector<uint8_t> byte_band;
+    NonFiniteTexels non_finite;
     try {
         texels = destination_texels(call, format.width, format.height);
         if (bytes)
@@ -360,6 +363,14 @@ void read_rgba(const std::string& path, int max_dimension, bool raw, int space, 
         const size_t pixels = size_t(y1 - y0) * size_t(format.width);
         glm::vec4* out = texels + size_t(y0) * size_t(format.width);
         bytes ? converter.convert(byte_band.data(), pixels, out) : converter.convert(band.data(), pixels, out);
+        if (!raw && !bytes) // 8-bit codes are finite; float, half and 16-bit bands are counted while in cache
+            non_finite.scan(out, size_t(y0) * size_t(format.width), pixels, format.width);
+    }
+    if (non_finite.count) { // a texture load: refused, naming the first bad texel (texture/finite.h)
+        in->close();
+        in->geterror();
+        capture.finish();
+        check_finite_texels(non_finite, path, format.width, format.height);
     }
     if (!in->close()) fail("cannot read: " + oiio_message(in->geterror()));
     // A successful read can still have warnings of the library's own (libpng: "iCCP: known incorrect sRGB

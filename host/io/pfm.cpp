@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -60,45 +61,93 @@ Image read_pfm(const std::string& path)
     return read_pfm(in, path);
 }
 
-Image read_pfm(std::istream& in, const std::string& path)
+bool is_pfm_file(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    char magic[3] = {};
+    return in.read(magic, 3) && magic[0] == 'P' && magic[1] == 'F' && std::isspace(static_cast<unsigned char>(magic[2]));
+}
+
+PfmHeader read_pfm_header(std::istream& in, const std::string& path, int max_dimension)
 {
     // The magic by its two bytes, not as a word: a big file without whitespace must not become one string.
     char magic[2] = {};
     in.read(magic, 2);
     const bool colour = in && magic[0] == 'P' && magic[1] == 'F' && std::isspace(in.peek());
-    long long width = 0, height = 0;
-    double scale = 0;
-    in >> width >> height >> scale;
-    if (!in || !colour)
+    if (!colour)
         throw Error(path + ": not a colour PFM file (expected a \"PF\" header)");
-    if (width < 1 || height < 1 || width > max_side || height > max_side || !std::isfinite(scale) || scale == 0)
-        throw Error(path + ": bad PFM header (" + std::to_string(width) + "x" + std::to_string(height) + ")");
-    in.get(); // the single whitespace byte that ends the header
+    // Each field as a word of at most a few dozen characters, quoted as written: "nan" must be read to be
+    // refused, and a side past any integer must not wrap.
+    auto word = [&] {
+        std::string text;
+        in >> std::ws;
+        for (int c = in.peek(); c != EOF && !std::isspace(c) && text.size() <= 24; c = in.peek())
+            text += char(in.get());
+        return text.size() > 24 ? text.substr(0, 24) + "..." : text;
+    };
+    const std::string width_text = word(), height_text = word(), scale_text = word();
+    auto side = [](const std::string& text) {
+        char* end = nullptr;
+        const long long value = std::strtoll(text.c_str(), &end, 10);
+        const bool digits = !text.empty() && end == text.c_str() + text.size() && std::isdigit(text[0]);
+        return !digits ? -1LL : value; // strtoll saturates: an absurd side stays absurd
+    };
+    const long long width = side(width_text), height = side(height_text);
+    const std::string size = width_text + "x" + height_text;
+    if (width < 1 || height < 1)
+        throw Error(path + ": bad PFM header: size '" + size + "' (expected two positive integers)");
+    if (width > max_dimension || height > max_dimension)
+        throw Error(path + ": " + size + " exceeds the maximum texture size " + std::to_string(max_dimension));
+    char* end = nullptr;
+    const double scale = std::strtod(scale_text.c_str(), &end);
+    if (scale_text.empty() || end != scale_text.c_str() + scale_text.size() || !std::isfinite(scale) || scale == 0)
+        throw Error(path + ": bad PFM header: scale '" + scale_text +
+                    "' (a finite number other than 0: its sign gives the byte order)");
+    if (!std::isspace(in.get())) // the single whitespace byte that ends the header
+        throw Error(path + ": bad PFM header: no whitespace after the scale");
     // The length first: a tiny file must not make us allocate what its header claims.
-    std::streamoff start = in.tellg();
+    PfmHeader header{int(width), int(height), scale < 0, in.tellg()};
     in.seekg(0, std::ios::end);
-    std::streamoff expected = start + std::streamoff(width * height * 12);
-    if (in.tellg() != expected)
-        throw Error(path + ": " + std::to_string(in.tellg() - start) + " bytes of pixels, a " + std::to_string(width) +
-                    "x" + std::to_string(height) + " PFM has " + std::to_string(width * height * 12));
-    in.seekg(start);
-    bool little = scale < 0;
-    Image image = make_image(int(width), int(height));
-    std::vector<uint32_t> row(size_t(width) * 3);
-    for (long long y = height - 1; y >= 0; --y) {
+    const std::streamoff have = in.tellg() - header.pixels, need = std::streamoff(width * height * 12);
+    if (have < need)
+        throw Error(path + ": truncated: " + std::to_string(have) + " bytes of pixels, a " + size + " PFM has " +
+                    std::to_string(need));
+    if (have > need)
+        throw Error(path + ": " + std::to_string(have - need) + " bytes after the pixels of a " + size +
+                    " PFM (not a PFM file, or a corrupt one)");
+    in.seekg(header.pixels);
+    return header;
+}
+
+void read_pfm_pixels(std::istream& in, const PfmHeader& header, const std::string& path, glm::vec4* texels,
+                     NonFiniteTexels* non_finite)
+{
+    const size_t width = size_t(header.width);
+    std::vector<uint32_t> row(width * 3);
+    for (long long y = header.height - 1; y >= 0; --y) {
         if (!in.read(reinterpret_cast<char*>(row.data()), std::streamsize(row.size() * 4)))
-            throw Error(path + ": truncated (" + std::to_string(width) + "x" + std::to_string(height) + " expected)");
-        for (long long x = 0; x < width; ++x) {
-            glm::vec4& t = image.texels[size_t(y) * size_t(width) + size_t(x)];
+            throw Error(path + ": truncated (" + std::to_string(header.width) + "x" + std::to_string(header.height) +
+                        " expected)");
+        glm::vec4* out = texels + size_t(y) * width;
+        for (size_t x = 0; x < width; ++x) {
             for (int c = 0; c < 3; ++c) {
-                uint32_t bits = row[size_t(x) * 3 + size_t(c)];
-                if (little != (std::endian::native == std::endian::little))
+                uint32_t bits = row[x * 3 + size_t(c)];
+                if (header.little != (std::endian::native == std::endian::little))
                     bits = swap_bytes(bits);
-                t[c] = std::bit_cast<float>(bits);
+                out[x][c] = std::bit_cast<float>(bits);
             }
-            t.a = 1.0f;
+            out[x].a = 1.0f;
         }
+        if (non_finite)
+            non_finite->scan(out, size_t(y) * width, width, header.width);
     }
+}
+
+Image read_pfm(std::istream& in, const std::string& path)
+{
+    const PfmHeader header = read_pfm_header(in, path, max_side);
+    Image image = make_image(header.width, header.height);
+    read_pfm_pixels(in, header, path, image.texels.data(), nullptr);
     return image;
 }
 

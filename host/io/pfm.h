@@ -1,7 +1,9 @@
 #pragma once
 // Portable Float Map (colour "PF"): linear RGB float32 with no library behind it, so that every
 // build, the lean one without OpenImageIO included, can write renders and benchmark images.
+#include "texture/finite.h"
 #include "texture/image.h"
+#include <ios>
 #include <istream>
 #include <string>
 
@@ -19,5 +21,23 @@ Image read_pfm(const std::string& path);
 // The same from a seekable binary stream; `name` stands for the file in messages (the fuzz target reads
 // from memory).
 Image read_pfm(std::istream& in, const std::string& name);
+
+// Whether the file's first bytes are a colour PFM's magic ("PF" and a whitespace), whatever its name: image
+// reads (io/image_io.h) take such a file through this reader in every build, never through OpenImageIO.
+bool is_pfm_file(const std::string& path);
+
+struct PfmHeader {
+    int width = 0, height = 0;
+    bool little = true;        // the scale's sign: negative is little-endian
+    std::streamoff pixels = 0; // where the pixel rows start
+};
+// Reads and checks the header: a colour PFM, sides 1..max_dimension, a finite non-zero scale (0 or "nan"
+// would say nothing about the byte order), and exactly width x height x 12 bytes of pixels after it
+// ("truncated" when fewer). Leaves the stream at the first pixel.
+PfmHeader read_pfm_header(std::istream& in, const std::string& name, int max_dimension);
+// The pixel rows into width x height texels (row 0 first, alpha 1); counts non-finite values into
+// `non_finite` where given, a row at a time as they are converted.
+void read_pfm_pixels(std::istream& in, const PfmHeader& header, const std::string& name, glm::vec4* texels,
+                     NonFiniteTexels* non_finite);
 
 } // namespace tf

@@ -66,10 +66,14 @@ TextureSize check_texture(const TextureSource& source, const TextureUse& use)
                     " is larger than the summed-area table allows (" + std::to_string(sat_max_dimension) +
                     " a side: its 40-bit sums are exact only up to 4096x4096 texels of 16 bits)");
     const uint64_t budget = source.memory_budget ? source.memory_budget : default_memory_budget();
-    const TextureLoad load = !use.device ? TextureLoad::host
+    const TextureLoad load = !use.device                 ? TextureLoad::host
+                             : use.level0_only            ? TextureLoad::device_level0
                              : use.streamed && !procedural ? TextureLoad::device_streamed
                                                            : TextureLoad::device;
-    const TextureMemory need = estimate_texture_memory(width, height, use.sat, load);
+    TextureMemory need = estimate_texture_memory(width, height, use.sat, load, !procedural,
+                                                 use.device && use.device->host_memory);
+    if (use.other_bytes)
+        add_other(need, use.other_bytes, use.other_what);
     check_memory_budget(what, width, height, need, budget);
     if (use.device)
         check_device_limits(what, width, height, need, *use.device);

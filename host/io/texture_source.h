@@ -53,6 +53,10 @@ struct TextureUse {
     // load_texture gives level 0 alone, as decoded, not rounded to the format (--build gpu: the upload rounds
     // it, and the device builds the other levels from the unrounded texels, as build_mip_chain does).
     bool level0_only = false;
+    // What the command holds beside the texture while it lives (render_output_bytes, the lookups): checked
+    // against the memory budget with the texture, in one message that names it.
+    uint64_t other_bytes = 0;
+    std::string other_what;
 };
 
 // The largest texture side accepted from a file before any device is asked (Vulkan guarantees 4096;

@@ -68,6 +68,25 @@ const std::array<float, 256>& srgb8_decode_table();
 // Throws tf::Error for channels outside 1..4 or a negative side.
 Image decode_srgb8(const uint8_t* pixels, int width, int height, int channels);
 
+// ---- Finite texels -------------------------------------------------------------------------------------------
+
+// A NaN or ±Inf texel spreads over every footprint that touches it (a 32x32 texture with 3 of them turns
+// hundreds of pixels NaN), and a summed-area table cannot hold one: texture loaders refuse them. Counts the
+// non-finite channel values of texels scanned in any order (a band of rows at a time, as a decoder fills
+// them) and keeps the first in row order (its first non-finite channel).
+struct NonFiniteTexels {
+    uint64_t count = 0;    // texels with a NaN or ±Inf channel
+    size_t first_index = 0; // the first one's texel index (y * width + x); meaningful when count > 0
+    int x = -1, y = -1, channel = -1;
+    float value = 0.0f;
+    // n texels of a width-wide image, the first of them texel index `first`.
+    void scan(const glm::vec4* texels, size_t first, size_t n, int width);
+};
+// Throws tf::Error "WHAT: texel (x, y) is NaN (channel G; N of W*H texels hold NaN or Inf): every filter needs
+// finite texels" (+Inf, -Inf likewise) when anything non-finite was found.
+void check_finite_texels(const NonFiniteTexels& found, const std::string& what, int width, int height);
+void check_finite_texels(const Image& image, const std::string& what);
+
 // ---- MIP chains ---------------------------------------------------------------------------------------------
 
 struct MipChain {
