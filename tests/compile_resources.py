@@ -200,7 +200,8 @@ class Tools:
         if optimise:
             cmd.insert(1, "-Os" if compiler == "glslangValidator" else "-O")
         r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        return r.returncode == 0, r.stdout, spv
+        crash = f"{os.path.basename(cmd[0])} killed by signal {-r.returncode}\n" if r.returncode < 0 else ""
+        return r.returncode == 0, crash + r.stdout, spv
 
     def disassemble(self, spv):
         return subprocess.run([self.spirv_dis, "--no-color", "--no-header", "--raw-id", spv], check=True,

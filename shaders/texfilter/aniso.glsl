@@ -170,15 +170,18 @@ vec4 tfi_aniso_probe(TFI_T, vec2 uv TFI_X, float lod, int wrapMode)
 vec4 tfi_aniso_probe_hw(TFI_T, vec2 uv TFI_X, float lod, int wrapMode)
 {
     uv = tf_reduce_uv(uv, wrapMode);
+    vec4 color; // one return (common.glsl): TF_MAGNIFY is a constant
     if (TF_MAGNIFY != TF_RECONSTRUCT_BILINEAR && lod < 1.0) {
-        vec4 fine = tfi_magnified_level0(TFI_A, uv TFI_XA, wrapMode, true);
-        if (lod <= 0.0)
-            return fine;
+        color = tfi_magnified_level0(TFI_A, uv TFI_XA, wrapMode, true);
+        if (lod > 0.0) {
+            TF_COUNT_HW_LOOKUPS(1);
+            color = mix(color, TFI_LOOKUP(uv, 1.0), lod);
+        }
+    } else {
         TF_COUNT_HW_LOOKUPS(1);
-        return mix(fine, TFI_LOOKUP(uv, 1.0), lod);
+        color = TFI_LOOKUP(uv, lod);
     }
-    TF_COUNT_HW_LOOKUPS(1);
-    return TFI_LOOKUP(uv, lod);
+    return color;
 }
 
 vec4 tfi_aniso_filter(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape,

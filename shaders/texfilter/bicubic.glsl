@@ -50,9 +50,9 @@
 vec4 tfi_cubic_weights(float t, int kernel)
 {
     float t2 = t * t, t3 = t2 * t, s = 1.0 - t;
-    if (kernel == TF_RECONSTRUCT_CATMULL_ROM)
-        return 0.5 * vec4(-t * s * s, 2.0 - 5.0 * t2 + 3.0 * t3, t + 4.0 * t2 - 3.0 * t3, -t2 * s);
-    return (1.0 / 6.0) * vec4(s * s * s, 4.0 - 6.0 * t2 + 3.0 * t3, 1.0 + 3.0 * (t + t2 - t3), t3);
+    return kernel == TF_RECONSTRUCT_CATMULL_ROM // one return (common.glsl)
+               ? 0.5 * vec4(-t * s * s, 2.0 - 5.0 * t2 + 3.0 * t3, t + 4.0 * t2 - 3.0 * t3, -t2 * s)
+               : (1.0 / 6.0) * vec4(s * s * s, 4.0 - 6.0 * t2 + 3.0 * t3, 1.0 + 3.0 * (t + t2 - t3), t3);
 }
 
 #define TFI_FAMILY TFI_FAMILY_BICUBIC
@@ -63,10 +63,9 @@ vec4 tfi_cubic_weights(float t, int kernel)
 #if TFI_FAMILY == TFI_FAMILY_BICUBIC // per resource kind (access.glsl)
 
 #if TFI_CAN_FETCH
-vec4 tf_cubic_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, int kernel)
+// The cubic kernels from texel fetches (tf_cubic_level without its bilinear case).
+vec4 tfi_cubic_level_fetched(TFI_T, vec2 uv TFI_X, int level, int wrapMode, int kernel)
 {
-    if (kernel == TF_RECONSTRUCT_BILINEAR)
-        return tf_bilinear_level(TFI_A, uv TFI_XA, level, wrapMode);
     if (!tf_finite(uv))
         return vec4(0.0);
     ivec2 size = tf_level_size(TFI_A, level);
@@ -86,41 +85,58 @@ vec4 tf_cubic_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, int kernel)
     }
     return sum;
 }
+
+vec4 tf_cubic_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, int kernel)
+{
+    return kernel == TF_RECONSTRUCT_BILINEAR // one return (common.glsl)
+               ? tf_bilinear_level(TFI_A, uv TFI_XA, level, wrapMode)
+               : tfi_cubic_level_fetched(TFI_A, uv TFI_XA, level, wrapMode, kernel);
+}
 #endif
 
 #if TFI_HW
-vec4 tf_cubic_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, int kernel)
+// The cubic kernels from hardware taps at an already reduced uv (tf_cubic_level_hw without its bilinear case).
+vec4 tfi_cubic_level_taps(TFI_T, vec2 uv TFI_X, int level, int kernel)
 {
-    if (!tf_finite(uv))
-        return vec4(0.0);
-    uv = tf_reduce_uv(uv, wrapMode); // a sampler given |uv| >= ~1e37 returns NaN (uv·size overflows)
     float l = float(level);
-    if (kernel == TF_RECONSTRUCT_BILINEAR) {
-        TF_COUNT_HW_LOOKUPS(1);
-        return TFI_LOOKUP(uv, l);
-    }
     vec2 size = vec2(tf_level_size(TFI_A, level));
     vec2 x = clamp(uv * size - 0.5, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
     vec2 i0 = floor(x);
     vec4 wx = tfi_cubic_weights(x.x - i0.x, kernel), wy = tfi_cubic_weights(x.y - i0.y, kernel);
     // A tap at texel coordinate c reads texels floor(c − ½) and the next, the second weighted frac(c − ½).
-    if (kernel == TF_RECONSTRUCT_CATMULL_ROM) {
+    vec4 sum = vec4(0.0);
+    if (kernel == TF_RECONSTRUCT_CATMULL_ROM) { // one return (common.glsl)
         vec3 gx = vec3(wx.x, wx.y + wx.z, wx.w), gy = vec3(wy.x, wy.y + wy.z, wy.w); // middle pair >= 1
         vec3 px = vec3(i0.x - 0.5, i0.x + 0.5 + wx.z / gx.y, i0.x + 2.5) / size.x;
         vec3 py = vec3(i0.y - 0.5, i0.y + 0.5 + wy.z / gy.y, i0.y + 2.5) / size.y;
         TF_COUNT_HW_LOOKUPS(9);
-        vec4 sum = vec4(0.0);
         for (int j = 0; j < 3; ++j)
             sum += gy[j] * (gx.x * TFI_LOOKUP(vec2(px.x, py[j]), l) + gx.y * TFI_LOOKUP(vec2(px.y, py[j]), l) +
                             gx.z * TFI_LOOKUP(vec2(px.z, py[j]), l));
-        return sum;
+    } else {
+        vec2 g0 = vec2(wx.x + wx.y, wy.x + wy.y), g1 = vec2(wx.z + wx.w, wy.z + wy.w); // each >= 1/6
+        vec2 p0 = (i0 - 0.5 + vec2(wx.y, wy.y) / g0) / size;
+        vec2 p1 = (i0 + 1.5 + vec2(wx.w, wy.w) / g1) / size;
+        TF_COUNT_HW_LOOKUPS(4);
+        sum = g0.y * (g0.x * TFI_LOOKUP(p0, l) + g1.x * TFI_LOOKUP(vec2(p1.x, p0.y), l)) +
+              g1.y * (g0.x * TFI_LOOKUP(vec2(p0.x, p1.y), l) + g1.x * TFI_LOOKUP(p1, l));
     }
-    vec2 g0 = vec2(wx.x + wx.y, wy.x + wy.y), g1 = vec2(wx.z + wx.w, wy.z + wy.w); // each >= 1/6
-    vec2 p0 = (i0 - 0.5 + vec2(wx.y, wy.y) / g0) / size;
-    vec2 p1 = (i0 + 1.5 + vec2(wx.w, wy.w) / g1) / size;
-    TF_COUNT_HW_LOOKUPS(4);
-    return g0.y * (g0.x * TFI_LOOKUP(p0, l) + g1.x * TFI_LOOKUP(vec2(p1.x, p0.y), l)) +
-           g1.y * (g0.x * TFI_LOOKUP(vec2(p0.x, p1.y), l) + g1.x * TFI_LOOKUP(p1, l));
+    return sum;
+}
+
+vec4 tf_cubic_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, int kernel)
+{
+    if (!tf_finite(uv))
+        return vec4(0.0);
+    uv = tf_reduce_uv(uv, wrapMode); // a sampler given |uv| >= ~1e37 returns NaN (uv·size overflows)
+    vec4 color;
+    if (kernel == TF_RECONSTRUCT_BILINEAR) { // one return from here on (common.glsl)
+        TF_COUNT_HW_LOOKUPS(1);
+        color = TFI_LOOKUP(uv, float(level));
+    } else {
+        color = tfi_cubic_level_taps(TFI_A, uv TFI_XA, level, kernel);
+    }
+    return color;
 }
 #endif
 
@@ -129,24 +145,27 @@ vec4 tf_cubic_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, int kernel
 #if TFI_CAN_FETCH
 vec4 tfi_mip_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
 {
-    if (TF_MAGNIFY != TF_RECONSTRUCT_BILINEAR && level == 0)
-        return tf_cubic_level(TFI_A, uv TFI_XA, 0, wrapMode, TF_MAGNIFY);
-    return tf_bilinear_level(TFI_A, uv TFI_XA, level, wrapMode);
+    return TF_MAGNIFY != TF_RECONSTRUCT_BILINEAR && level == 0 // one return (common.glsl)
+               ? tf_cubic_level(TFI_A, uv TFI_XA, 0, wrapMode, TF_MAGNIFY)
+               : tf_bilinear_level(TFI_A, uv TFI_XA, level, wrapMode);
 }
 #endif
 
 // TF_MAGNIFY's level 0 from texel fetches or hardware taps (ewa, aniso's hardware probes).
 vec4 tfi_magnified_level0(TFI_T, vec2 uv TFI_X, int wrapMode, bool hardware)
 {
+    // One return (common.glsl): every caller passes `hardware` as a constant. A shadow sampler has only the
+    // _hw forms, which never come here with hardware false.
+    vec4 color = vec4(0.0);
 #if TFI_HW
     if (hardware)
-        return tf_cubic_level_hw(TFI_A, uv TFI_XA, 0, wrapMode, TF_MAGNIFY);
+        color = tf_cubic_level_hw(TFI_A, uv TFI_XA, 0, wrapMode, TF_MAGNIFY);
 #endif
 #if TFI_CAN_FETCH
-    return tf_cubic_level(TFI_A, uv TFI_XA, 0, wrapMode, TF_MAGNIFY);
-#else
-    return vec4(0.0); // a shadow sampler has only the _hw forms, which never come here with hardware false
+    if (!hardware)
+        color = tf_cubic_level(TFI_A, uv TFI_XA, 0, wrapMode, TF_MAGNIFY);
 #endif
+    return color;
 }
 
 #if TFI_MANUAL && !TFI_ENV

@@ -160,6 +160,13 @@ float tfi_compare_texel(tf_Compare c, float d)
     return (c.op & bit) != 0 || c.op == TF_COMPARE_ALWAYS || (bit == 0 && c.op == TF_COMPARE_NOT_EQUAL) ? 1.0 : 0.0;
 }
 
+// One return where a branch tests the wrap mode or another argument callers often pass as a constant (the
+// kernel, TF_MAGNIFY, the tap form): assign the result and return it once. glslc -O (shaderc 2023.2, Debian
+// bookworm) wraps a function with an early return in a one-case switch (merge-return); when a constant folds
+// that branch away, its block-merge pass keeps a stale structured-CFG analysis and crashes
+// (StructuredCFGAnalysis::SwitchMergeBlock, fixed in SPIRV-Tools 2023.1). Early returns on run-time
+// conditions (non-finite input) are fine. tests/compile_matrix.py compiles every function that way.
+
 // Texel coordinates past ±2^24 carry no information in float; clamping there keeps int math defined.
 const float TF_MAX_TEXEL_COORD = 16777216.0;
 
@@ -170,15 +177,19 @@ const float TF_MAX_TEXEL_COORD = 16777216.0;
 int tf_wrap(float i, int size, int wrapMode)
 {
     float t = clamp(i, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
-    if (wrapMode == TF_WRAP_CLAMP)
-        return clamp(int(t), 0, size - 1);
-    float n = float(size);
-    float period = wrapMode == TF_WRAP_MIRROR ? 2.0 * n : n;
-    float m = t - period * floor(t / period);
-    m = m < 0.0 ? m + period : (m >= period ? m - period : m);
-    if (wrapMode == TF_WRAP_MIRROR && m >= n)
-        m = period - 1.0 - m;
-    return int(m);
+    int wrapped;
+    if (wrapMode == TF_WRAP_CLAMP) { // one return (above)
+        wrapped = clamp(int(t), 0, size - 1);
+    } else {
+        float n = float(size);
+        float period = wrapMode == TF_WRAP_MIRROR ? 2.0 * n : n;
+        float m = t - period * floor(t / period);
+        m = m < 0.0 ? m + period : (m >= period ? m - period : m);
+        if (wrapMode == TF_WRAP_MIRROR && m >= n)
+            m = period - 1.0 - m;
+        wrapped = int(m);
+    }
+    return wrapped;
 }
 
 // The texel pair (i, i + 1) of a bilinear lookup, wrapped, for an integer-valued i in [-size - 1, size - 1]
@@ -209,9 +220,7 @@ bool tf_finite(vec2 v) { return !any(isnan(v)) && !any(isinf(v)); }
 vec2 tfi_whole_periods(vec2 uv) { return uv - 2.0 * roundEven(0.5 * uv); } // repeat and mirror's part
 vec2 tf_reduce_uv(vec2 uv, int wrapMode)
 {
-    if (wrapMode == TF_WRAP_CLAMP)
-        return clamp(uv, -1.0, 2.0);
-    return tfi_whole_periods(uv);
+    return wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0, 2.0) : tfi_whole_periods(uv);
 }
 
 // The lat-long kind's extra parameter (access.glsl kind 19): it only tells its overloads from sampler2D's.

@@ -458,16 +458,20 @@ vec4 tfi_ewa_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShap
 // One level: a 1x1 level is its texel whatever the ellipse (saves up to K² reads of it at the horizon).
 vec4 tfi_ewa_on_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha, bool hardware)
 {
+    vec4 color; // one return (common.glsl): TFI_CAN_FETCH and `hardware` are constants
     if (tf_level_size(TFI_A, level) == ivec2(1)) {
         if (!TFI_CAN_FETCH) { // a shadow sampler: its one texel through the sampler (exact at the centre)
             TF_COUNT_HW_LOOKUPS(1);
-            return TFI_LOOKUP(vec2(0.5), float(level));
+            color = TFI_LOOKUP(vec2(0.5), float(level));
+        } else {
+            TF_COUNT_FETCHES(1);
+            color = TFI_FETCH(ivec2(0), level);
         }
-        TF_COUNT_FETCHES(1);
-        return TFI_FETCH(ivec2(0), level);
+    } else {
+        color = hardware ? tfi_ewa_level_hw(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha)
+                         : tfi_ewa_level(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha);
     }
-    return hardware ? tfi_ewa_level_hw(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha)
-                    : tfi_ewa_level(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha);
+    return color;
 }
 
 // The magnification filter integrated over the pixel's footprint: the mean of four of its lookups at

@@ -143,18 +143,23 @@ struct tfi_SatAxis {
 // few texture sizes of it (uv moved by whole periods, the box at most W x H texels, W, H <= 4096).
 tfi_SatAxis tfi_sat_axis(int i, int n, int wrapMode)
 {
-    if (i >= 0 && i <= n)
-        return tfi_SatAxis(i, 1, 0);
-    if (wrapMode == TF_WRAP_CLAMP) // texel 0 repeated below, texel n - 1 above
-        return i < 0 ? tfi_SatAxis(1, i, 0) : tfi_SatAxis(n - 1, n - i, 1 + i - n);
-    int period = wrapMode == TF_WRAP_MIRROR ? 2 * n : n;
-    int q = int(floor(float(i) / float(period)));
-    int r = i - q * period;
-    q += r < 0 ? -1 : (r >= period ? 1 : 0);
-    r = i - q * period;
-    if (wrapMode != TF_WRAP_MIRROR)
-        return tfi_SatAxis(r, 1, q);
-    return r <= n ? tfi_SatAxis(r, 1, 2 * q) : tfi_SatAxis(period - r, -1, 2 * q + 2);
+    tfi_SatAxis axis = tfi_SatAxis(i, 1, 0); // inside [0, n]; one return (common.glsl)
+    if (i < 0 || i > n) {
+        if (wrapMode == TF_WRAP_CLAMP) { // texel 0 repeated below, texel n - 1 above
+            axis = i < 0 ? tfi_SatAxis(1, i, 0) : tfi_SatAxis(n - 1, n - i, 1 + i - n);
+        } else {
+            int period = wrapMode == TF_WRAP_MIRROR ? 2 * n : n;
+            int q = int(floor(float(i) / float(period)));
+            int r = i - q * period;
+            q += r < 0 ? -1 : (r >= period ? 1 : 0);
+            r = i - q * period;
+            if (wrapMode != TF_WRAP_MIRROR)
+                axis = tfi_SatAxis(r, 1, q);
+            else
+                axis = r <= n ? tfi_SatAxis(r, 1, 2 * q) : tfi_SatAxis(period - r, -1, 2 * q + 2);
+        }
+    }
+    return axis;
 }
 
 // One axis of the box [x0, x1): corners (i0, i0+1, i1, i1+1) and the weights of the three intervals
@@ -177,11 +182,12 @@ void tfi_sat_edges(float x0, float x1, out ivec4 corners, out vec3 weights)
 // float), keeps coordinates small, and is idempotent. Clamp: unchanged.
 vec2 tfi_sat_period(vec2 uv, int wrapMode)
 {
-    if (wrapMode == TF_WRAP_CLAMP)
-        return uv;
-    float period = wrapMode == TF_WRAP_MIRROR ? 2.0 : 1.0;
-    uv -= period * floor(uv / period);
-    return mix(uv, vec2(0.0), greaterThanEqual(uv, vec2(period))); // -tiny - floor(-tiny) rounds to period
+    if (wrapMode != TF_WRAP_CLAMP) { // one return (common.glsl)
+        float period = wrapMode == TF_WRAP_MIRROR ? 2.0 : 1.0;
+        uv -= period * floor(uv / period);
+        uv = mix(uv, vec2(0.0), greaterThanEqual(uv, vec2(period))); // -tiny - floor(-tiny) rounds to period
+    }
+    return uv;
 }
 
 // The footprint's columns J·e_x, J·e_y in level-0 texels times exp2(lodBias), components clamped to

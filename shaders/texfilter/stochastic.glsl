@@ -254,19 +254,20 @@ vec4 tfi_trilinear_stochastic_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy,
         return vec4(0.0);
     xi = tfi_unit3(xi);
     float lod = tf_lod(TFI_A, dUVdx, dUVdy, s);
+    vec4 color = vec4(0.0); // one return from here on (common.glsl); a shadow sampler has only the _hw forms
 #if TFI_HW
     if (hardware) {
         float rest;
         int level = tfi_stochastic_level(lod, xi.z, rest);
         TF_COUNT_HW_LOOKUPS(1);
-        return TFI_LOOKUP(tf_reduce_uv(uv, s.wrap), float(level));
+        color = TFI_LOOKUP(tf_reduce_uv(uv, s.wrap), float(level));
     }
 #endif
 #if TFI_CAN_FETCH
-    return tfi_trilinear_stochastic_at(TFI_A, uv TFI_XA, lod, s.wrap, xi);
-#else
-    return vec4(0.0); // a shadow sampler has only the _hw forms
+    if (!hardware)
+        color = tfi_trilinear_stochastic_at(TFI_A, uv TFI_XA, lod, s.wrap, xi);
 #endif
+    return color;
 }
 
 vec4 tfi_aniso_stochastic_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape,
@@ -283,17 +284,18 @@ vec4 tfi_aniso_stochastic_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_
         p = uv + tfi_stochastic_probe(fp.probes, shape, xi.z, rest) * fp.axis;
         xi.z = rest;
     }
+    vec4 color = vec4(0.0); // one return from here on (common.glsl)
 #if TFI_HW
     if (hardware) {
         TF_COUNT_HW_LOOKUPS(1);
-        return TFI_LOOKUP(tf_reduce_uv(p, s.wrap), fp.lod); // the probe's hardware trilinear tap
+        color = TFI_LOOKUP(tf_reduce_uv(p, s.wrap), fp.lod); // the probe's hardware trilinear tap
     }
 #endif
 #if TFI_CAN_FETCH
-    return tfi_trilinear_stochastic_at(TFI_A, p TFI_XA, fp.lod, s.wrap, xi);
-#else
-    return vec4(0.0);
+    if (!hardware)
+        color = tfi_trilinear_stochastic_at(TFI_A, p TFI_XA, fp.lod, s.wrap, xi);
 #endif
+    return color;
 }
 
 vec4 tfi_ewa_stochastic_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso,
@@ -308,6 +310,7 @@ vec4 tfi_ewa_stochastic_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sa
     // one of its four spread points (tfi_ewa_magnified), a quarter of the share each, and there one texel (one
     // tap); the rest of xi.z, rescaled, picks the ellipse's level.
     float magnifyShare = 1.0 - clamp(tf_lod(TFI_A, dUVdx, dUVdy, s), 0.0, 1.0);
+    vec4 color = vec4(0.0); // one return from here on (common.glsl)
     if (xi.z < magnifyShare) {
         vec2 spreadA, spreadB;
         tfi_ewa_spread(TFI_A, dUVdx, dUVdy, a, spreadA, spreadB);
@@ -316,28 +319,28 @@ vec4 tfi_ewa_stochastic_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sa
 #if TFI_HW
         if (hardware) {
             TF_COUNT_HW_LOOKUPS(1);
-            return TFI_LOOKUP(p, 0.0);
+            color = TFI_LOOKUP(p, 0.0);
         }
 #endif
 #if TFI_CAN_FETCH
-        return tf_bilinear_stochastic_level(TFI_A, p TFI_XA, 0, s.wrap, xi);
-#else
-        return vec4(0.0);
+        if (!hardware)
+            color = tf_bilinear_stochastic_level(TFI_A, p TFI_XA, 0, s.wrap, xi);
 #endif
-    }
-    xi.z = clamp((xi.z - magnifyShare) / (1.0 - magnifyShare), 0.0, 0.99999994);
-    float lambda, rest;
-    tfi_EwaShape shape = tfi_ewa_shape(TFI_A, dUVdx, dUVdy, s, maxAniso, lambda);
-    int level = tfi_stochastic_level(lambda, xi.z, rest);
+    } else {
+        xi.z = clamp((xi.z - magnifyShare) / (1.0 - magnifyShare), 0.0, 0.99999994);
+        float lambda, rest;
+        tfi_EwaShape shape = tfi_ewa_shape(TFI_A, dUVdx, dUVdy, s, maxAniso, lambda);
+        int level = tfi_stochastic_level(lambda, xi.z, rest);
 #if TFI_HW
-    if (hardware)
-        return tfi_ewa_stochastic_level_hw(TFI_A, uv TFI_XA, level, s.wrap, shape, a, xi.x);
+        if (hardware)
+            color = tfi_ewa_stochastic_level_hw(TFI_A, uv TFI_XA, level, s.wrap, shape, a, xi.x);
 #endif
 #if TFI_CAN_FETCH
-    return tfi_ewa_stochastic_level(TFI_A, uv TFI_XA, level, s.wrap, shape, a, xi.x);
-#else
-    return vec4(0.0);
+        if (!hardware)
+            color = tfi_ewa_stochastic_level(TFI_A, uv TFI_XA, level, s.wrap, shape, a, xi.x);
 #endif
+    }
+    return color;
 }
 
 #if TFI_MANUAL && !TFI_ENV
