@@ -89,7 +89,13 @@ struct GpuSession {
 struct CommandDevice {
     std::unique_ptr<GpuSession> gpu; // null with --backend reference
     DeviceLimits limits;
-    TextureUse texture_use(bool sat) const { return {sat, gpu ? &limits : nullptr}; }
+    TextureUse texture_use(bool sat) const
+    {
+        TextureUse use;
+        use.sat = sat;
+        use.device = gpu ? &limits : nullptr;
+        return use;
+    }
 };
 CommandDevice open_command_device(Backend backend, const Args& args);
 

@@ -30,8 +30,9 @@ ImageHeader read_image_header(const std::string& path, int max_dimension);
 // are decoded from sRGB; float/half sources are taken as linear. linear/srgb force the choice.
 // Grey is replicated to RGB; a missing alpha becomes 1. Throws tf::Error naming the path and the
 // problem: missing, empty, unreadable/corrupt, truncated (any pixel data the decoder could not read, also
-// where OpenImageIO itself would fill it with zeros), or larger than max_dimension on a side. Messages the
-// image libraries print on their own (libpng) are caught and become part of the one error message.
+// where OpenImageIO itself would fill it with zeros), or larger than max_dimension on a side, or holding a
+// NaN or ±Inf texel (a texture: every filter needs finite texels; the message names the first and the count).
+// Messages the image libraries print on their own (libpng) are caught and become part of the one error message.
 Image read_image(const std::string& path, ColorSpace space, int max_dimension);
 
 // As read_image, into the caller's width x height texels (the size read_image_header gave; a file that
@@ -51,7 +52,8 @@ void write_image(const std::string& path, const Image& image);
 constexpr int raw_image_max_dimension = 32768;
 
 // A PNG as stored (no decode), values in [0,1] per channel: what goldens are compared against.
-// Also used for any file the diff command reads. Throws tf::Error like read_image.
+// Also used for any file the diff command reads, whose values are kept as they are, NaN and ±Inf included.
+// Throws tf::Error like read_image otherwise.
 Image read_image_raw(const std::string& path);
 
 } // namespace tf
