@@ -794,6 +794,11 @@ outputs_created_first() {
             "$TEXFILTER" build --texture checker --device 99 --out /proc/x
         expect_error "bench --out /proc/x as root" "/proc/x: cannot create a directory in /proc" - -- \
             "$TEXFILTER" bench --quick --device 99 --out /proc/x
+        # A viewer script's screenshots are checked before the window opens (no display is needed to refuse).
+        printf 'screenshot /proc/x.png\n' >proc-shot.txt
+        expect_error "view --script with a screenshot in /proc as root" "/proc/x.png: cannot create files in /proc" - \
+            -- env -u DISPLAY "$TEXFILTER" view --texture checker --script proc-shot.txt
+        rm -f proc-shot.txt
     fi
     # A parent that is a file is named as one.
     expect_error "render -o under a file" "ok.png is a file, not a directory" - -- "${RENDER[@]}" -o ok.png/x.png

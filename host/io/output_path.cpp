@@ -91,6 +91,12 @@ TemporaryFile take_temporary(const std::string& target)
 
 std::string end_of_links(const std::string& path) { return follow_links(path).string(); }
 
+namespace {
+// The checks of checked_output_path, before anything is created; returns the path to write.
+std::string output_target(const std::string& path, const std::vector<std::string>& extensions,
+                          const std::vector<std::string>& inputs);
+} // namespace
+
 void check_writable_directory(const std::string& directory, const std::string& what)
 {
     struct stat status {};
@@ -105,7 +111,7 @@ void check_writable_directory(const std::string& directory, const std::string& w
 std::string checked_output_path(const std::string& path, const std::vector<std::string>& extensions,
                                 const std::vector<std::string>& inputs)
 {
-    const std::string target = check_output_path(path, extensions, inputs);
+    const std::string target = output_target(path, extensions, inputs);
     // Last, once everything else holds: creating the temporary is the real test that the directory takes
     // files (access() says yes to root in /proc; a read-only mount says no only here).
     reserve_temporary(target);
@@ -114,6 +120,16 @@ std::string checked_output_path(const std::string& path, const std::vector<std::
 
 std::string check_output_path(const std::string& path, const std::vector<std::string>& extensions,
                               const std::vector<std::string>& inputs)
+{
+    const std::string target = output_target(path, extensions, inputs);
+    remove_temporary(create_temporary_file(target).path); // the same real test, leaving nothing behind
+    return target;
+}
+
+namespace {
+
+std::string output_target(const std::string& path, const std::vector<std::string>& extensions,
+                          const std::vector<std::string>& inputs)
 {
     if (path.empty())
         throw Error("the output path is empty");
@@ -164,6 +180,8 @@ std::string check_output_path(const std::string& path, const std::vector<std::st
         }
     return target.string();
 }
+
+} // namespace
 
 void write_all(int fd, const void* bytes, size_t size, const std::string& path)
 {

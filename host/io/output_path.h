@@ -30,7 +30,8 @@ std::string checked_output_path(const std::string& path, const std::vector<std::
 // Throws tf::Error for a loop or an unreadable link.
 std::string end_of_links(const std::string& path);
 
-// The same checks, creating nothing: for outputs checked long before they are written (a viewer script's
+// The same checks, leaving nothing behind (a temporary is created and removed at once, so the directory's
+// answer is still the file system's): for outputs checked long before they are written (a viewer script's
 // screenshots, checked before its window opens; write_output makes the temporary when the file is written).
 std::string check_output_path(const std::string& path, const std::vector<std::string>& extensions,
                               const std::vector<std::string>& inputs = {});
