@@ -71,17 +71,19 @@ int tfi_split_lod(float lod, out float f)
 // the one construct they leave early, once no lane needs another turn. So: the level that counts (lo, or
 // lo + 1 where w is 1) on the first turn, the coarser one on a second turn only where 0 < w < 1; a batch of
 // lanes that all sit outside brilinear's band, on a level or clamped to the last one pays one level's
-// fetches, any other two (never four).
+// fetches, any other two (never four). The turn test is at the loop's top, not a do-while's bottom: lavapipe
+// (Mesa 22.3.6) can hand a lane that left a loop early a value from the turns its batch still takes, and with
+// the do-while an optimised tf_ewa_hw returned the ellipse's share as 0 on one-turn lanes. The top test
+// measured exact in every compiler mode; it is a workaround, not a cure (docs/API.md, "Optimisation").
 #define TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w)                                     \
     {                                                                                    \
         int tfi_turns = (w) > 0.0 && (w) < 1.0 ? 2 : 1;                                  \
         int tfi_level = (w) == 1.0 ? (lo) + 1 : (lo);                                    \
-        int tfi_turn = 0;                                                                \
-        do {                                                                             \
+        for (int tfi_turn = 0; tfi_turn < tfi_turns; ++tfi_turn) {                       \
             vec4 tfi_value = LEVEL(tfi_level);                                           \
             result = tfi_turn == 0 ? tfi_value : mix(result, tfi_value, (w));            \
             tfi_level = (lo) + 1;                                                        \
-        } while (++tfi_turn < tfi_turns);                                                \
+        }                                                                                \
     }
 
 // Vulkan mipmapMode NEAREST: ceil(d + 0.5) - 1, so d = 0.5 still picks the finer level. Written with
