@@ -800,6 +800,14 @@ outputs_created_first() {
             -- env -u DISPLAY "$TEXFILTER" view --texture checker --script proc-shot.txt
         rm -f proc-shot.txt
     fi
+    # A results directory whose name the file system cannot take: refused before the work (it was built, then
+    # could not be moved into place).
+    local long_dir
+    long_dir=$(printf 'n%.0s' $(seq 1 $(($(getconf NAME_MAX .) + 1))))
+    expect_error "build --out a name longer than NAME_MAX" "bytes, longer than" - -- \
+        "$TEXFILTER" build --texture checker --texture-size 16 --build cpu --out "$long_dir"
+    expect_error "bench --out a name longer than NAME_MAX" "bytes, longer than" - -- \
+        "$TEXFILTER" bench --quick --device 99 --out "$long_dir"
     # A parent that is a file is named as one.
     expect_error "render -o under a file" "ok.png is a file, not a directory" - -- "${RENDER[@]}" -o ok.png/x.png
     # --out through a link to an empty directory: the link is followed, as -o follows one.

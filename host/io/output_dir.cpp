@@ -173,6 +173,7 @@ void check_new_directory(const std::string& out, const std::string& what)
     if (!fs::is_directory(parent, ec))
         throw Error(shown + ": its parent directory does not exist");
     check_writable_directory(parent.string(), what + " " + shown);
+    check_name_fits(path.string(), what + " " + shown);
     const fs::file_status status = fs::symlink_status(path, ec);
     if (fs::exists(status) && !fs::is_directory(status))
         throw Error(shown + ": exists and is not a directory (" + what + " never overwrites results)");

@@ -91,6 +91,18 @@ TemporaryFile take_temporary(const std::string& target)
 
 std::string end_of_links(const std::string& path) { return follow_links(path).string(); }
 
+void check_name_fits(const std::string& path, const std::string& shown)
+{
+    const fs::path target(path);
+    const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    const long limit = pathconf(parent.c_str(), _PC_NAME_MAX);
+    const size_t name_max = size_t(limit > 0 ? limit : NAME_MAX);
+    const size_t name_size = target.filename().string().size();
+    if (name_size > name_max)
+        throw Error(shown.substr(0, 80) + "...: the name is " + std::to_string(name_size) + " bytes, longer than " +
+                    std::to_string(name_max) + ", the most " + parent.string() + " allows");
+}
+
 namespace {
 // The checks of checked_output_path, before anything is created; returns the path to write.
 std::string output_target(const std::string& path, const std::vector<std::string>& extensions,
@@ -164,12 +176,7 @@ std::string output_target(const std::string& path, const std::vector<std::string
             throw Error(shown + ": " + file + " is a file, not a directory");
         throw Error(shown + ": the output directory " + parent.string() + " does not exist");
     }
-    // The name itself must fit the file system, or the finished file could not be moved into place.
-    const long name_max = pathconf(parent.c_str(), _PC_NAME_MAX);
-    const size_t name_size = target.filename().string().size();
-    if (name_size > size_t(name_max > 0 ? name_max : NAME_MAX))
-        throw Error(shown.substr(0, 80) + "...: the file name is " + std::to_string(name_size) + " bytes, longer than " +
-                    std::to_string(name_max > 0 ? name_max : NAME_MAX) + ", the most " + parent.string() + " allows");
+    check_name_fits(target.string(), shown);
 
     if (exists)
         for (const std::string& input : inputs) {

@@ -36,6 +36,10 @@ std::string end_of_links(const std::string& path);
 std::string check_output_path(const std::string& path, const std::vector<std::string>& extensions,
                               const std::vector<std::string>& inputs = {});
 
+// Throws tf::Error, naming `shown`, if the last part of `path` is longer than its directory allows: the
+// finished output (renamed there at the end) could not take its place.
+void check_name_fits(const std::string& path, const std::string& shown);
+
 // Throws tf::Error unless files can be created in `directory` (exists, is a directory, is writable).
 // `what` names the output in the message ("bench --out results").
 void check_writable_directory(const std::string& directory, const std::string& what);
