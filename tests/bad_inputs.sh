@@ -650,6 +650,17 @@ unwritable_outputs() {
         "${AS_USER[@]}" "$TEXFILTER" bench --quick --scenes zoom --out locked/bench
     expect_error "golden --out in an unwritable directory" "Permission denied" locked/golden -- \
         "${AS_USER[@]}" "$TEXFILTER" golden --out locked/golden
+    # Another user's writable file in a sticky directory (as /tmp): only its owner may replace it there, so it
+    # is refused before the work (the render ran, then the rename failed).
+    if [[ $(id -u) -eq 0 ]]; then # the file root's, the render nobody's
+        mkdir -p sticky && chmod 1777 sticky && echo theirs >sticky/out.png && chmod 666 sticky/out.png
+        expect_error "render -o another user's file in a sticky directory" "sticky directory" - -- \
+            "${AS_USER[@]}" "${RENDER[@]}" -o sticky/out.png
+        [[ $(cat sticky/out.png) == theirs ]] || fail "render -o another user's file in a sticky directory" "replaced"
+        rm -rf sticky
+    else
+        skip "render -o another user's file in a sticky directory" "needs root to make a file of another user"
+    fi
     # An unreadable input says why, as an unwritable output does.
     cp good.csv unreadable.csv && chmod 000 unreadable.csv
     mkdir -p writable && chmod 777 writable

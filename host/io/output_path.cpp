@@ -177,6 +177,13 @@ std::string output_target(const std::string& path, const std::vector<std::string
         throw Error(shown + ": the output directory " + parent.string() + " does not exist");
     }
     check_name_fits(target.string(), shown);
+    // The rename that puts the output in place replaces a file in a sticky directory (/tmp) only for the file's
+    // or the directory's owner (or root): anyone else would find out only after the work.
+    const uid_t user = geteuid();
+    if (exists && (parent_status.st_mode & S_ISVTX) && user != 0 && existing.st_uid != user &&
+        parent_status.st_uid != user)
+        throw Error(shown + ": belongs to another user in the sticky directory " + parent.string() +
+                    ", where only its owner may replace it (choose another output)");
 
     if (exists)
         for (const std::string& input : inputs) {
