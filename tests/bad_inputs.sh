@@ -1122,7 +1122,17 @@ bounded_text_inputs() {
         out.csv -- "${SAMPLE[@]}" --lookups zero_link.txt -o out.csv
     expect_error "sample: --lookups a 3 GiB file" "sparse_3g.txt: the lookups file is 3.0 GiB (3221225472 bytes), over its cap of 2.0 GiB" \
         out.csv -- "${SAMPLE[@]}" --lookups sparse_3g.txt -o out.csv
-    rm -rf fifo.txt zero_link.txt sparse_3g.txt manifest-zero manifest-fifo manifest-big
+    # Image files too (textures, environment maps, diff's A and B): the image library opens them by name and
+    # would wait on a FIFO for ever.
+    mkfifo fifo.png
+    expect_error "render --texture a FIFO" "fifo.png: is a pipe (FIFO), not a regular file" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture fifo.png --filter trilinear "${REF[@]}" -o out.png
+    expect_error "render --texture a FIFO as an environment map" "fifo.png: is a pipe (FIFO), not a regular file" \
+        out.png -- "$TEXFILTER" render --scene skybox --texture fifo.png --filter trilinear "${REF[@]}" -o out.png
+    expect_error "render --texture /dev/zero" "/dev/zero: is a character device, not a regular file" out.png -- \
+        "$TEXFILTER" render --scene zoom --texture /dev/zero --filter trilinear "${REF[@]}" -o out.png
+    expect_error "diff A a FIFO" "fifo.png: is a pipe (FIFO), not a regular file" - -- "$TEXFILTER" diff fifo.png ok.png
+    rm -rf fifo.txt fifo.png zero_link.txt sparse_3g.txt manifest-zero manifest-fifo manifest-big
 }
 
 # One rule for every flag: a flag the chosen filter (scene, texture, command) does not read is refused, naming

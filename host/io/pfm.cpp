@@ -1,4 +1,5 @@
 #include "io/pfm.h"
+#include "io/text_file.h"
 #include "texture/error.h"
 #include "io/output_path.h"
 #include <algorithm>
@@ -63,6 +64,7 @@ Image read_pfm(const std::string& path)
 
 bool is_pfm_file(const std::string& path)
 {
+    refuse_special_file(path, "an image file"); // before anything opens it: every image read starts here
     std::ifstream in(path, std::ios::binary);
     char magic[3] = {};
     return in.read(magic, 3) && magic[0] == 'P' && magic[1] == 'F' && std::isspace(static_cast<unsigned char>(magic[2]));

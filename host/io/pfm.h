@@ -24,6 +24,8 @@ Image read_pfm(std::istream& in, const std::string& name);
 
 // Whether the file's first bytes are a colour PFM's magic ("PF" and a whitespace), whatever its name: image
 // reads (io/image_io.h) take such a file through this reader in every build, never through OpenImageIO.
+// Every image read asks this first, so it refuses a device, FIFO or socket before anything opens it
+// (refuse_special_file, io/text_file.h): no image read blocks on a FIFO or reads a device without end.
 bool is_pfm_file(const std::string& path);
 
 struct PfmHeader {

@@ -43,6 +43,13 @@ struct FileDescriptor {
 
 } // namespace
 
+void refuse_special_file(const std::string& path, const std::string& what)
+{
+    struct stat status {};
+    if (::stat(path.c_str(), &status) == 0 && !S_ISDIR(status.st_mode))
+        require_regular(path, status.st_mode, what);
+}
+
 std::string read_text_file(const std::string& path, uint64_t max_bytes, const std::string& what)
 {
     // The path's kind first, so that a device or a FIFO is never opened (opening a device can do things).

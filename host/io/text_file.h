@@ -14,4 +14,10 @@ namespace tf {
 // holds more than max_bytes. Never blocks on a FIFO: it is refused without waiting for a writer.
 std::string read_text_file(const std::string& path, uint64_t max_bytes, const std::string& what);
 
+// Throws tf::Error naming `path` and `what` ("an image file") when it exists and is a device, a FIFO or a
+// socket (a symbolic link is followed), without opening it: for readers that open files by name (the image
+// library), which would wait on a FIFO for ever or read a device without end. A missing path or a directory
+// is left to the reader's own message.
+void refuse_special_file(const std::string& path, const std::string& what);
+
 } // namespace tf
