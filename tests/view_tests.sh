@@ -74,6 +74,18 @@ same_as_render() {
     fi
 }
 
+# view_and_capture SHOT.json: runs script.txt under its own X server (640x480) and, once SHOT.json is written
+# and the script holds its frame, captures the X root into root.xwd (the server is the test's own); sets rc.
+view_and_capture() {
+    rc=0
+    xvfb-run -a -s "-screen 0 640x480x24" bash -c '
+        "$1" view --script script.txt --size 256x256 >view.stdout 2>view.stderr & pid=$!
+        for i in $(seq 600); do [[ -s $2 ]] && break; sleep 0.1; done
+        sleep 1
+        xwd -root -screen -silent -out root.xwd
+        wait $pid' _ "$TEXFILTER" "$1" || rc=$?
+}
+
 viewer_ok() { # DESCRIPTION: the viewer ran the script to the end, exit 0, no validation message
     if [[ $rc -ne 0 ]]; then
         fail "$1" "view exited $rc"
@@ -234,14 +246,7 @@ quit" --state first.json
     ;;
 x-capture)
     printf '%s\n' "texture zoneplate --texture-size 64" "ui off" "screenshot shown.png" "hold 6000" "quit" >script.txt
-    rc=0
-    # The X server is the test's own, so xwd can capture its root while the viewer holds the frame.
-    xvfb-run -a -s "-screen 0 640x480x24" bash -c '
-        "$1" view --script script.txt --size 256x256 >view.stdout 2>view.stderr & pid=$!
-        for i in $(seq 600); do [[ -s shown.json ]] && break; sleep 0.1; done
-        sleep 1
-        xwd -root -screen -silent -out root.xwd
-        wait $pid' _ "$TEXFILTER" || rc=$?
+    view_and_capture shown.json
     viewer_ok x-capture || exit 1
     if "$XWD_COMPARE" root.xwd shown.png --at 0,0 >cmp.out 2>stderr; then
         pass "X-side capture of the window = swapchain readback"; else fail x-capture "$(cat cmp.out)"; fi
@@ -335,13 +340,7 @@ with open("rgba.png", "wb") as f:
 PYTHON
     printf '%s\n' "scene tunnel" "texture rgba.png" "filter trilinear" "ui off" "screenshot alpha.png" "hold 6000" \
         "stage compute" "filter aniso" "screenshot alpha-compute.png" "quit" >script.txt
-    rc=0
-    xvfb-run -a -s "-screen 0 640x480x24" bash -c '
-        "$1" view --script script.txt --size 256x256 >view.stdout 2>view.stderr & pid=$!
-        for i in $(seq 600); do [[ -s alpha.json ]] && break; sleep 0.1; done
-        sleep 1
-        xwd -root -screen -silent -out root.xwd
-        wait $pid' _ "$TEXFILTER" || rc=$?
+    view_and_capture alpha.json
     viewer_ok alpha || exit 1
     for shot in alpha alpha-compute; do
         # The case proves something only where the alpha is far from 1: the render's PNG goes below 32 of 255.

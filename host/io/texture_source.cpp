@@ -3,6 +3,7 @@
 #include "core/memory_budget.h"
 #include "core/cube_textures.h"
 #include "core/procedural.h"
+#include "io/text_file.h"
 #include "texture/sat.h"
 #include <cerrno>
 #include <cstring>
@@ -37,6 +38,7 @@ void check_texture_name(const std::string& path)
         throw Error(path + ": " + ec.message());
     if (std::filesystem::is_directory(status))
         return; // the image reader says it is a directory
+    refuse_special_file(path, "an image file"); // a device or FIFO is never opened (io/text_file.h)
     // Opened as the reader will open it: the system's reason, not the image library's "cannot open".
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0)
