@@ -254,6 +254,57 @@ vec4 tfi_ewa_fit(tfi_EwaMoments s)
 {
     return clamp(tfi_ewa_fit_unclamped(s), s.lo, s.hi);
 }
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_ewa(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+vec4 tf_ewa(texture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(texture2D tex, sampler smp, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+vec4 tf_ewa(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+vec4 tf_ewa(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+vec4 tf_ewa(isampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(itexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(usampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(utexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+vec4 tf_ewa(sampler2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(texture2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(sampler2DShadow tex, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+vec4 tf_ewa(samplerCube tex, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(textureCube tex, sampler smp, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(samplerCube tex, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(textureCube tex, sampler smp, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+vec4 tf_ewa(samplerCubeArray tex, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(samplerCubeArray tex, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+vec4 tf_ewa(sampler2D tex, vec2 uv, tf_LatLong latlong, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(sampler2D tex, vec2 uv, tf_LatLong latlong, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#ifdef TF_SOURCE
+vec4 tf_ewa(TF_SOURCE tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_EWA
 #include "detail/instantiate.glsl"
 #undef TFI_FAMILY

@@ -112,6 +112,116 @@ float tfi_stochastic_probe(int probes, int shape, float xi, out float rest)
     return chosen;
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_aniso_stochastic(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_bilinear_stochastic(sampler2D tex, vec2 uv, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_hw(sampler2D tex, vec2 uv, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_level(sampler2D tex, vec2 uv, int level, int wrapMode, vec3 xi);
+vec4 tf_ewa_stochastic(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_trilinear_stochastic(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+vec4 tf_aniso_stochastic(texture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_hw(texture2D tex, sampler smp, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_bilinear_stochastic(texture2D tex, vec2 uv, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_hw(texture2D tex, sampler smp, vec2 uv, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_level(texture2D tex, sampler smp, vec2 uv, int level, int wrapMode, vec3 xi);
+vec4 tf_bilinear_stochastic_level(texture2D tex, vec2 uv, int level, int wrapMode, vec3 xi);
+vec4 tf_ewa_stochastic(texture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_hw(texture2D tex, sampler smp, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_trilinear_stochastic(texture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_hw(texture2D tex, sampler smp, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+vec4 tf_aniso_stochastic(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_hw(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_bilinear_stochastic(sampler2DArray tex, vec2 uv, int layer, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_hw(sampler2DArray tex, vec2 uv, int layer, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_level(sampler2DArray tex, vec2 uv, int layer, int level, int wrapMode, vec3 xi);
+vec4 tf_ewa_stochastic(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_hw(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_trilinear_stochastic(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_hw(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+vec4 tf_aniso_stochastic(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_bilinear_stochastic(texture2DArray tex, vec2 uv, int layer, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_level(texture2DArray tex, sampler smp, vec2 uv, int layer, int level, int wrapMode, vec3 xi);
+vec4 tf_bilinear_stochastic_level(texture2DArray tex, vec2 uv, int layer, int level, int wrapMode, vec3 xi);
+vec4 tf_ewa_stochastic(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_trilinear_stochastic(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+vec4 tf_aniso_stochastic(isampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic(itexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic(usampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic(utexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_bilinear_stochastic(isampler2D tex, vec2 uv, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic(itexture2D tex, vec2 uv, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic(usampler2D tex, vec2 uv, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic(utexture2D tex, vec2 uv, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_level(isampler2D tex, vec2 uv, int level, int wrapMode, vec3 xi);
+vec4 tf_bilinear_stochastic_level(itexture2D tex, vec2 uv, int level, int wrapMode, vec3 xi);
+vec4 tf_bilinear_stochastic_level(usampler2D tex, vec2 uv, int level, int wrapMode, vec3 xi);
+vec4 tf_bilinear_stochastic_level(utexture2D tex, vec2 uv, int level, int wrapMode, vec3 xi);
+vec4 tf_ewa_stochastic(isampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic(itexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic(usampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic(utexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_trilinear_stochastic(isampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic(itexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic(usampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic(utexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+vec4 tf_aniso_stochastic(sampler2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic(texture2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_hw(sampler2DShadow tex, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_bilinear_stochastic(sampler2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic(texture2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_hw(sampler2DShadow tex, vec2 uv, float dref, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_level(sampler2D tex, vec2 uv, tf_Compare cmp, int level, int wrapMode, vec3 xi);
+vec4 tf_bilinear_stochastic_level(texture2D tex, vec2 uv, tf_Compare cmp, int level, int wrapMode, vec3 xi);
+vec4 tf_ewa_stochastic(sampler2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic(texture2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_hw(sampler2DShadow tex, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_trilinear_stochastic(sampler2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic(texture2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_hw(sampler2DShadow tex, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+vec4 tf_bilinear_stochastic_level(samplerCube tex, vec2 uv, int face, int level, int wrapMode, vec3 xi);
+vec4 tf_bilinear_stochastic_level(textureCube tex, sampler smp, vec2 uv, int face, int level, int wrapMode, vec3 xi);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+vec4 tf_bilinear_stochastic_level(samplerCubeArray tex, vec2 uv, int face, int layer, int level, int wrapMode, vec3 xi);
+vec4 tf_bilinear_stochastic_level(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, int level, int wrapMode, vec3 xi);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+vec4 tf_bilinear_stochastic_level(sampler2D tex, vec2 uv, tf_LatLong latlong, int level, int wrapMode, vec3 xi);
+#endif
+#ifdef TF_SOURCE
+vec4 tf_aniso_stochastic(TF_SOURCE tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_bilinear_stochastic(TF_SOURCE tex, vec2 uv, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_level(TF_SOURCE tex, vec2 uv, int level, int wrapMode, vec3 xi);
+vec4 tf_ewa_stochastic(TF_SOURCE tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_trilinear_stochastic(TF_SOURCE tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec3 xi);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_STOCHASTIC
 #include "detail/instantiate.glsl"
 #undef TFI_FAMILY
