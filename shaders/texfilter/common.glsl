@@ -71,15 +71,68 @@
 #define TF_RESOURCE_LATLONG 256
 #ifndef TF_RESOURCES
 #ifdef __SLANG__
-// Slang's GLSL mode (slangc -allow-glsl) has sampler2D, sampler2DArray (and its Sampler2D), not texture2D,
-// sampler, the integer, shadow or cube types: the kinds it compiles (docs/API.md "Slang").
-#define TF_RESOURCES (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_SAMPLER_2D_ARRAY | TF_RESOURCE_LATLONG)
+// Under Slang (slangc -allow-glsl; docs/API.md "Slang"): sampler2D (its Sampler2D), sampler2DArray, lat-long maps,
+// and Texture2D / Texture2DArray (+ SamplerState for _hw), the GLSL names below standing for them. Its GLSL
+// mode has none of the integer, shadow or cube texture types the other kinds take.
+#define TF_RESOURCES (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_TEXTURE_2D | TF_RESOURCE_SAMPLER_2D_ARRAY | \
+                      TF_RESOURCE_TEXTURE_2D_ARRAY | TF_RESOURCE_LATLONG)
 #else
 #define TF_RESOURCES 511
 #endif
 #endif
 #if (TF_RESOURCES & (2 | 4 | 8 | 16 | 32 | 64 | 128)) != 0
 #extension GL_EXT_samplerless_texture_functions : require
+#endif
+#ifdef __SLANG__
+// Slang's GLSL mode lacks the separate texture and sampler types and their samplerless functions: the GLSL names
+// stand for Slang's types, and access.glsl reads them through these (TFI_SLANG_TEXTURE).
+#define texture2D Texture2D
+#define texture2DArray Texture2DArray
+#define sampler SamplerState
+#define utexture2D Texture2D<uint4>
+#define utexture2DArray Texture2DArray<uint4>
+vec4 tfi_slang_fetch(Texture2D t, ivec2 p, int level) { return t.Load(ivec3(p, level)); }
+vec4 tfi_slang_fetch(Texture2DArray t, ivec3 p, int level) { return t.Load(ivec4(p, level)); }
+ivec3 tfi_slang_size(Texture2D t, int level)
+{
+    uint w, h, levels;
+    t.GetDimensions(uint(level), w, h, levels);
+    return ivec3(int(w), int(h), 1);
+}
+ivec3 tfi_slang_size(Texture2DArray t, int level)
+{
+    uint w, h, layers, levels;
+    t.GetDimensions(uint(level), w, h, layers, levels);
+    return ivec3(int(w), int(h), int(layers));
+}
+int tfi_slang_levels(Texture2D t)
+{
+    uint w, h, levels;
+    t.GetDimensions(0u, w, h, levels);
+    return int(levels);
+}
+int tfi_slang_levels(Texture2DArray t)
+{
+    uint w, h, layers, levels;
+    t.GetDimensions(0u, w, h, layers, levels);
+    return int(levels);
+}
+uvec4 tfi_slang_fetch(Texture2D<uint4> t, ivec2 p, int level) { return t.Load(ivec3(p, level)); }
+uvec4 tfi_slang_fetch(Texture2DArray<uint4> t, ivec3 p, int level) { return t.Load(ivec4(p, level)); }
+ivec3 tfi_slang_size(Texture2D<uint4> t, int level)
+{
+    uint w, h, levels;
+    t.GetDimensions(uint(level), w, h, levels);
+    return ivec3(int(w), int(h), 1);
+}
+ivec3 tfi_slang_size(Texture2DArray<uint4> t, int level)
+{
+    uint w, h, layers, levels;
+    t.GetDimensions(uint(level), w, h, layers, levels);
+    return ivec3(int(w), int(h), int(layers));
+}
+vec4 tfi_slang_lookup(Texture2D t, SamplerState s, vec2 uv, float lod) { return t.SampleLevel(s, uv, lod); }
+vec4 tfi_slang_lookup(Texture2DArray t, SamplerState s, vec3 uvLayer, float lod) { return t.SampleLevel(s, uvLayer, lod); }
 #endif
 // TFI_UNROLL before a loop of constant trip count whose body indexes local arrays by the loop counter: unrolled,
 // the indices are constants and the arrays registers; left rolled, a SIMD implementation (lavapipe) indexes

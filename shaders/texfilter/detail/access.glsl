@@ -51,6 +51,9 @@
 // The previous kind's macros (none before the first kind; #undef of an undefined name is legal, but Slang warns).
 #ifdef TFI_T
 #undef TFI_T
+#undef TFI_SLANG_TEXTURE
+#undef TFI_TEXEL_FETCH
+#undef TFI_TEXTURE_SIZE
 #undef TFI_A
 #undef TFI_X
 #undef TFI_XA
@@ -78,6 +81,19 @@
 #undef TFI_SAT_LOW
 #undef TFI_SAT_HIGH
 #undef TFI_SAT_SIZE
+#endif
+
+// Slang's GLSL mode has no samplerless texelFetch / textureSize / textureQueryLevels and no sampler2D(tex, smp):
+// there the separate-texture kinds (texture2D = Texture2D, sampler = SamplerState: common.glsl) read through
+// common.glsl's tfi_slang_* wrappers of the texture's own methods.
+#if defined(__SLANG__) && (TFI_KIND == 2 || TFI_KIND == 3 || TFI_KIND == 5 || TFI_KIND == 6)
+#define TFI_SLANG_TEXTURE 1
+#define TFI_TEXEL_FETCH tfi_slang_fetch
+#define TFI_TEXTURE_SIZE tfi_slang_size
+#else
+#define TFI_SLANG_TEXTURE 0
+#define TFI_TEXEL_FETCH texelFetch
+#define TFI_TEXTURE_SIZE textureSize
 #endif
 
 #if TFI_KIND < 1 || TFI_KIND > 20
@@ -160,8 +176,13 @@
 #define TFI_LEVELS tf_source_levels(tex)
 #define TFI_LEVEL_SIZE(l) tf_source_size(tex, l)
 #else
+#if TFI_SLANG_TEXTURE
+#define TFI_SIZE0 tfi_slang_size(TF_NONUNIFORM(tex), 0).xy
+#define TFI_LEVELS tfi_slang_levels(TF_NONUNIFORM(tex))
+#else
 #define TFI_SIZE0 textureSize(TF_NONUNIFORM(tex), 0).xy
 #define TFI_LEVELS textureQueryLevels(TF_NONUNIFORM(tex))
+#endif
 // Derived from level 0 on purpose: textureSize() with a level that differs across a SIMD batch returned the
 // wrong lane's size on lavapipe (Mesa 22.3).
 #define TFI_LEVEL_SIZE(l) max(TFI_SIZE0 >> (l), ivec2(1))
@@ -170,7 +191,12 @@
 // A texel. Arrays clamp the layer as Vulkan clamps a sampled array layer (to [0, layers − 1]): texelFetch
 // of a layer outside the image is undefined. No texelFetch on a shadow sampler (13, 14): a stand-in that no
 // entry point of theirs reaches.
-#if TFI_KIND >= 4 && TFI_KIND <= 6
+#if TFI_SLANG_TEXTURE && (TFI_KIND == 5 || TFI_KIND == 6)
+#define TFI_FETCH(p, l) \
+    tfi_slang_fetch(TF_NONUNIFORM(tex), ivec3(p, clamp(layer, 0, tfi_slang_size(TF_NONUNIFORM(tex), 0).z - 1)), l)
+#elif TFI_SLANG_TEXTURE
+#define TFI_FETCH(p, l) tfi_slang_fetch(TF_NONUNIFORM(tex), p, l)
+#elif TFI_KIND >= 4 && TFI_KIND <= 6
 #define TFI_FETCH(p, l) \
     texelFetch(TF_NONUNIFORM(tex), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(tex), 0).z - 1)), l)
 #elif TFI_KIND >= 7 && TFI_KIND <= 10
@@ -204,10 +230,14 @@
 // entry point of theirs reaches (their `hardware` flag is always false).
 #if TFI_KIND == 1
 #define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), uv, l)
+#elif TFI_KIND == 3 && TFI_SLANG_TEXTURE
+#define TFI_LOOKUP(uv, l) tfi_slang_lookup(TF_NONUNIFORM(tex), smp, uv, l)
 #elif TFI_KIND == 3
 #define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(sampler2D(tex, smp)), uv, l)
 #elif TFI_KIND == 4
 #define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), vec3(uv, float(layer)), l)
+#elif TFI_KIND == 6 && TFI_SLANG_TEXTURE
+#define TFI_LOOKUP(uv, l) tfi_slang_lookup(TF_NONUNIFORM(tex), smp, vec3(uv, float(layer)), l)
 #elif TFI_KIND == 6
 #define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(sampler2DArray(tex, smp)), vec3(uv, float(layer)), l)
 #elif TFI_KIND == 13
@@ -259,18 +289,18 @@
 #define TFI_SAT_T utexture2DArray satLow, utexture2DArray satHigh
 #endif
 #define TFI_SAT_A satLow, satHigh
-#define TFI_SAT_SIZE textureSize(TF_NONUNIFORM(satLow), 0).xy
+#define TFI_SAT_SIZE TFI_TEXTURE_SIZE(TF_NONUNIFORM(satLow), 0).xy
 #if TFI_KIND == 1 || TFI_KIND == 2
 #define TFI_SAT_X
 #define TFI_SAT_XA
-#define TFI_SAT_LOW(p) texelFetch(TF_NONUNIFORM(satLow), p, 0)
-#define TFI_SAT_HIGH(p) texelFetch(TF_NONUNIFORM(satHigh), p, 0)
+#define TFI_SAT_LOW(p) TFI_TEXEL_FETCH(TF_NONUNIFORM(satLow), p, 0)
+#define TFI_SAT_HIGH(p) TFI_TEXEL_FETCH(TF_NONUNIFORM(satHigh), p, 0)
 #else
 #define TFI_SAT_X , int layer
 #define TFI_SAT_XA , layer
 #define TFI_SAT_LOW(p) \
-    texelFetch(TF_NONUNIFORM(satLow), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(satLow), 0).z - 1)), 0)
+    TFI_TEXEL_FETCH(TF_NONUNIFORM(satLow), ivec3(p, clamp(layer, 0, TFI_TEXTURE_SIZE(TF_NONUNIFORM(satLow), 0).z - 1)), 0)
 #define TFI_SAT_HIGH(p) \
-    texelFetch(TF_NONUNIFORM(satHigh), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(satHigh), 0).z - 1)), 0)
+    TFI_TEXEL_FETCH(TF_NONUNIFORM(satHigh), ivec3(p, clamp(layer, 0, TFI_TEXTURE_SIZE(TF_NONUNIFORM(satHigh), 0).z - 1)), 0)
 #endif
 #endif

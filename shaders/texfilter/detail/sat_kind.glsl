@@ -34,7 +34,9 @@ vec4 tfi_sat_box(TFI_SAT_T, vec2 lo, vec2 hi TFI_SAT_X, ivec2 size, int wrapMode
         crossesY = crossesY || ay[k].b != 0;
     }
     int turns = 1 + (crossesX ? 1 : 0) + (crossesY ? 1 : 0) + (crossesX && crossesY ? 1 : 0);
-    tfi_SatInt e[16]; // E at corner (px[k], py[l]): e[4l + k]
+    const tfi_SatInt zero = tfi_SatInt(uvec4(0u), uvec4(0u)); // initialisers: every entry is written before it is read,
+    tfi_SatInt e[16] = tfi_SatInt[16](zero, zero, zero, zero, zero, zero, zero, zero, zero, zero, zero, zero, zero,
+                                      zero, zero, zero); // which Slang cannot see. E at corner (px[k], py[l]): e[4l + k]
     int turn = 0;
     do {
         // The turn's term: 0 S(rx, ry), 1 S(rx, n) (by), 2 S(n, ry) (bx), 3 S(n, n); a box crossing one axis only
@@ -50,7 +52,7 @@ vec4 tfi_sat_box(TFI_SAT_T, vec2 lo, vec2 hi TFI_SAT_X, ivec2 size, int wrapMode
         }
     } while (++turn < turns);
     vec4 sum = vec4(0.0);
-    tfi_SatInt previous[3]; // x differences E(px[k+1], y) − E(px[k], y) of the previous corner row
+    tfi_SatInt previous[3] = tfi_SatInt[3](zero, zero, zero); // x differences E(px[k+1], y) − E(px[k], y) of the previous corner row
     // Unrolled (common.glsl TFI_UNROLL): e[] and previous[] then live in registers. Rolled, lavapipe indexed them
     // through memory a lane at a time, a third of tf_sat's time (docs/BENCHMARKS.md); +270 SPIR-V instructions.
     TFI_UNROLL for (int l = 0; l < 4; ++l) {
