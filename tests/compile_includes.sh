@@ -22,6 +22,9 @@
 #   - texfilter.glsl with every overridable define set before including (TF_COUNT_FETCHES,
 #     TF_COUNT_HW_LOOKUPS, TF_EWA_MAX_TEXELS, TF_ANISO_RATIO_SLACK, TF_MAGNIFY; TF_COMPUTE_QUADS in compute), 460,
 #     all three stages.
+# Each public include's layout is checked too (check_layout): its guard, line 1, relative includes, and its
+# header block as a contract (check_header_contract: the labels Use, Options, Needs, Cost, Degenerate input,
+# Example in that order, no dates, dB, issue numbers or driver names).
 # Prints one line per compile; exits non-zero if any fails.
 set -euo pipefail
 
