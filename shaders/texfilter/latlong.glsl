@@ -10,8 +10,8 @@
 //          and the 2D families' other forms with the 2D name + _latlong, as cube.glsl lists them (nearest,
 //          bilinear, bspline, catmull_rom, nearest_mip, bilinear_mip, the _hw forms, the stochastic forms with
 //          vec3 xi last). tf_LatLongLookup tf_latlong_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy): the uv and
-//          uv gradients. The 2D families also take (sampler2D tex, vec2 uv, tf_LatLong(0), ...): a lat-long map
-//          filtered in uv. No TF_SOURCE form. The prototype list below.
+//          uv gradients. No TF_SOURCE form. The prototype list below. The 2D families also take
+//          (sampler2D tex, vec2 uv, tf_LatLong latlong, ...): a lat-long map filtered in uv (their files' lists).
 // Math:    +y up: u = ½ + atan(d.x, −d.z)/2π, v = acos(d.y/|d|)/π (computed as atan(ρ, d.y)/π); the gradients
 //          are the mapping's Jacobian times the direction derivatives (never a difference of uv: no seam at
 //          u = 0/1); then the 2D family of the same name, columns repeating and rows past a pole read from the
