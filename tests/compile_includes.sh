@@ -22,6 +22,9 @@
 #   - texfilter.glsl with every overridable define set before including (TF_COUNT_FETCHES,
 #     TF_COUNT_HW_LOOKUPS, TF_EWA_MAX_TEXELS, TF_ANISO_RATIO_SLACK, TF_MAGNIFY; TF_COMPUTE_QUADS in compute), 460,
 #     all three stages.
+# Each public include's layout is checked too (check_layout): its guard, line 1, relative includes, and its
+# header block as a contract (check_header_contract: the labels Use, Options, Needs, Cost, Degenerate input,
+# Example in that order, no dates, dB, issue numbers or driver names).
 # Prints one line per compile; exits non-zero if any fails.
 set -euo pipefail
 
@@ -200,11 +203,46 @@ check_layout() {
         printf 'FAIL  %-17s %s\n' "header" "$name.glsl: line 1 is not '// texfilter/$name.glsl — what it does'"
         failures=$((failures + 1))
     fi
+    check_header_contract "$file" "$name"
     if grep -n '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]\(texfilter/\|\.\./\|/\)' "$file"; then
         printf 'FAIL  %-17s %s\n' "relative" "$name.glsl: include dependencies by bare name (\"common.glsl\")"
         failures=$((failures + 1))
     else
         printf 'ok    %-17s %s\n' "relative" "$name.glsl"
+    fi
+}
+
+# The header block (the leading `//` lines) is the include's contract: the labels below, in this order, each
+# opening a line ("// Use:"; a file without such a concern writes "none" after the label), and no lab notes
+# (dates, dB, issue numbers, driver or GPU names, error figures), which belong in docs/DESIGN.md.
+header_labels=("Use:" "Options:" "Needs:" "Cost:" "Degenerate input:" "Example:")
+header_banned='20[0-9][0-9]-[0-9][0-9]|\<dB\>|[Ii]ssue [0-9]+|lavapipe|llvmpipe|Mesa|NVIDIA|H100|H200|RMSE|PSNR'
+check_header_contract() {
+    local file=$1 name=$2 header label line previous=0 problems=()
+    header=$(awk '/^\/\// { print; next } { exit }' "$file")
+    for label in "${header_labels[@]}"; do
+        line=$(grep -n -m 1 "^// $label" <<<"$header" | cut -d: -f1 || true)
+        if [[ -z $line ]]; then
+            problems+=("no '// $label' line")
+        elif ((line < previous)); then
+            problems+=("'$label' comes before the label it should follow")
+        else
+            previous=$line
+        fi
+    done
+    local banned
+    banned=$(grep -n -o -E "$header_banned" <<<"$header" | tr '\n' ' ' || true)
+    if [[ -n $banned ]]; then
+        problems+=("lab notes in the header (docs/DESIGN.md holds them): $banned")
+    fi
+    if ((${#problems[@]} == 0)); then
+        printf 'ok    %-17s %s\n' "contract" "$name.glsl header: ${header_labels[*]}"
+    else
+        local problem
+        for problem in "${problems[@]}"; do
+            printf 'FAIL  %-17s %s\n' "contract" "$name.glsl header: $problem"
+        done
+        failures=$((failures + 1))
     fi
 }
 

@@ -1,46 +1,43 @@
 // texfilter/bicubic.glsl — bicubic magnification: the cubic B-spline and Catmull-Rom reconstructions of one
-// level, from 16 texelFetch reads or from a few hardware bilinear taps, and the level-0 reconstruction that
-// trilinear, aniso and ewa use when TF_MAGNIFY asks for one.
+// level, from 16 texelFetch reads or a few hardware bilinear taps; also TF_MAGNIFY's level-0 reconstruction.
 //
-// Use:     vec4 tf_bspline(sampler2D tex, vec2 uv, tf_Sampler s);        // level 0, 16 texel fetches
-//          vec4 tf_catmull_rom(sampler2D tex, vec2 uv, tf_Sampler s);    // level 0, 16 texel fetches
-//          vec4 tf_bspline_hw(sampler2D tex, vec2 uv, tf_Sampler s);     // level 0, 4 bilinear taps
-//          vec4 tf_catmull_rom_hw(sampler2D tex, vec2 uv, tf_Sampler s); // level 0, 9 bilinear taps
+// Use:     vec4 tf_bspline(sampler2D tex, vec2 uv, tf_Sampler s);        // level 0
+//          vec4 tf_catmull_rom(sampler2D tex, vec2 uv, tf_Sampler s);    // level 0
+//          vec4 tf_bspline_hw(sampler2D tex, vec2 uv, tf_Sampler s);     // level 0, hardware taps
+//          vec4 tf_catmull_rom_hw(sampler2D tex, vec2 uv, tf_Sampler s); // level 0, hardware taps
 //          vec4 tf_cubic_level(sampler2D tex, vec2 uv, int level, int wrapMode, int kernel);    // any level
 //          vec4 tf_cubic_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, int kernel); // any level
-//          kernel: TF_RECONSTRUCT_BSPLINE, TF_RECONSTRUCT_CATMULL_ROM or TF_RECONSTRUCT_BILINEAR (then the
-//          bilinear lookup of bilinear.glsl / one tap). Every 2D resource kind, as bilinear.glsl lists them
-//          (manual: texture2D, u/isampler2D, arrays with `int layer`, depth with `tf_Compare cmp`; _hw: sampler2D,
-//          texture2D + sampler, arrays, sampler2DShadow / texture2D + samplerShadow with `float dref`).
-// Math:    separable, on the level's texel grid (DESIGN.md §3): x = u·w_l − ½, i0 = floor(x), t = x − i0; texels
-//          i0−1 .. i0+2 weighted by the kernel k at distances 1+t, t, 1−t, 2−t, per axis.
-//          B-spline: k(d) = (4 − 6d² + 3|d|³)/6 for |d| < 1, (2 − |d|)³/6 for 1 <= |d| < 2. C², positive,
-//          does not interpolate (a texel's own value is smoothed with its neighbours', variance 1/3 texel²).
-//          Catmull-Rom (Keys, a = −½): k(d) = 1.5|d|³ − 2.5d² + 1 for |d| < 1, −0.5|d|³ + 2.5d² − 4|d| + 2 for
-//          1 <= |d| < 2. C¹, interpolates, reproduces quadratics; negative lobes: results may leave the texels'
-//          range by up to ~1/8 of a step's height (ringing), as the kernel defines.
-// Hardware taps (_hw, needs a LINEAR sampler with the wrap mode s.wrap bound with the texture): texels with
-//          weights of one sign merge into one bilinear tap placed between them by their weight ratio.
-//          B-spline: 2x2 taps (all weights positive; Sigg and Hadwiger's form). Catmull-Rom: 3x3 taps, the
-//          middle two texels of each axis merged (both weights >= 0), the outer ones read at their centres:
-//          exact, where the common 2x2 form is an approximation. The sampler rounds each tap's position to
-//          subTexelPrecisionBits (often 8): weights then differ from the manual form's by up to 2^-bits a tap.
-// Magnification in the MIP filters (TF_MAGNIFY, common.glsl): trilinear, aniso's probes and ewa reconstruct
-//          level 0 with TF_MAGNIFY's kernel instead of bilinear: trilinear and each probe blend
-//          (1 − f)·cubic(level 0) + f·bilinear(level 1) for λ in [0, 1) and read the cubic alone for λ <= 0;
-//          ewa (whose own Gaussian reconstructs every level) blends towards the cubic by the same share,
-//          1 − clamp(λ, 0, 1) with λ trilinear's LOD. Level 0's share vanishes at λ = 1: no seam. Coarser
-//          levels stay bilinear: they are prefiltered, so the cubic's sharpness buys nothing there.
-// Options: s.wrap. The public forms read level 0 only (magnification filters: under minification they alias
-//          as bilinear does; use them with TF_MAGNIFY in trilinear, aniso or ewa for a MIP-mapped result).
-// Needs:   tex: any sampler2D (texelFetch), or bound with a linear sampler for _hw.
-// Cost:    manual 16 texel fetches; _hw B-spline 4 bilinear taps, Catmull-Rom 9.
+//          Every resource kind (docs/API.md "Resources") has the same overloads, the texture replaced (manual:
+//          texture2D, u/isampler2D, arrays + `int layer`, depth + `tf_Compare cmp`; _hw: texture2D + sampler,
+//          arrays, shadow samplers + `float dref`), and a TF_SOURCE texel source (common.glsl) the manual ones.
+//          The prototype list below.
+// Math:    per axis on the level's grid: x = u·w_l − ½, i0 = floor(x), t = x − i0; texels i0−1 .. i0+2 weighted
+//          by k(1+t), k(t), k(1−t), k(2−t). B-spline: k(d) = (4 − 6d² + 3|d|³)/6 for |d| < 1, (2 − |d|)³/6 for
+//          |d| < 2 (C², positive, smooths: does not interpolate). Catmull-Rom (Keys, a = −½): 1.5|d|³ − 2.5d² + 1
+//          for |d| < 1, −0.5|d|³ + 2.5d² − 4|d| + 2 for |d| < 2 (C¹, interpolates; negative lobes ring: results
+//          may leave the texels' range by up to ~1/8 of a step).
+// Options: s.wrap; kernel TF_RECONSTRUCT_BSPLINE, TF_RECONSTRUCT_CATMULL_ROM or TF_RECONSTRUCT_BILINEAR (the
+//          bilinear lookup). TF_MAGNIFY (common.glsl) selects one of these kernels for level 0 in trilinear,
+//          aniso and ewa. The level-0 forms are magnification filters: under minification they alias as
+//          bilinear does.
+// Needs:   manual: any sampler2D (texelFetch). _hw: a LINEAR sampler with the wrap mode s.wrap bound with the
+//          texture; taps are rounded to its subTexelPrecisionBits (weights then differ from the manual form's
+//          by up to 2^-bits a tap).
+// Cost:    manual 16 texel fetches; _hw B-spline 4 hardware lookups, Catmull-Rom 9.
 // Degenerate input: non-finite uv gives vec4(0); huge uv is moved by whole periods first (tf_reduce_uv).
 // Example: vec4 c = tf_catmull_rom(tex, uv, tf_sampler(TF_WRAP_CLAMP));
 //          #define TF_MAGNIFY TF_RECONSTRUCT_BSPLINE   // before the first include: smooth magnification
-//          vec4 d = tf_trilinear(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT));
 #ifndef TF_BICUBIC_GLSL
 #define TF_BICUBIC_GLSL
+
+// Hardware taps (_hw): texels whose weights have one sign merge into one bilinear tap placed between them by
+// their weight ratio. B-spline: 2x2 taps (all weights positive; Sigg and Hadwiger's form). Catmull-Rom: 3x3
+// taps, the middle two texels of each axis merged (both weights >= 0), the outer ones read at their centres:
+// exact, where the common 2x2 form is an approximation.
+// TF_MAGNIFY in the MIP filters: trilinear and each aniso probe blend (1 − f)·cubic(level 0) + f·bilinear(level 1)
+// for λ in [0, 1) and read the cubic alone for λ <= 0; ewa (whose own Gaussian reconstructs every level) blends
+// towards the cubic by the same share, 1 − clamp(λ, 0, 1) with λ trilinear's LOD. Level 0's share vanishes at
+// λ = 1: no seam. Coarser levels stay bilinear: they are prefiltered, so the cubic's sharpness buys nothing.
 
 #include "common.glsl"
 #include "bilinear.glsl"

@@ -1,39 +1,30 @@
-// texfilter/brilinear.glsl — "brilinear": trilinear only in a band around each MIP level transition,
-// a single bilinear lookup (4 fetches) everywhere else.
+// texfilter/brilinear.glsl — "brilinear": trilinear only in a band around each MIP level transition, one
+// bilinear lookup everywhere else.
 //
 // Use:     vec4  tf_brilinear(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
 //          float tf_brilinear_weight(float f, float band); // the coarser level's weight for LOD fraction f
-//          Every resource kind (access.glsl, docs/API.md "Resources"): the same call with texture2D,
-//          u/isampler2D or u/itexture2D (integer texels as float), sampler2DArray or texture2DArray plus
-//          `int layer` right after uv, or a depth sampler2D/texture2D plus `tf_Compare cmp` right after uv
-//          (percentage-closer: each texel compared before it is filtered), e.g.
-//          tf_brilinear(usampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band).
-// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as in lod.glsl. No defines.
-//          band B in [0, 1] (above 1: 1; NaN or below 0: 0): the width, in LOD units, of the trilinear
-//          band centred on each transition (LOD fraction f = 1/2 between levels lo = floor(λ) and lo + 1).
-//          The blend weight of level lo + 1 is
-//              w = clamp((f − (1 − B)/2) / B, 0, 1),
-//          continuous in λ for B > 0: 0 for f <= (1 − B)/2, a ramp of slope 1/B across the band, 1 for
-//          f >= (1 + B)/2.
-//          B = 1: w = f exactly, i.e. tf_trilinear, bit for bit.
-//          B = 0: w = step(f > 1/2), the nearest level with ties (f = 1/2) to the finer one: the level
-//                 ceil(λ + 1/2) − 1 of Vulkan mipmapMode NEAREST, i.e. tf_bilinear_mip. (f > 1/2 is exact,
-//                 as tf_mip_level_nearest's floor and comparison (lod.glsl): the same level for every λ,
-//                 1.5 + 2^-23 included, where a float λ + 1/2 would round to the finer one.)
-//          Suggested band: 0.25 (tf::SamplerOptions's default). On a smooth LOD ramp a quarter of the
-//          LOD range pays 8 fetches and the rest 4, so 5 fetches a lookup on average (trilinear: 8),
-//          and the level blend stays continuous (no seam, unlike B = 0); outside the band the finer
-//          level is used up to f = 3/8 (at most 2^0.375 = 1.3 texels a pixel: mild under-filtering) and
-//          the coarser from f = 5/8 (slightly blurrier than trilinear).
-// Needs:   tex: any sampler2D with a full MIP chain (texelFetch only).
-// Cost:    4 texel fetches where w is 0 or 1 (outside the band, on a level, or clamped to the last
-//          level), 8 inside the band. The level that weighs 0 is never fetched (plane scene, band 0.25:
-//          4.6 on average, docs/FILTERS.md).
-// Degenerate input: NaN/±Inf gradients give the coarsest level (4 fetches), zero gradients the finest
-//          (lod.glsl); non-finite uv gives vec4(0).
+//          Every resource kind (docs/API.md "Resources": texture2D, u/isampler2D, u/itexture2D, arrays with
+//          `int layer` after uv, depth maps with `tf_Compare cmp` after uv) and a TF_SOURCE texel source
+//          (common.glsl) have the same tf_brilinear overload, the texture replaced: the prototype list below.
+// Math:    λ = tf_lod(...), levels lo = floor(λ) and lo + 1, f = frac(λ); band B; level lo + 1 weighs
+//              w = clamp((f − (1 − B)/2) / B, 0, 1)
+//          (continuous in λ for B > 0). B = 1: w = f, tf_trilinear bit for bit. B = 0: w = step(f > ½), the
+//          level of mipmapMode NEAREST with ties to the finer, tf_bilinear_mip bit for bit.
+// Options: band B in [0, 1] (above 1: 1; NaN or below 0: 0). Suggested 0.25 (tf::SamplerOptions's
+//          default): on a smooth LOD ramp 5 fetches a lookup on average, no seam; the finer level is used up
+//          to f = 3/8 (mild under-filtering), the coarser from f = 5/8. s.wrap, s.lodBias, s.lodMin, s.lodMax
+//          as in lod.glsl. No defines.
+// Needs:   any sampler2D with a full MIP chain (texelFetch only).
+// Cost:    4 texel fetches where w is 0 or 1 (outside the band, on a level, clamped to the last level), 8
+//          inside the band: the level that weighs 0 is never fetched.
+// Degenerate input: non-finite uv gives vec4(0); huge uv is moved by whole periods first (tf_reduce_uv);
+//          NaN/±Inf gradients give the coarsest level (4 fetches), zero gradients the finest.
 // Example: vec4 c = tf_brilinear(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT), 0.25);
 #ifndef TF_BRILINEAR_GLSL
 #define TF_BRILINEAR_GLSL
+
+// B = 0 compares f > ½ exactly, as tf_mip_level_nearest's floor and comparison (lod.glsl) do: the same level
+// for every λ, 1.5 + 2^-23 included, where a float λ + ½ would round to the finer one.
 
 #include "bilinear.glsl"
 #include "lod.glsl"

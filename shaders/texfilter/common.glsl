@@ -1,57 +1,55 @@
-// texfilter/common.glsl — shared pieces of every texfilter include: the sampler options (tf_Sampler),
-// wrap modes, a wrapped texel fetch, the cost hooks, the resource kinds (TF_RESOURCES), the depth comparison
-// of the shadow kinds (tf_Compare) and the bindless hook (TF_NONUNIFORM). Pulls in version.glsl.
+// texfilter/common.glsl — what every texfilter include shares: the sampler options (tf_Sampler), wrap modes,
+// a wrapped texel fetch, the cost hooks, the resource kinds (TF_RESOURCES), the user's texel source
+// (TF_SOURCE), the depth comparison (tf_Compare) and the bindless hook (TF_NONUNIFORM). Pulls in version.glsl.
 //
 // Use:     #include "texfilter/common.glsl"   (every other include pulls it in itself)
 //          tf_Sampler tf_sampler(int wrap);    // wrap, lodBias 0, lodMin 0, lodMax 1000 (all levels)
 //          tf_Sampler(int wrap, float lodBias, float lodMin, float lodMax) // the struct; needs lodMin <= lodMax
-//          tf_Compare tf_compare(int op, float dref); // shadow kinds: a texel passes (1) when `dref op D`
+//          tf_Compare tf_compare(int op, float dref); // depth kinds: a texel D passes (1) when `dref op D`
 //          vec4  tf_fetch(sampler2D tex, ivec2 texel, int level, int wrapMode); // wrapped texelFetch
-//          int   tf_wrap(float i, int size, int wrapMode); // integer-valued texel coordinate → [0, size)
 //          ivec2 tf_level_size(sampler2D tex, int level);  // max(1, textureSize(tex, 0) >> level)
+//          int   tf_wrap(float i, int size, int wrapMode); // integer-valued texel coordinate → [0, size)
 //          bool  tf_finite(vec2 v);                         // neither NaN nor ±Inf
 //          vec2  tf_reduce_uv(vec2 uv, int wrapMode);       // uv by whole periods into [-1, 1] (clamp: [-1, 2])
-//          tf_fetch and tf_level_size exist for every resource kind (access.glsl): e.g.
-//          tf_fetch(sampler2DArray tex, ivec2 texel, int layer, int level, int wrapMode),
-//          tf_fetch(sampler2D depth, ivec2 texel, tf_Compare cmp, int level, int wrapMode) (0 or 1),
-//          tf_level_size(texture2D tex, int level).
-// Constants: TF_WRAP_REPEAT, TF_WRAP_CLAMP (clamp to edge), TF_WRAP_MIRROR (mirrored repeat; any other
-//          value acts as repeat). TF_MAX_TEXEL_COORD = 2^24: texel coordinates are clamped to ± that.
-//          TF_TAPS_MANUAL, TF_TAPS_HARDWARE: names for a caller's run-time choice of tf_X or tf_X_hw.
-//          TF_COMPARE_NEVER 0, _LESS 1, _EQUAL 2, _LESS_OR_EQUAL 3, _GREATER 4, _NOT_EQUAL 5, _GREATER_OR_EQUAL 6,
-//          _ALWAYS 7: VkCompareOp's values.
+//          tf_fetch and tf_level_size have an overload for every resource kind and a TF_SOURCE texel source
+//          (the prototype list below), e.g. tf_fetch(sampler2DArray tex, ivec2 texel, int layer, int level,
+//          int wrapMode), tf_fetch(sampler2D depth, ivec2 texel, tf_Compare cmp, int level, int wrapMode) (0/1).
+// Constants: TF_WRAP_REPEAT, TF_WRAP_CLAMP (clamp to edge), TF_WRAP_MIRROR (mirrored repeat; any other value
+//          acts as repeat). TF_MAX_TEXEL_COORD = 2^24. TF_TAPS_MANUAL, TF_TAPS_HARDWARE: names for a run-time
+//          choice of tf_X or tf_X_hw. TF_COMPARE_NEVER 0, _LESS 1, _EQUAL 2, _LESS_OR_EQUAL 3, _GREATER 4,
+//          _NOT_EQUAL 5, _GREATER_OR_EQUAL 6, _ALWAYS 7: VkCompareOp's values.
 // Options: define before the first include:
 //          TF_COUNT_FETCHES(n)     invoked with each number of texelFetch reads (default: nothing);
 //          TF_COUNT_HW_LOOKUPS(n)  invoked with each number of hardware filtered lookups (default: nothing);
 //          TF_NONUNIFORM           bindless: `#define TF_NONUNIFORM nonuniformEXT` (and enable
-//                                  GL_EXT_nonuniform_qualifier) when the texture you pass is indexed
-//                                  divergently, e.g. tf_trilinear(texs[nonuniformEXT(i)], ...): every image
-//                                  instruction inside the includes then takes a NonUniform operand. Default: none.
+//                                  GL_EXT_nonuniform_qualifier) when the texture is indexed divergently,
+//                                  e.g. tf_trilinear(texs[nonuniformEXT(i)], ...); default: nothing.
 //          TF_MAGNIFY              how trilinear, aniso and ewa reconstruct level 0 (bicubic.glsl):
 //                                  TF_RECONSTRUCT_BILINEAR (default), _BSPLINE or _CATMULL_ROM; an int
 //                                  expression (e.g. a specialization constant) chooses at run time.
-//          TF_RESOURCES            the resource kinds to instantiate (compile time; default: all), a mask of
-//                                  TF_RESOURCE_SAMPLER_2D 1 (sampler2D), TF_RESOURCE_TEXTURE_2D 2 (texture2D, and
-//                                  texture2D + sampler for _hw), TF_RESOURCE_SAMPLER_2D_ARRAY 4, TF_RESOURCE_
-//                                  TEXTURE_2D_ARRAY 8, TF_RESOURCE_INTEGER 16 (u/isampler2D, u/itexture2D),
-//                                  TF_RESOURCE_SHADOW 32 (percentage-closer filtering; sampler2DShadow for _hw),
-//                                  TF_RESOURCE_CUBE 64 (samplerCube, textureCube + sampler: cube.glsl),
-//                                  TF_RESOURCE_CUBE_ARRAY 128 (samplerCubeArray, textureCubeArray + sampler),
-//                                  TF_RESOURCE_LATLONG 256 (sampler2D lat-long maps: latlong.glsl).
-//                                  A family called with a kind left out fails to compile ("no matching function").
-//          TF_SOURCE               your own texel source (an atlas tile, a virtual texture's page table, ...):
-//                                  `#define TF_SOURCE T` (any type: a struct, an int id) and declare before the
-//                                  include   ivec2 tf_source_size(T src, int level);  // level's size in texels
-//                                            int   tf_source_levels(T src);           // its MIP level count
-//                                            vec4  tf_source_fetch(T src, ivec2 texel, int level);
-//                                  (texel already wrapped into [0, size) by s.wrap). Every manual 2D family then
-//                                  takes `T src` where it takes a sampler2D; no _hw, SAT or environment forms
-//                                  (they need a sampler). TF_RESOURCES 0 leaves only T's. docs/API.md "Texel sources".
-// Needs:   nothing bound: every function takes the texture. Texel space (DESIGN.md §3): u = s·w_l with
-//          w_l = max(1, w >> l); wraps act on integer texel coordinates before texelFetch, so the sampler's
-//          own filter and address modes are not used and any sampler2D works (e.g. RGBA32F). The includes
-//          enable GL_EXT_samplerless_texture_functions (texelFetch on texture2D) where a kind needs it.
+//          TF_RESOURCES            the resource kinds to instantiate, a mask (default: all; under Slang the
+//                                  kinds it compiles): TF_RESOURCE_SAMPLER_2D 1, TF_RESOURCE_TEXTURE_2D 2
+//                                  (texture2D; + sampler for _hw), TF_RESOURCE_SAMPLER_2D_ARRAY 4,
+//                                  TF_RESOURCE_TEXTURE_2D_ARRAY 8, TF_RESOURCE_INTEGER 16 (u/isampler2D,
+//                                  u/itexture2D), TF_RESOURCE_SHADOW 32 (depth maps; sampler2DShadow for _hw),
+//                                  TF_RESOURCE_CUBE 64, TF_RESOURCE_CUBE_ARRAY 128 (cube.glsl),
+//                                  TF_RESOURCE_LATLONG 256 (latlong.glsl). A kind left out: "no matching function".
+//          TF_SOURCE               your own texel source (an atlas tile, a virtual texture, ...): `#define
+//                                  TF_SOURCE T` (any type) and declare, before the include,
+//                                      ivec2 tf_source_size(T src, int level);  // the level's size in texels
+//                                      int   tf_source_levels(T src);           // its MIP level count
+//                                      vec4  tf_source_fetch(T src, ivec2 texel, int level);
+//                                  (texel already wrapped into [0, size) by the wrap mode). Every manual 2D
+//                                  family then takes `T src` where it takes a sampler2D; no _hw, SAT or
+//                                  environment forms. TF_RESOURCES 0 leaves only T's. docs/API.md "Texel sources".
+// Needs:   nothing bound: every function takes the texture. Texel space (DESIGN.md §3): u = s·w_l,
+//          w_l = max(1, w >> l); wraps act on integer texel coordinates before texelFetch, so the sampler's own
+//          filter and address modes are unused and any sampler2D works. The includes enable
+//          GL_EXT_samplerless_texture_functions where a kind needs it.
 // Cost:    tf_fetch: 1 texel fetch; the others none.
+// Degenerate input: texel coordinates are clamped to ±TF_MAX_TEXEL_COORD before wrapping (pass finite ones);
+//          tf_fetch's level must be in [0, levels − 1]; a NaN depth or dref passes only _ALWAYS and _NOT_EQUAL;
+//          tf_reduce_uv's result means nothing for a non-finite uv (the filters return vec4(0) for one first).
 // Example: tf_Sampler s = tf_sampler(TF_WRAP_REPEAT);
 //          vec4 c = tf_fetch(tex, ivec2(-1, 3), 0, s.wrap); // texel (w-1, 3) of level 0
 #ifndef TF_COMMON_GLSL
@@ -227,12 +225,10 @@ float tfi_compare_texel(tf_Compare c, float d)
     return (c.op & bit) != 0 || c.op == TF_COMPARE_ALWAYS || (bit == 0 && c.op == TF_COMPARE_NOT_EQUAL) ? 1.0 : 0.0;
 }
 
-// One return where a branch tests the wrap mode or another argument callers often pass as a constant (the
-// kernel, TF_MAGNIFY, the tap form): assign the result and return it once. glslc -O (shaderc 2023.2, Debian
-// bookworm) wraps a function with an early return in a one-case switch (merge-return); when a constant folds
-// that branch away, its block-merge pass keeps a stale structured-CFG analysis and crashes
-// (StructuredCFGAnalysis::SwitchMergeBlock, fixed in SPIRV-Tools 2023.1). Early returns on run-time
-// conditions (non-finite input) are fine. tests/compile_matrix.py compiles every function that way.
+// One return where a branch tests an argument callers often pass as a constant (wrap mode, kernel, TF_MAGNIFY,
+// the tap form): glslc -O (shaderc 2023.2, SPIRV-Tools before 2023.1) crashes in block merging once a constant
+// folds an early return's branch away. Early returns on run-time conditions (non-finite input) are fine.
+// tests/compile_matrix.py compiles every function that way.
 
 // Texel coordinates past ±2^24 carry no information in float; clamping there keeps int math defined.
 const float TF_MAX_TEXEL_COORD = 16777216.0;

@@ -1,30 +1,27 @@
 // texfilter/latlong.glsl — lat-long (equirectangular) environment lookups by direction: nearest, bilinear,
-// trilinear, aniso and EWA, wrapping at the u = 0/1 seam and across the poles, with the footprint from the
-// Jacobian of the mapping (docs/ENVIRONMENT.md; host/reference/environment.cpp is its CPU twin).
+// bicubic, trilinear, aniso, EWA and the stochastic forms, across the u = 0/1 seam and the poles, with the
+// footprint from the mapping's Jacobian (docs/ENVIRONMENT.md; host/reference/environment.cpp is its CPU twin).
 //
 // Use:     vec4 tf_trilinear_latlong(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
 //          vec4 tf_aniso_latlong(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes,
 //                                int shape);
 //          vec4 tf_ewa_latlong(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha,
 //                              float maxAniso);
-//          also tf_nearest_latlong / tf_bilinear_latlong (tex, dir, s: level 0), tf_nearest_mip_latlong /
-//          tf_bilinear_mip_latlong (tex, dir, dDirdx, dDirdy, s), tf_bspline_latlong / tf_catmull_rom_latlong (tex,
-//          dir, s: level 0 through bicubic.glsl's cubics, 16 texel fetches, across the seam and the poles as every
-//          manual form), tf_aniso_latlong_hw / tf_ewa_latlong_hw / tf_bspline_latlong_hw /
-//          tf_catmull_rom_latlong_hw (hardware taps, 4 for the B-spline and 9 for Catmull-Rom: the sampler
-//          repeats in u and clamps in v, so these do not cross a pole). Stochastic forms (stochastic.glsl, the
-//          caller's vec3 xi appended last): tf_bilinear_stochastic_latlong, tf_trilinear_stochastic_latlong,
-//          tf_aniso_stochastic_latlong, tf_ewa_stochastic_latlong and their _hw forms, the cube's parameters
-//          (cube.glsl). TF_MAGNIFY (common.glsl) applies to
-//          tf_trilinear_latlong, tf_aniso_latlong(_hw) and tf_ewa_latlong(_hw) as to their 2D families.
-//          tf_LatLongLookup tf_latlong_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy): the uv and uv gradients.
-// Math:    +y up: u = ½ + atan(d.x, −d.z)/2π, v = acos(d.y/|d|)/π (computed as atan(ρ, d.y)/π); the gradients are the mapping's Jacobian
-//          times the direction derivatives (never a difference of uv, so no seam at u = 0/1); then the 2D
-//          family of the same name, its texels read with columns repeating and rows past a pole taken from
-//          the other side, half a turn round. s.wrap is ignored.
-// Needs:   a sampler2D (TF_RESOURCE_LATLONG) with a full MIP chain; manual forms read it with texelFetch.
-// Options: s.lodBias, s.lodMin, s.lodMax, each family's own. No defines.
-// Cost:    the 2D family's (trilinear 8 texel fetches, stochastic forms 1, ...), plus two atans and a sqrt.
+//          and the 2D families' other forms with the 2D name + _latlong, as cube.glsl lists them (nearest,
+//          bilinear, bspline, catmull_rom, nearest_mip, bilinear_mip, the _hw forms, the stochastic forms with
+//          vec3 xi last). tf_LatLongLookup tf_latlong_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy): the uv and
+//          uv gradients. No TF_SOURCE form. The prototype list below. The 2D families also take
+//          (sampler2D tex, vec2 uv, tf_LatLong latlong, ...): a lat-long map filtered in uv (their files' lists).
+// Math:    +y up: u = ½ + atan(d.x, −d.z)/2π, v = acos(d.y/|d|)/π (computed as atan(ρ, d.y)/π); the gradients
+//          are the mapping's Jacobian times the direction derivatives (never a difference of uv: no seam at
+//          u = 0/1); then the 2D family of the same name, columns repeating and rows past a pole read from the
+//          other side, half a turn round. _hw taps: the sampler repeats in u and clamps in v, so they do not
+//          cross a pole.
+// Options: s.lodBias, s.lodMin, s.lodMax and each family's own; s.wrap is ignored. TF_MAGNIFY (common.glsl)
+//          applies to tf_trilinear_latlong, tf_aniso_latlong(_hw), tf_ewa_latlong(_hw).
+// Needs:   a sampler2D (TF_RESOURCE_LATLONG) with a full MIP chain; manual forms read it with texelFetch,
+//          _hw forms through its sampler (LINEAR, repeat in u, clamp in v, no bias).
+// Cost:    the 2D family's (trilinear 8 texel fetches, stochastic forms 1, ...) plus two atans and a sqrt.
 // Degenerate input: a zero or non-finite dir gives vec4(0); at a pole itself (d.x = d.z = 0) the u gradient is
 //          infinite: the coarsest level, as for any non-finite footprint.
 // Example: vec4 c = tf_trilinear_latlong(sky, d, dFdxFine(d), dFdyFine(d), tf_sampler(TF_WRAP_REPEAT));

@@ -3,17 +3,18 @@
 // Use:     float tf_lod(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s); // biased, clamped: [0, levels−1]
 //          float tf_lod_unclamped(sampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias); // log2(ρ) + lodBias
 //          int   tf_mip_level_nearest(float lod); // mipmapMode NEAREST: ceil(lod + ½) − 1, ties to the finer
-//          tf_lod and tf_lod_unclamped take every resource kind's texture (access.glsl), without the extras
-//          (a layer or comparison does not change the LOD): tf_lod(texture2DArray tex, dUVdx, dUVdy, s).
+//          tf_lod and tf_lod_unclamped have an overload for every resource kind (docs/API.md "Resources") and
+//          a TF_SOURCE texel source (common.glsl), the texture alone replaced: no layer or comparison (they do
+//          not change the LOD), e.g. tf_lod(texture2DArray tex, dUVdx, dUVdy, s). The prototype list below.
 // Math:    ρ = max(|J e_x|, |J e_y|) with J = [dUVdx dUVdy] in level-0 texels, λ = log2(ρ) + s.lodBias,
-//          clamped to [s.lodMin, s.lodMax] (lodMin <= lodMax, as Vulkan's minLod <= maxLod) and then to
-//          [0, levels − 1], levels = textureQueryLevels(tex).
+//          clamped to [s.lodMin, s.lodMax] (needs lodMin <= lodMax, as Vulkan's minLod <= maxLod), then to
+//          [0, levels − 1].
 // Options: s.lodBias, s.lodMin, s.lodMax. No defines.
-// Needs:   tex: only its size and level count are queried.
+// Needs:   only the texture's size and level count are queried.
 // Cost:    no texel fetch (one log2).
 // Degenerate input: zero gradients give the finest level allowed (λ = −∞ before clamping); NaN or ±Inf
-//          gradients, or ρ past float range, the coarsest (+∞): a defined, blurry answer, never undefined.
-//          A NaN λ (a NaN lodBias) counts as +∞ too, a NaN lodMin or lodMax as no bound (docs/API.md).
+//          gradients, or ρ past float range, the coarsest (λ = +∞). A NaN λ (NaN lodBias) counts as +∞, a NaN
+//          lodMin or lodMax as no bound.
 // Example: int level = tf_mip_level_nearest(tf_lod(tex, dFdxFine(uv), dFdyFine(uv), s));
 #ifndef TF_LOD_GLSL
 #define TF_LOD_GLSL
@@ -63,18 +64,12 @@ int tfi_split_lod(float lod, out float f)
     f = lod - lo;
     return int(lo);
 }
-// TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w), a statement: (1 − w)·LEVEL(lo) + w·LEVEL(lo + 1), formed as
-// mix(LEVEL(lo), LEVEL(lo + 1), w), into the vec4 `result`, for a function-like macro LEVEL(l), the filter's
-// value on level l; a level that weighs 0 is not evaluated (λ on a level or clamped to the last one, or
-// outside brilinear's band). SIMD implementations run both sides of a divergent branch (lavapipe runs every
-// side of every `if`: `w == 0 ? L(lo) : w == 1 ? L(lo + 1) : mix(...)` cost four levels' fetches); a loop is
-// the one construct they leave early, once no lane needs another turn. So: the level that counts (lo, or
-// lo + 1 where w is 1) on the first turn, the coarser one on a second turn only where 0 < w < 1; a batch of
-// lanes that all sit outside brilinear's band, on a level or clamped to the last one pays one level's
-// fetches, any other two (never four). The turn test is at the loop's top, not a do-while's bottom: lavapipe
-// (Mesa 22.3.6) can hand a lane that left a loop early a value from the turns its batch still takes, and with
-// the do-while an optimised tf_ewa_hw returned the ellipse's share as 0 on one-turn lanes. The top test
-// measured exact in every compiler mode; it is a workaround, not a cure (docs/API.md, "Optimisation").
+// TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w), a statement: result = mix(LEVEL(lo), LEVEL(lo + 1), w) for a
+// function-like macro LEVEL(l), the filter's value on level l; a level that weighs 0 is not evaluated. A loop,
+// not a branch: SIMD implementations run every side of an `if` (lavapipe: four levels' fetches for a ternary)
+// but leave a loop once no lane needs another turn, so a batch on one level pays one level's fetches, any
+// other two. The turn test is at the loop's top: with a do-while, lavapipe (Mesa 22.3.6) handed lanes that
+// left early a value from their batch's later turns (a workaround; docs/API.md, "Optimisation").
 #define TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w)                                     \
     {                                                                                    \
         result = vec4(0.0); /* every path assigns it; said once for compilers that check */ \

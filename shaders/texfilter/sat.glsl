@@ -5,25 +5,32 @@
 //                      vec4 offset, vec4 scale);                             // one box
 //          vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy,
 //                               tf_Sampler s, vec4 offset, vec4 scale, int boxes); // K boxes along the major axis
-//          Also with the tables as utexture2D, usampler2DArray or utexture2DArray (the arrays with `int layer`
-//          right after uv: one table pair per layer), e.g. tf_sat(utexture2D satLow, utexture2D satHigh, vec2 uv,
-//          vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale).
-// Needs:   satLow:  usampler2D, RGBA32UI, (W+1) x (H+1): bits 0..31 of each channel's table entry;
-//          satHigh: usampler2D, R32UI, same size: bits 32..39 of R, G, B, A as bytes 0..3;
-//          offset, scale: vec4, per channel the value of quantisation level 0 and the span of levels
-//                   0..65535. All four come from tf::build_sat
-//                   (host/texture/sat.h: SatTable::low, ::high, ::offset, ::scale); upload them as is, one level each, with a
-//                   nearest sampler (integer formats are not filterable; only texelFetch reads them). The
-//                   level-0 texture itself is not needed: W x H is the table's size minus one (W, H ≤
-//                   4096; a table smaller than 2 x 2, i.e. none, gives vec4(0)). No MIP chain.
-// Options: s.wrap selects repeat/clamp/mirror; s.lodBias scales the footprint by exp2(lodBias);
-//          s.lodMin/lodMax are ignored (no MIP levels). boxes: 1..16 (clamped), slices of the footprint.
-//          No defines (TF_COUNT_FETCHES counts the texelFetch calls).
-// Example: layout(binding = 4) uniform usampler2D satLow;   // RGBA32UI, SatTable::low
-//          layout(binding = 5) uniform usampler2D satHigh;  // R32UI, SatTable::high
-//          vec4 c = tf_sat(satLow, satHigh, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT),
+//          The same overloads with the tables as utexture2D, usampler2DArray or utexture2DArray (arrays with
+//          `int layer` right after uv: one table pair a layer): the prototype list below. No TF_SOURCE form.
+// Math:    texel space x = u·W, y = v·H, J = [dUVdx dUVdy]·exp2(lodBias) in texels; the box around (x, y) with
+//          half-extents hx = ½(|J00| + |J01|), hy = ½(|J10| + |J11|) (the bounding box of the pixel's
+//          parallelogram uv + J·(a, b), a, b in [−½, ½]); result = ∫∫box f / area, f the box-reconstructed
+//          texture. Extents are clamped to W x H (a wider footprint averages one texture-sized box: with
+//          repeat one period). tf_sat_assembly cuts the parallelogram along its longer column into K slices
+//          and averages their boxes' means with equal weights; K = 1 is tf_sat exactly.
+// Options: s.wrap (repeat/clamp/mirror); s.lodBias scales the footprint by exp2(lodBias); s.lodMin/lodMax
+//          are ignored (no MIP levels). boxes: 1..16 (clamped). No defines.
+// Needs:   satLow RGBA32UI (bits 0..31 of each channel's entry) and satHigh R32UI (bits 32..39 of R, G, B, A
+//          as bytes 0..3), both (W+1) x (H+1), W, H <= 4096, read with texelFetch only; offset and scale per
+//          channel: all four from tf::build_sat (host/texture/sat.h: SatTable::low, ::high, ::offset, ::scale)
+//          or build_sat.glsl, uploaded as is. No MIP chain, no level-0 texture. Accuracy: within
+//          0.5/65535·scale of the exact mean of the float texels, plus float32 rounding (16-bit quantisation
+//          over each channel's own range; sums exact modulo 2^40).
+// Cost:    32 texel fetches (16 table entries, 2 words each) for a box inside the texture, 64 where it
+//          crosses a border on one axis, 128 on both; tf_sat_assembly K times that. Constant in the footprint.
+// Degenerate input: non-finite uv, or a table smaller than 2 x 2 (none bound), gives vec4(0); NaN/±Inf
+//          gradients give the whole texture's mean; zero gradients the texel under uv (nearest) on that axis;
+//          gradient components are clamped to ±2^24 texels, so huge finite ones never overflow.
+// Example: vec4 c = tf_sat(satLow, satHigh, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT),
 //                          satOffset, satScale); // SatTable::offset, ::scale, e.g. push constants
-//
+#ifndef TF_SAT_GLSL
+#define TF_SAT_GLSL
+
 // Footprint (DESIGN.md §3). Texel space x = u·W, y = v·H; J = [dUVdx dUVdy] in level-0 texels,
 // times exp2(lodBias). tf_sat averages the box-reconstructed texture (texel (i, j) constant on
 // [i, i+1) x [j, j+1)) over the bounding box of the pixel's parallelogram uv + J·(a, b), a, b in [−½, ½]:
@@ -84,15 +91,6 @@
 // slices are translates of one another, so their boxes have the same size and equal weights are the
 // area weights (no slice counts more than another; the overlap of neighbouring boxes is counted in each).
 // K = 1 is tf_sat exactly (same float operations).
-//
-// Cost: 16 table entries inside the texture (2 texelFetch each, low and high word: 32 fetches), 32
-// entries (64 fetches) where the box crosses a border on one axis, 64 (128) where it crosses both (a turn
-// of 16 a term: tfi_sat_box); tf_sat_assembly K times that. Constant in the footprint's size. Before
-// issue 16 a border-crossing box read only the entries it needed (24..64), but SIMD devices that run
-// every side of a branch (lavapipe) read all 64 for every box. Plane scene (docs/FILTERS.md): tf_sat 34.2 on average (max 72),
-// tf_sat_assembly with 4 boxes 132.7 (max 288).
-#ifndef TF_SAT_GLSL
-#define TF_SAT_GLSL
 
 #include "common.glsl"
 

@@ -22,7 +22,7 @@
 //      (taps through the sampler, which must be LINEAR); extras `int face` (+ `int layer`, arrays)
 //   19 sampler2D tex + tf_LatLong: a lat-long map (the texture is kind 1's; the extra only tells the overloads
 //      apart): manual + _hw
-//   20 TF_SOURCE tex: the user's texel source (common.glsl "Texel sources"): tf_source_size, tf_source_levels and
+//   20 TF_SOURCE tex: the user's texel source (docs/API.md "Texel sources"): tf_source_size, tf_source_levels and
 //      tf_source_fetch, declared by the user before the includes, stand for textureSize, textureQueryLevels and
 //      texelFetch; manual only
 // Macros a body may use (parameter names are fixed: tex, smp, layer, cmp, dref):
