@@ -2,6 +2,7 @@
 #include "cli/commands.h"
 #include "cli/sample_resource.h"
 #include "vulkan/backend.h"
+#include "vulkan/sample_resource.h"
 #include "vulkan/texture_format_support.h"
 #include "io/lookups_csv.h"
 #include "io/output_path.h"
@@ -62,6 +63,7 @@ int run_sample(const std::vector<std::string>& argv)
         throw Error("bad value for --filter: ground-truth integrates over a scene's pixels, not around a lookup "
                     "(use render)");
     const ResourceOptions resource = resource_options_from(args);
+    check_resource_options(options, resource); // what the kind cannot run, before any work
     Backend backend = backend_from(args);
     TextureSource source = texture_source_from(args);
     check_format_filter(source.format, options); // integer data and hardware filtering, before any work
