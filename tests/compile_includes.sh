@@ -219,11 +219,16 @@ check() {
 
 shopt -s nullglob
 includes=("$INCLUDE_DIR"/texfilter/*.glsl)
-if [[ ${#includes[@]} -eq 0 ]]; then
-    echo "FAIL: no includes found in $INCLUDE_DIR/texfilter" >&2
+internal_includes=("$INCLUDE_DIR"/texfilter/detail/*.glsl)
+if [[ ${#includes[@]} -eq 0 || ${#internal_includes[@]} -eq 0 ]]; then
+    echo "FAIL: no includes found in $INCLUDE_DIR/texfilter or its detail/" >&2
     exit 1
 fi
-if [[ -n $ONLY && $ONLY != options ]]; then
+if [[ $ONLY == detail ]]; then
+    includes=("${internal_includes[@]}")
+elif [[ -z $ONLY ]]; then
+    includes+=("${internal_includes[@]}")
+elif [[ $ONLY != options ]]; then
     if [[ ! -f $INCLUDE_DIR/texfilter/$ONLY.glsl ]]; then
         echo "FAIL: no include $INCLUDE_DIR/texfilter/$ONLY.glsl" >&2
         exit 1
@@ -233,12 +238,11 @@ elif [[ $ONLY == options ]]; then
     includes=()
 fi
 
-# The access layer's internal files (access, family, instantiate: re-included once per resource kind, so no
-# guard) are not for users: each must open with its header comment, say "internal", and refuse to compile
-# when included on its own (outside a family file's instantiation).
-internal_files=(access family instantiate)
+# The internal files (texfilter/detail/: the access layer and each family's per-kind part, re-included once per
+# resource kind, so no guard; compile_includes.detail) are not for users: each must open with its header
+# comment, say "internal", and refuse to compile when included on its own (outside a family's instantiation).
 check_internal() {
-    local file=$1 name=$2 shader="$WORK/internal_$2.frag"
+    local file=$1 name=detail/$2 shader="$WORK/internal_$2.frag"
     if head -1 "$file" | grep -q "^// texfilter/$name.glsl — internal"; then
         printf 'ok    %-17s %s\n' "header" "$name.glsl (internal)"
     else
@@ -324,7 +328,7 @@ check_builder() {
 
 for file in "${includes[@]}"; do
     name=$(basename "$file" .glsl)
-    if [[ " ${internal_files[*]} " == *" $name "* ]]; then
+    if [[ $file == */texfilter/detail/* ]]; then
         check_internal "$file" "$name"
         continue
     fi

@@ -48,23 +48,7 @@ float tf_brilinear_weight(float f, float band)
 }
 
 #define TFI_FAMILY TFI_FAMILY_BRILINEAR
-#include "instantiate.glsl"
+#include "detail/instantiate.glsl"
 #undef TFI_FAMILY
 
-#elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_BRILINEAR && TFI_MANUAL && !TFI_ENV // per resource kind (access.glsl)
-
-vec4 tf_brilinear(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band)
-{
-    float f;
-    int lo = tfi_split_lod(tf_lod(TFI_A, dUVdx, dUVdy, s), f);
-    float w = tf_brilinear_weight(f, band); // 0 or 1 outside the band: one level, 4 fetches
-#define TFI_BRILINEAR_LEVEL(level) tf_bilinear_level(TFI_A, uv TFI_XA, level, s.wrap)
-    vec4 color;
-    TFI_BLEND_LEVELS_ONCE(color, TFI_BRILINEAR_LEVEL, lo, w); // outside the band: one level (lod.glsl)
-#undef TFI_BRILINEAR_LEVEL
-    return color;
-}
-
-#endif
 #endif

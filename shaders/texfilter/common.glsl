@@ -39,6 +39,14 @@
 //                                  TF_RESOURCE_CUBE_ARRAY 128 (samplerCubeArray, textureCubeArray + sampler),
 //                                  TF_RESOURCE_LATLONG 256 (sampler2D lat-long maps: latlong.glsl).
 //                                  A family called with a kind left out fails to compile ("no matching function").
+//          TF_SOURCE               your own texel source (an atlas tile, a virtual texture's page table, ...):
+//                                  `#define TF_SOURCE T` (any type: a struct, an int id) and declare before the
+//                                  include   ivec2 tf_source_size(T src, int level);  // level's size in texels
+//                                            int   tf_source_levels(T src);           // its MIP level count
+//                                            vec4  tf_source_fetch(T src, ivec2 texel, int level);
+//                                  (texel already wrapped into [0, size) by s.wrap). Every manual 2D family then
+//                                  takes `T src` where it takes a sampler2D; no _hw, SAT or environment forms
+//                                  (they need a sampler). TF_RESOURCES 0 leaves only T's. docs/API.md "Texel sources".
 // Needs:   nothing bound: every function takes the texture. Texel space (DESIGN.md §3): u = s·w_l with
 //          w_l = max(1, w >> l); wraps act on integer texel coordinates before texelFetch, so the sampler's
 //          own filter and address modes are not used and any sampler2D works (e.g. RGBA32F). The includes
@@ -62,7 +70,13 @@
 #define TF_RESOURCE_CUBE_ARRAY 128
 #define TF_RESOURCE_LATLONG 256
 #ifndef TF_RESOURCES
+#ifdef __SLANG__
+// Slang's GLSL mode (slangc -allow-glsl) has sampler2D, sampler2DArray (and its Sampler2D), not texture2D,
+// sampler, the integer, shadow or cube types: the kinds it compiles (docs/API.md "Slang").
+#define TF_RESOURCES (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_SAMPLER_2D_ARRAY | TF_RESOURCE_LATLONG)
+#else
 #define TF_RESOURCES 511
+#endif
 #endif
 #if (TF_RESOURCES & (2 | 4 | 8 | 16 | 32 | 64 | 128)) != 0
 #extension GL_EXT_samplerless_texture_functions : require
@@ -223,8 +237,9 @@ vec2 tf_reduce_uv(vec2 uv, int wrapMode)
     return wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0, 2.0) : tfi_whole_periods(uv);
 }
 
-// The lat-long kind's extra parameter (access.glsl kind 19): it only tells its overloads from sampler2D's.
-struct tfi_LatLong {
+// Marks a sampler2D as a lat-long map for the 2D families (latlong.glsl): tf_ewa(tex, uv, tf_LatLong(0), ...)
+// filters it in uv, its texels read across the seam and the poles. The member means nothing.
+struct tf_LatLong {
     int unused;
 };
 
@@ -249,74 +264,7 @@ vec3 tfi_cube_direction(int face, vec2 st)
 }
 
 #define TFI_FAMILY TFI_FAMILY_COMMON
-#include "instantiate.glsl"
+#include "detail/instantiate.glsl"
 #undef TFI_FAMILY
 
-#elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_COMMON // per resource kind (access.glsl)
-
-#if TFI_OWNS_T
-// Size of a MIP level by the Vulkan floor rule. Derived from level 0 on purpose: textureSize() with a
-// level that differs across a SIMD batch returned the wrong lane's size on lavapipe (Mesa 22.3).
-ivec2 tf_level_size(TFI_T, int level) { return max(TFI_SIZE0 >> level, ivec2(1)); }
-#endif
-
-#if TFI_CUBE
-// Texel p of level `level` of the face, any p (docs/ENVIRONMENT.md, "Texels off the face"): the texel that the
-// direction through p's centre on the face's extended plane hits, read through the (NEAREST) sampler at that
-// direction, which selects the face itself; one texel past both edges of a corner, the mean of the three texels
-// that meet there. In the face the direction is the texel's own centre, half a texel from every boundary.
-vec4 tfi_cube_read(TFI_T TFI_X, ivec2 p, int level, float n)
-{
-    vec3 d = tfi_cube_direction(face, (vec2(p) + 0.5) / n);
-#if TFI_KIND == 15
-    return textureLod(TF_NONUNIFORM(tex), d, float(level));
-#elif TFI_KIND == 16
-    return textureLod(TF_NONUNIFORM(samplerCube(tex, smp)), d, float(level));
-#elif TFI_KIND == 17
-    return textureLod(TF_NONUNIFORM(tex), vec4(d, float(layer)), float(level));
-#else
-    return textureLod(TF_NONUNIFORM(samplerCubeArray(tex, smp)), vec4(d, float(layer)), float(level));
-#endif
-}
-
-vec4 tfi_cube_texel(TFI_T TFI_X, ivec2 p, int level)
-{
-    int n = max(TFI_SIZE0.x >> level, 1);
-    ivec2 c = clamp(p, ivec2(0), ivec2(n - 1));
-    if (abs(p.x - c.x) != 1 || abs(p.y - c.y) != 1)
-        return tfi_cube_read(TFI_A TFI_XA, p, level, float(n));
-    return (tfi_cube_read(TFI_A TFI_XA, c, level, float(n)) + tfi_cube_read(TFI_A TFI_XA, ivec2(p.x, c.y), level, float(n)) +
-            tfi_cube_read(TFI_A TFI_XA, ivec2(c.x, p.y), level, float(n))) / 3.0;
-}
-#endif
-
-#if TFI_LATLONG
-// Texel p of a lat-long level, any p (docs/ENVIRONMENT.md): columns repeat; a row past a pole is the row as
-// far from it on the other side, half a turn round (W/2 columns: exact for even widths). Rows repeat every
-// 2H (over both poles and back), so p.y is first reduced into [0, 2H).
-vec4 tfi_latlong_texel(TFI_T, ivec2 p, int level)
-{
-    ivec2 size = tf_level_size(TFI_A, level);
-    int j = tf_wrap(float(p.y), 2 * size.y, TF_WRAP_REPEAT);
-    float i = float(p.x);
-    if (j >= size.y) {
-        j = 2 * size.y - 1 - j;
-        i += float(size.x / 2);
-    }
-    return texelFetch(TF_NONUNIFORM(tex), ivec2(tf_wrap(i, size.x, TF_WRAP_REPEAT), j), level);
-}
-#endif
-
-#if TFI_CAN_FETCH
-vec4 tf_fetch(TFI_T, ivec2 texel TFI_X, int level, int wrapMode)
-{
-    ivec2 size = tf_level_size(TFI_A, level);
-    TF_COUNT_FETCHES(1);
-    return TFI_FETCH(ivec2(TFI_WRAP(float(texel.x), size.x, wrapMode), TFI_WRAP(float(texel.y), size.y, wrapMode)),
-                     level);
-}
-#endif
-
-#endif
 #endif

@@ -77,6 +77,7 @@ int tfi_split_lod(float lod, out float f)
 // measured exact in every compiler mode; it is a workaround, not a cure (docs/API.md, "Optimisation").
 #define TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w)                                     \
     {                                                                                    \
+        result = vec4(0.0); /* every path assigns it; said once for compilers that check */ \
         int tfi_turns = (w) > 0.0 && (w) < 1.0 ? 2 : 1;                                  \
         int tfi_level = (w) == 1.0 ? (lo) + 1 : (lo);                                    \
         for (int tfi_turn = 0; tfi_turn < tfi_turns; ++tfi_turn) {                       \
@@ -95,31 +96,7 @@ int tf_mip_level_nearest(float lod)
 }
 
 #define TFI_FAMILY TFI_FAMILY_LOD
-#include "instantiate.glsl"
+#include "detail/instantiate.glsl"
 #undef TFI_FAMILY
 
-#elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_LOD && TFI_OWNS_T // per resource kind (access.glsl)
-
-// Unclamped log2(rho) + bias; +Inf for non-finite gradients, -Inf for zero gradients.
-float tf_lod_unclamped(TFI_T, vec2 dUVdx, vec2 dUVdy, float lodBias)
-{
-    vec2 size0 = vec2(TFI_SIZE0);
-    vec2 ax = dUVdx * size0;
-    vec2 ay = dUVdy * size0;
-    float rho2 = max(dot(ax, ax), dot(ay, ay)); // squared lengths: tfi_log2_rho
-    return tf_finite(dUVdx) && tf_finite(dUVdy) ? tfi_log2_rho(rho2) + lodBias : 1.0 / 0.0;
-}
-
-float tfi_clamp_lod(float lambda, tf_Sampler s, TFI_T)
-{
-    return tfi_clamp_lod_levels(lambda, s, TFI_LEVELS);
-}
-
-float tf_lod(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
-{
-    return tfi_clamp_lod(tf_lod_unclamped(TFI_A, dUVdx, dUVdy, s.lodBias), s, TFI_A);
-}
-
-#endif
 #endif

@@ -24,22 +24,7 @@
 #include "lod.glsl"
 
 #define TFI_FAMILY TFI_FAMILY_TRILINEAR
-#include "instantiate.glsl"
+#include "detail/instantiate.glsl"
 #undef TFI_FAMILY
 
-#elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_TRILINEAR && TFI_MANUAL // per resource kind (access.glsl)
-
-vec4 tf_trilinear(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
-{
-    float f;
-    int lo = tfi_split_lod(tf_lod(TFI_A, dUVdx, dUVdy, s), f);
-#define TFI_TRILINEAR_LEVEL(level) tfi_mip_level(TFI_A, uv TFI_XA, level, s.wrap)
-    vec4 color;
-    TFI_BLEND_LEVELS_ONCE(color, TFI_TRILINEAR_LEVEL, lo, f); // each level's fetches issued once (lod.glsl)
-#undef TFI_TRILINEAR_LEVEL
-    return color;
-}
-
-#endif
 #endif
