@@ -298,7 +298,7 @@ TEST_SUITE_END();
 
 TEST_SUITE_BEGIN("gpu");
 
-// The hardware sampler on the atlas bleeds on the device too (the picture in docs/images/atlas-bleeding.png).
+// The hardware sampler on the atlas bleeds on the device too (the picture docs/images/api/atlas-bleeding.png).
 TEST_CASE("atlas-hw-bleeds")
 {
     for (const char* wrap : kWraps) {
