@@ -402,6 +402,11 @@ sample_resources() {
         out.csv -- "${t[@]}" --filter aniso --taps hardware --resource virtual -o out.csv
     expect_error "sample: hw-bilinear on a virtual texture" "--resource virtual cannot run --filter hw-bilinear" \
         out.csv -- "${t[@]}" --filter hw-bilinear --resource virtual -o out.csv
+    expect_error "sample: an atlas past 16384 a side" "a 16384x16384 texture needs an atlas of 32768x32768 texels" \
+        out.csv -- "${t[@]}" --filter trilinear --resource atlas --texture-size 16384 -o out.csv
+    expect_error "sample: the atlas counts in --memory-budget" "1 lookups and the atlas" out.csv -- \
+        "$TEXFILTER" sample --texture checker --texture-size 512 --backend reference --lookups good.csv \
+        --filter trilinear --resource atlas --memory-budget 8M -o out.csv
 }
 
 diff_contract() {

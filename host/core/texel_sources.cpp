@@ -81,12 +81,29 @@ void check_source_size(Resource kind, int width, int height, int max_side)
     const glm::ivec2 size = source_image_size(kind, width, height);
     if (size.x > max_side || size.y > max_side)
         throw Error("--resource " + to_string(kind) + ": a " + std::to_string(width) + "x" + std::to_string(height) +
-                    " texture needs a " + (kind == Resource::atlas ? "atlas" : "physical texture") + " of " +
+                    " texture needs " + (kind == Resource::atlas ? "an atlas" : "a physical texture") + " of " +
                     std::to_string(size.x) + "x" + std::to_string(size.y) + " texels, more than " +
                     std::to_string(max_side) + " a side (use a texture of at most " +
                     (kind == Resource::atlas ? std::to_string(max_side / kGrid) + " texels a side"
                                              : std::string("about three quarters of that a side")) +
                     ")");
+}
+
+uint64_t source_host_bytes(Resource kind, int width, int height, bool reference, bool device_in_host_memory)
+{
+    auto chain_bytes = [](int w, int h) {
+        uint64_t texels = 0;
+        for (int l = 0; l < mip_level_count(w, h); ++l)
+            texels += uint64_t(level_side(w, l)) * uint64_t(level_side(h, l));
+        return texels * sizeof(glm::vec4);
+    };
+    const glm::ivec2 size = source_image_size(kind, width, height);
+    const uint64_t level0 = uint64_t(size.x) * uint64_t(size.y) * sizeof(glm::vec4);
+    const uint64_t image = kind == Resource::atlas ? chain_bytes(size.x, size.y)
+                                                   : level0 + uint64_t(total_pages(width, height)) * sizeof(int32_t);
+    if (reference)
+        return image + chain_bytes(width, height);
+    return image + level0 + (device_in_host_memory ? image : 0);
 }
 
 SourceBinding make_atlas(const MipChain& texture)

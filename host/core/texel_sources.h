@@ -51,6 +51,12 @@ constexpr int max_source_side = 16384;
 glm::ivec2 source_image_size(Resource kind, int width, int height);
 void check_source_size(Resource kind, int width, int height, int max_side);
 
+// The host bytes a width x height texture's source takes beside the texture itself (memory_budget.h's
+// add_other): the atlas (every level) or the physical texture and the words; on the CPU reference the
+// texture read back through them (read_source); on Vulkan the staging of the image's level 0, and on a CPU
+// device (device_in_host_memory) the device's copy of the image as well.
+uint64_t source_host_bytes(Resource kind, int width, int height, bool reference, bool device_in_host_memory);
+
 SourceBinding make_atlas(const MipChain& texture);
 SourceBinding make_virtual_texture(const MipChain& texture);
 SourceBinding make_source_binding(const MipChain& texture, Resource kind); // atlas or virtual
