@@ -151,8 +151,9 @@ def shader(kind, stage, prelude="", bindless=False):
     body = """    int k = int(uv.x * 8.0) & 7, layer = int(uv.y * 4.0);
     float dref = uv.x;
     tf_Compare cmp = tf_compare(TF_COMPARE_LESS_OR_EQUAL, dref);
-    tf_Sampler s = tf_sampler(TF_WRAP_REPEAT);
-    Tile src = Tile(ivec2(256 * k, 0), ivec2(200, 120), 8);"""
+    tf_Sampler s = tf_sampler(TF_WRAP_REPEAT);"""
+    if kind == "source":
+        body += "\n    Tile src = Tile(ivec2(256 * k, 0), ivec2(200, 120), 8);"
     if stage == "frag":
         lines.append(f"""layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 outColor;

@@ -89,6 +89,57 @@ vec2 tfi_aniso_centre(vec2 uv, vec2 axis, int wrapMode)
     return wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0 - h, 2.0 + h) : tfi_whole_periods(uv);
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_aniso(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+vec4 tf_aniso(texture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_hw(texture2D tex, sampler smp, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+vec4 tf_aniso(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_hw(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+vec4 tf_aniso(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+vec4 tf_aniso(isampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso(itexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso(usampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso(utexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+vec4 tf_aniso(sampler2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso(texture2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_hw(sampler2DShadow tex, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+vec4 tf_aniso(samplerCube tex, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso(textureCube tex, sampler smp, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_hw(samplerCube tex, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_hw(textureCube tex, sampler smp, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+vec4 tf_aniso(samplerCubeArray tex, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_hw(samplerCubeArray tex, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_hw(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+vec4 tf_aniso(sampler2D tex, vec2 uv, tf_LatLong latlong, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_hw(sampler2D tex, vec2 uv, tf_LatLong latlong, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+#endif
+#ifdef TF_SOURCE
+vec4 tf_aniso(TF_SOURCE tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_ANISO
 #include "detail/instantiate.glsl"
 #undef TFI_FAMILY

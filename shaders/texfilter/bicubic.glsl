@@ -55,6 +55,93 @@ vec4 tfi_cubic_weights(float t, int kernel)
                : (1.0 / 6.0) * vec4(s * s * s, 4.0 - 6.0 * t2 + 3.0 * t3, 1.0 + 3.0 * (t + t2 - t3), t3);
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_bspline(sampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_bspline_hw(sampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(sampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom_hw(sampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_cubic_level(sampler2D tex, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+vec4 tf_bspline(texture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_bspline_hw(texture2D tex, sampler smp, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(texture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom_hw(texture2D tex, sampler smp, vec2 uv, tf_Sampler s);
+vec4 tf_cubic_level(texture2D tex, sampler smp, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(texture2D tex, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(texture2D tex, sampler smp, vec2 uv, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+vec4 tf_bspline(sampler2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_bspline_hw(sampler2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_catmull_rom(sampler2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_catmull_rom_hw(sampler2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_cubic_level(sampler2DArray tex, vec2 uv, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(sampler2DArray tex, vec2 uv, int layer, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+vec4 tf_bspline(texture2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_bspline_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_catmull_rom(texture2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_catmull_rom_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_cubic_level(texture2DArray tex, sampler smp, vec2 uv, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(texture2DArray tex, vec2 uv, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+vec4 tf_bspline(isampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_bspline(itexture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_bspline(usampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_bspline(utexture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(isampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(itexture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(usampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(utexture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_cubic_level(isampler2D tex, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(itexture2D tex, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(usampler2D tex, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(utexture2D tex, vec2 uv, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+vec4 tf_bspline(sampler2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s);
+vec4 tf_bspline(texture2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s);
+vec4 tf_bspline_hw(sampler2DShadow tex, vec2 uv, float dref, tf_Sampler s);
+vec4 tf_bspline_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, tf_Sampler s);
+vec4 tf_catmull_rom(sampler2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s);
+vec4 tf_catmull_rom(texture2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s);
+vec4 tf_catmull_rom_hw(sampler2DShadow tex, vec2 uv, float dref, tf_Sampler s);
+vec4 tf_catmull_rom_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, tf_Sampler s);
+vec4 tf_cubic_level(sampler2D tex, vec2 uv, tf_Compare cmp, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(texture2D tex, vec2 uv, tf_Compare cmp, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(sampler2DShadow tex, vec2 uv, float dref, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+vec4 tf_cubic_level(samplerCube tex, vec2 uv, int face, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(textureCube tex, sampler smp, vec2 uv, int face, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(samplerCube tex, vec2 uv, int face, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(textureCube tex, sampler smp, vec2 uv, int face, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+vec4 tf_cubic_level(samplerCubeArray tex, vec2 uv, int face, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(samplerCubeArray tex, vec2 uv, int face, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+vec4 tf_cubic_level(sampler2D tex, vec2 uv, tf_LatLong latlong, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(sampler2D tex, vec2 uv, tf_LatLong latlong, int level, int wrapMode, int kernel);
+#endif
+#ifdef TF_SOURCE
+vec4 tf_bspline(TF_SOURCE tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(TF_SOURCE tex, vec2 uv, tf_Sampler s);
+vec4 tf_cubic_level(TF_SOURCE tex, vec2 uv, int level, int wrapMode, int kernel);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_BICUBIC
 #include "detail/instantiate.glsl"
 #undef TFI_FAMILY

@@ -47,6 +47,35 @@ float tf_brilinear_weight(float f, float band)
     return band > 0.0 ? clamp((f - (1.0 - b) * 0.5) / b, 0.0, 1.0) : nearest;
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_brilinear(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+vec4 tf_brilinear(texture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+vec4 tf_brilinear(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+vec4 tf_brilinear(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+vec4 tf_brilinear(isampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+vec4 tf_brilinear(itexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+vec4 tf_brilinear(usampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+vec4 tf_brilinear(utexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+vec4 tf_brilinear(sampler2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+vec4 tf_brilinear(texture2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+#endif
+#ifdef TF_SOURCE
+vec4 tf_brilinear(TF_SOURCE tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float band);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_BRILINEAR
 #include "detail/instantiate.glsl"
 #undef TFI_FAMILY

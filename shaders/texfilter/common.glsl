@@ -263,6 +263,69 @@ vec3 tfi_cube_direction(int face, vec2 st)
     return M + c.x * S + c.y * T;
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_fetch(sampler2D tex, ivec2 texel, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+ivec2 tf_level_size(texture2D tex, sampler smp, int level);
+vec4 tf_fetch(texture2D tex, ivec2 texel, int level, int wrapMode);
+vec4 tf_fetch(texture2D tex, sampler smp, ivec2 texel, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+ivec2 tf_level_size(sampler2DArray tex, int level);
+vec4 tf_fetch(sampler2DArray tex, ivec2 texel, int layer, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+ivec2 tf_level_size(texture2DArray tex, int level);
+ivec2 tf_level_size(texture2DArray tex, sampler smp, int level);
+vec4 tf_fetch(texture2DArray tex, ivec2 texel, int layer, int level, int wrapMode);
+vec4 tf_fetch(texture2DArray tex, sampler smp, ivec2 texel, int layer, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+ivec2 tf_level_size(isampler2D tex, int level);
+ivec2 tf_level_size(itexture2D tex, int level);
+ivec2 tf_level_size(usampler2D tex, int level);
+ivec2 tf_level_size(utexture2D tex, int level);
+vec4 tf_fetch(isampler2D tex, ivec2 texel, int level, int wrapMode);
+vec4 tf_fetch(itexture2D tex, ivec2 texel, int level, int wrapMode);
+vec4 tf_fetch(usampler2D tex, ivec2 texel, int level, int wrapMode);
+vec4 tf_fetch(utexture2D tex, ivec2 texel, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+ivec2 tf_level_size(sampler2DShadow tex, int level);
+ivec2 tf_level_size(texture2D tex, samplerShadow smp, int level);
+vec4 tf_fetch(sampler2D tex, ivec2 texel, tf_Compare cmp, int level, int wrapMode);
+vec4 tf_fetch(texture2D tex, ivec2 texel, tf_Compare cmp, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & (TF_RESOURCE_TEXTURE_2D | TF_RESOURCE_SHADOW)) != 0
+ivec2 tf_level_size(texture2D tex, int level);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+ivec2 tf_level_size(samplerCube tex, int level);
+ivec2 tf_level_size(textureCube tex, sampler smp, int level);
+vec4 tf_fetch(samplerCube tex, ivec2 texel, int face, int level, int wrapMode);
+vec4 tf_fetch(textureCube tex, sampler smp, ivec2 texel, int face, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+ivec2 tf_level_size(samplerCubeArray tex, int level);
+ivec2 tf_level_size(textureCubeArray tex, sampler smp, int level);
+vec4 tf_fetch(samplerCubeArray tex, ivec2 texel, int face, int layer, int level, int wrapMode);
+vec4 tf_fetch(textureCubeArray tex, sampler smp, ivec2 texel, int face, int layer, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+vec4 tf_fetch(sampler2D tex, ivec2 texel, tf_LatLong latlong, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_SHADOW | TF_RESOURCE_LATLONG)) != 0
+ivec2 tf_level_size(sampler2D tex, int level);
+#endif
+#ifdef TF_SOURCE
+ivec2 tf_level_size(TF_SOURCE tex, int level);
+vec4 tf_fetch(TF_SOURCE tex, ivec2 texel, int level, int wrapMode);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_COMMON
 #include "detail/instantiate.glsl"
 #undef TFI_FAMILY

@@ -81,6 +81,98 @@ tf_CubeLookup tf_cube_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy)
 // The 2D families' sampler for a face: uv reduction as for clamp (a no-op on a face), the LOD options kept.
 tf_Sampler tfi_cube_sampler(tf_Sampler s) { return tf_Sampler(TF_WRAP_CLAMP, s.lodBias, s.lodMin, s.lodMax); }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+vec4 tf_aniso_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_cube(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_cube_hw(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_cube_hw(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_stochastic_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_cube(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_cube_hw(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_cube_hw(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_bilinear_cube(samplerCube tex, vec3 dir, tf_Sampler s);
+vec4 tf_bilinear_cube(textureCube tex, sampler smp, vec3 dir, tf_Sampler s);
+vec4 tf_bilinear_mip_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_bilinear_mip_cube(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_bilinear_stochastic_cube(samplerCube tex, vec3 dir, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_cube(textureCube tex, sampler smp, vec3 dir, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_cube_hw(samplerCube tex, vec3 dir, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_cube_hw(textureCube tex, sampler smp, vec3 dir, tf_Sampler s, vec3 xi);
+vec4 tf_bspline_cube(samplerCube tex, vec3 dir, tf_Sampler s);
+vec4 tf_bspline_cube(textureCube tex, sampler smp, vec3 dir, tf_Sampler s);
+vec4 tf_bspline_cube_hw(samplerCube tex, vec3 dir, tf_Sampler s);
+vec4 tf_bspline_cube_hw(textureCube tex, sampler smp, vec3 dir, tf_Sampler s);
+vec4 tf_catmull_rom_cube(samplerCube tex, vec3 dir, tf_Sampler s);
+vec4 tf_catmull_rom_cube(textureCube tex, sampler smp, vec3 dir, tf_Sampler s);
+vec4 tf_catmull_rom_cube_hw(samplerCube tex, vec3 dir, tf_Sampler s);
+vec4 tf_catmull_rom_cube_hw(textureCube tex, sampler smp, vec3 dir, tf_Sampler s);
+vec4 tf_ewa_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_cube(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_cube_hw(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_cube_hw(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_stochastic_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_cube(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_cube_hw(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_cube_hw(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_nearest_cube(samplerCube tex, vec3 dir, tf_Sampler s);
+vec4 tf_nearest_cube(textureCube tex, sampler smp, vec3 dir, tf_Sampler s);
+vec4 tf_nearest_mip_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_nearest_mip_cube(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_trilinear_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_trilinear_cube(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_trilinear_stochastic_cube(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_cube(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_cube_hw(samplerCube tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_cube_hw(textureCube tex, sampler smp, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+vec4 tf_aniso_cube(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_cube_hw(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_cube_hw(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_stochastic_cube(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_cube_hw(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_cube_hw(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_bilinear_cube(samplerCubeArray tex, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_bilinear_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_bilinear_mip_cube(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_bilinear_mip_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_bilinear_stochastic_cube(samplerCubeArray tex, vec3 dir, int layer, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_cube_hw(samplerCubeArray tex, vec3 dir, int layer, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_cube_hw(textureCubeArray tex, sampler smp, vec3 dir, int layer, tf_Sampler s, vec3 xi);
+vec4 tf_bspline_cube(samplerCubeArray tex, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_bspline_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_bspline_cube_hw(samplerCubeArray tex, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_bspline_cube_hw(textureCubeArray tex, sampler smp, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_catmull_rom_cube(samplerCubeArray tex, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_catmull_rom_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_catmull_rom_cube_hw(samplerCubeArray tex, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_catmull_rom_cube_hw(textureCubeArray tex, sampler smp, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_ewa_cube(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_cube_hw(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_cube_hw(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_stochastic_cube(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_cube_hw(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_cube_hw(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_nearest_cube(samplerCubeArray tex, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_nearest_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, tf_Sampler s);
+vec4 tf_nearest_mip_cube(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_nearest_mip_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_trilinear_cube(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_trilinear_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_trilinear_stochastic_cube(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_cube(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_cube_hw(samplerCubeArray tex, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_cube_hw(textureCubeArray tex, sampler smp, vec3 dir, int layer, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_CUBE
 #include "detail/instantiate.glsl"
 #undef TFI_FAMILY

@@ -66,6 +66,33 @@ tf_LatLongLookup tf_latlong_lookup(vec3 dir, vec3 dDirdx, vec3 dDirdy)
     return l;
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+vec4 tf_aniso_latlong(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_latlong_hw(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape);
+vec4 tf_aniso_stochastic_latlong(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_aniso_stochastic_latlong_hw(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, int maxProbes, int shape, vec3 xi);
+vec4 tf_bilinear_latlong(sampler2D tex, vec3 dir, tf_Sampler s);
+vec4 tf_bilinear_mip_latlong(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_bilinear_stochastic_latlong(sampler2D tex, vec3 dir, tf_Sampler s, vec3 xi);
+vec4 tf_bilinear_stochastic_latlong_hw(sampler2D tex, vec3 dir, tf_Sampler s, vec3 xi);
+vec4 tf_bspline_latlong(sampler2D tex, vec3 dir, tf_Sampler s);
+vec4 tf_bspline_latlong_hw(sampler2D tex, vec3 dir, tf_Sampler s);
+vec4 tf_catmull_rom_latlong(sampler2D tex, vec3 dir, tf_Sampler s);
+vec4 tf_catmull_rom_latlong_hw(sampler2D tex, vec3 dir, tf_Sampler s);
+vec4 tf_ewa_latlong(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_latlong_hw(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_stochastic_latlong(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_ewa_stochastic_latlong_hw(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, float alpha, float maxAniso, vec3 xi);
+vec4 tf_nearest_latlong(sampler2D tex, vec3 dir, tf_Sampler s);
+vec4 tf_nearest_mip_latlong(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_trilinear_latlong(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s);
+vec4 tf_trilinear_stochastic_latlong(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi);
+vec4 tf_trilinear_stochastic_latlong_hw(sampler2D tex, vec3 dir, vec3 dDirdx, vec3 dDirdy, tf_Sampler s, vec3 xi);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_LATLONG
 #include "detail/instantiate.glsl"
 #undef TFI_FAMILY

@@ -95,6 +95,64 @@ int tf_mip_level_nearest(float lod)
     return int(level) + (lod - level > 0.5 ? 1 : 0);
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+float tf_lod(texture2D tex, sampler smp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(texture2D tex, sampler smp, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+float tf_lod(sampler2DArray tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(sampler2DArray tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+float tf_lod(texture2DArray tex, sampler smp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(texture2DArray tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(texture2DArray tex, sampler smp, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(texture2DArray tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+float tf_lod(isampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(itexture2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(usampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(utexture2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(isampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(itexture2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(usampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(utexture2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+float tf_lod(sampler2DShadow tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(texture2D tex, samplerShadow smp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(sampler2DShadow tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(texture2D tex, samplerShadow smp, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & (TF_RESOURCE_TEXTURE_2D | TF_RESOURCE_SHADOW)) != 0
+float tf_lod(texture2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(texture2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+float tf_lod(samplerCube tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(textureCube tex, sampler smp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(samplerCube tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(textureCube tex, sampler smp, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+float tf_lod(samplerCubeArray tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(textureCubeArray tex, sampler smp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(samplerCubeArray tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(textureCubeArray tex, sampler smp, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_SHADOW | TF_RESOURCE_LATLONG)) != 0
+float tf_lod(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(sampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#ifdef TF_SOURCE
+float tf_lod(TF_SOURCE tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(TF_SOURCE tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_LOD
 #include "detail/instantiate.glsl"
 #undef TFI_FAMILY

@@ -205,6 +205,26 @@ bool tfi_sat_columns(ivec2 size, vec2 dUVdx, vec2 dUVdy, float lodBias, out vec2
     return true;
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_sat(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale);
+vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale, int boxes);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+vec4 tf_sat(utexture2D satLow, utexture2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale);
+vec4 tf_sat_assembly(utexture2D satLow, utexture2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale, int boxes);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+vec4 tf_sat(usampler2DArray satLow, usampler2DArray satHigh, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale);
+vec4 tf_sat_assembly(usampler2DArray satLow, usampler2DArray satHigh, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale, int boxes);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+vec4 tf_sat(utexture2DArray satLow, utexture2DArray satHigh, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale);
+vec4 tf_sat_assembly(utexture2DArray satLow, utexture2DArray satHigh, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale, int boxes);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_SAT
 #include "detail/instantiate.glsl"
 #undef TFI_FAMILY

@@ -23,6 +23,46 @@
 #include "bicubic.glsl" // tfi_mip_level: TF_MAGNIFY on level 0
 #include "lod.glsl"
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_trilinear(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+vec4 tf_trilinear(texture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+vec4 tf_trilinear(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+vec4 tf_trilinear(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+vec4 tf_trilinear(isampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_trilinear(itexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_trilinear(usampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_trilinear(utexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+vec4 tf_trilinear(sampler2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_trilinear(texture2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+vec4 tf_trilinear(samplerCube tex, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_trilinear(textureCube tex, sampler smp, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+vec4 tf_trilinear(samplerCubeArray tex, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_trilinear(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+vec4 tf_trilinear(sampler2D tex, vec2 uv, tf_LatLong latlong, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#ifdef TF_SOURCE
+vec4 tf_trilinear(TF_SOURCE tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_TRILINEAR
 #include "detail/instantiate.glsl"
 #undef TFI_FAMILY

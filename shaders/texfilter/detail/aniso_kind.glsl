@@ -3,7 +3,6 @@
 #if !defined(TFI_KIND)
 #error "texfilter/detail/aniso_kind.glsl is internal: include texfilter/aniso.glsl"
 #endif
-#if 1
 
 #if TFI_OWNS_T
 tfi_AnisoFootprint tfi_aniso_footprint(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int maxProbes, int shape)
@@ -130,4 +129,3 @@ vec4 tf_aniso_hw(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, int
 }
 #endif
 
-#endif

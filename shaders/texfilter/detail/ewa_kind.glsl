@@ -146,14 +146,13 @@ vec4 tfi_ewa_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape s
     return tfi_ewa_fit(s);
 }
 
-// The same filter from hardware bilinear lookups: one per 2x2 block of texels 2b, 2b+1 on each axis,
-// at the block's weight centroid, weighted by the block's total weight. Their weighted mean is centred
-// on the texels' weight centroid, not on the lookup's centre (the fit of tfi_ewa_level needs 3 samples
-// not on a line, which a few merged blocks need not give): a first pass over the weights finds that
-// offset m, the second moves every tap by -m, which centres the taps' mean on uv. Exact on a linear
-// texture (a bilinear lookup reproduces it wherever it lands), the same as the fit where the weights
-// are symmetric.
-vec4 tfi_ewa_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha)
+// The hardware-tap walk over one level's support, written once for tf_ewa_hw and tf_ewa_stochastic_hw: 2x2 blocks
+// of texels 2b, 2b+1 on each axis, each tapped by one bilinear lookup at its weight centroid with the block's
+// total weight. Pass 0 sums the weights and their moments: the taps' weighted mean sits on the texels' weight
+// centroid, not on uv, so pass 1 moves every tap by that offset (then the mean is exact on a linear texture).
+// Pass 1 taps every block (pick < 0: the weighted mean, tf_ewa_hw) or, for pick in [0, 1), only the block at
+// which the weights' running sum passes pick·Σ (one tap, a block with probability its weight / Σ).
+vec4 tfi_ewa_blocks_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha, float pick)
 {
     vec3 M;
     float det;
@@ -161,12 +160,14 @@ vec4 tfi_ewa_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShap
     tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, M, det, base, frac);
     vec2 size = vec2(tf_level_size(TFI_A, level));
     tfi_EwaBlocks blocks = tfi_ewa_blocks(M, base, frac);
+    bool picking = pick >= 0.0; // a constant at each call
     vec4 sum = vec4(0.0);
-    float weights = 0.0;
-    vec2 moment = vec2(0.0), shift = vec2(0.0);
+    float weights = 0.0, target = 0.0, below = 0.0;
+    vec2 moment = vec2(0.0), shift = vec2(0.0), tap = base + 0.5; // tap: the picked block's centroid, texels
     for (int pass = 0; pass < 2; ++pass) {
+        bool found = false;
         for (int k = 0; k < TFI_EWA_MAX_BLOCKS; ++k) {
-            if (k >= blocks.rows)
+            if (k >= blocks.rows || found)
                 break;
             float j0 = blocks.firstRow + 2.0 * float(k);
             float dy0 = j0 + 0.5 - frac.y;
@@ -179,22 +180,33 @@ vec4 tfi_ewa_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShap
                 float dx0 = i0 + 0.5 - frac.x;
                 vec2 ab;
                 float total = tfi_ewa_block(M, det, alpha, dx0, dy0, ab);
-                if (total > 0.0) {
-                    if (pass == 0) {
-                        moment += total * (vec2(dx0, dy0) + ab);
-                        weights += total;
-                    } else {
-                        TF_COUNT_HW_LOOKUPS(1);
-                        sum += total * TFI_LOOKUP((base + vec2(i0, j0) + 0.5 + ab - shift) / size, float(level));
+                if (!(total > 0.0))
+                    continue;
+                if (pass == 0) {
+                    moment += total * (vec2(dx0, dy0) + ab);
+                    weights += total;
+                } else if (picking) {
+                    tap = base + vec2(i0, j0) + 0.5 + ab;
+                    if (target < below + total) {
+                        found = true;
+                        break;
                     }
+                    below += total;
+                } else {
+                    TF_COUNT_HW_LOOKUPS(1);
+                    sum += total * TFI_LOOKUP((base + vec2(i0, j0) + 0.5 + ab - shift) / size, float(level));
                 }
             }
         }
-        if (!(weights > 0.0))
+        if (pass == 0 && !picking && !(weights > 0.0))
             return vec4(0.0);
-        shift = moment / weights; // the taps' weighted centroid - the centre, level texels
+        shift = weights > 0.0 ? moment / weights : vec2(0.0); // the taps' weighted centroid − the centre, texels
+        target = pick * weights;
     }
-    return sum / weights;
+    if (!picking)
+        return sum / weights;
+    TF_COUNT_HW_LOOKUPS(1);
+    return TFI_LOOKUP((tap - shift) / size, float(level));
 }
 
 // One level: a 1x1 level is its texel whatever the ellipse (saves up to K² reads of it at the horizon).
@@ -210,17 +222,15 @@ vec4 tfi_ewa_on_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShap
             color = TFI_FETCH(ivec2(0), level);
         }
     } else {
-        color = hardware ? tfi_ewa_level_hw(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha)
+        color = hardware ? tfi_ewa_blocks_hw(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha, -1.0)
                          : tfi_ewa_level(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha);
     }
     return color;
 }
 
-// The magnification filter integrated over the pixel's footprint: the mean of four of its lookups at
-// uv ± a, uv ± b (tfi_ewa_spread), whose spread has the ellipse's own covariance, so that the kernel is the
-// reconstruction's convolved with the footprint's to second moments: plain bilinear (or the cubic) as the
-// footprint vanishes (zoom), the pixel's blur where it spans about a texel (the plane's near rows, where one
-// bilinear lookup aliased like trilinear's).
+// The magnification filter (bilinear or TF_MAGNIFY's cubic) integrated over the pixel's footprint: the mean of
+// four of its lookups at uv ± a, uv ± b (tfi_ewa_spread), whose spread is the ellipse's own covariance. Plain
+// magnification as the footprint vanishes; the pixel's blur where it spans about a texel (one lookup aliases there).
 vec4 tfi_ewa_magnified(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, int wrapMode, float alpha, bool hardware)
 {
     vec2 a, b;
@@ -232,6 +242,8 @@ vec4 tfi_ewa_magnified(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, int wrapMod
     return 0.25 * sum;
 }
 
+// tf_ewa and tf_ewa_hw: level 0's trilinear share goes to the magnification filter, the rest to the ellipse on
+// two levels blended by frac(λ).
 vec4 tfi_ewa_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso,
                  bool hardware)
 {

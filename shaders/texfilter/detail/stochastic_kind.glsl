@@ -3,7 +3,6 @@
 #if !defined(TFI_KIND)
 #error "texfilter/detail/stochastic_kind.glsl is internal: include texfilter/stochastic.glsl"
 #endif
-// environment kinds' face-local forms in their direction forms (tf_trilinear_stochastic_cube, ...)
 
 #if TFI_CAN_FETCH
 vec4 tf_bilinear_stochastic_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, vec3 xi)
@@ -78,57 +77,14 @@ vec4 tfi_ewa_stochastic_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi
 
 #if TFI_HW
 // ewa_hw: one 2x2 block of `level` with probability (its weight) / total, one bilinear tap at its weight centroid
-// less the taps' common centroid offset (tfi_ewa_level_hw's taps): pass 0 sums weights and moments, pass 1 walks.
+// less the taps' common centroid offset: tf_ewa_hw's walk (tfi_ewa_blocks_hw) picking one block with u.
 vec4 tfi_ewa_stochastic_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha, float u)
 {
     if (tf_level_size(TFI_A, level) == ivec2(1)) {
         TF_COUNT_HW_LOOKUPS(1);
         return TFI_LOOKUP(vec2(0.5), float(level));
     }
-    vec3 M;
-    float det;
-    vec2 base, frac;
-    tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, M, det, base, frac);
-    vec2 size = vec2(tf_level_size(TFI_A, level));
-    tfi_EwaBlocks blocks = tfi_ewa_blocks(M, base, frac); // ewa.glsl's walk, the hardware taps' blocks
-    float weights = 0.0, target = 0.0, below = 0.0;
-    vec2 moment = vec2(0.0), tap = base + 0.5; // tap: texel coordinate of the chosen block's centroid
-    for (int pass = 0; pass < 2; ++pass) {
-        bool found = false;
-        for (int k = 0; k < TFI_EWA_MAX_BLOCKS; ++k) {
-            if (k >= blocks.rows || found)
-                break;
-            float j0 = blocks.firstRow + 2.0 * float(k);
-            float dy0 = j0 + 0.5 - frac.y;
-            float firstCol;
-            int cols = tfi_ewa_block_columns(M, det, frac, blocks.parity.x, dy0, firstCol);
-            for (int n = 0; n < TFI_EWA_MAX_BLOCKS; ++n) {
-                if (n >= cols)
-                    break;
-                float i0 = firstCol + 2.0 * float(n);
-                float dx0 = i0 + 0.5 - frac.x;
-                vec2 ab;
-                float total = tfi_ewa_block(M, det, alpha, dx0, dy0, ab);
-                if (!(total > 0.0))
-                    continue;
-                if (pass == 0) {
-                    moment += total * (vec2(dx0, dy0) + ab);
-                    weights += total;
-                } else {
-                    tap = base + vec2(i0, j0) + 0.5 + ab;
-                    if (target < below + total) {
-                        found = true;
-                        break;
-                    }
-                    below += total;
-                }
-            }
-        }
-        target = u * weights;
-    }
-    vec2 shift = weights > 0.0 ? moment / weights : vec2(0.0);
-    TF_COUNT_HW_LOOKUPS(1);
-    return TFI_LOOKUP((tap - shift) / size, float(level));
+    return tfi_ewa_blocks_hw(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha, u);
 }
 #endif
 
