@@ -390,6 +390,23 @@ sample_resources() {
     expect_success "sample: --stochastic on an array (reference)" ok_stochastic_array.csv -- \
         "$TEXFILTER" sample --texture checker --filter trilinear --stochastic blue --resource array \
         --backend reference --lookups good.csv -o ok_stochastic_array.csv
+    # The texel-source kinds (atlas, virtual): manual taps only; the hardware sampler only on the atlas.
+    local t=("$TEXFILTER" sample --texture checker --backend reference --lookups good.csv)
+    expect_success "sample: --resource atlas, hw-trilinear (reference)" ok_atlas.csv -- \
+        "${t[@]}" --filter hw-trilinear --resource atlas -o ok_atlas.csv
+    expect_success "sample: --resource virtual, ewa (reference)" ok_virtual.csv -- \
+        "${t[@]}" --filter ewa --resource virtual -o ok_virtual.csv
+    expect_error "sample: sat on an atlas" "--resource atlas cannot run --filter sat: the summed-area table" out.csv -- \
+        "${t[@]}" --filter sat --resource atlas -o out.csv
+    expect_error "sample: --taps hardware on a virtual texture" "--resource virtual cannot run --taps hardware" \
+        out.csv -- "${t[@]}" --filter aniso --taps hardware --resource virtual -o out.csv
+    expect_error "sample: hw-bilinear on a virtual texture" "--resource virtual cannot run --filter hw-bilinear" \
+        out.csv -- "${t[@]}" --filter hw-bilinear --resource virtual -o out.csv
+    expect_error "sample: an atlas past 16384 a side" "a 16384x16384 texture needs an atlas of 32768x32768 texels" \
+        out.csv -- "${t[@]}" --filter trilinear --resource atlas --texture-size 16384 -o out.csv
+    expect_error "sample: the atlas counts in --memory-budget" "1 lookups and the atlas" out.csv -- \
+        "$TEXFILTER" sample --texture checker --texture-size 512 --backend reference --lookups good.csv \
+        --filter trilinear --resource atlas --memory-budget 8M -o out.csv
 }
 
 # sample --spirv FILE (a lookup shader from another compiler): refused before any work, one message naming the

@@ -1,7 +1,9 @@
 #include "flags/cli_common.h"
 #include "cli/commands.h"
 #include "cli/sample_resource.h"
+#include "core/texel_sources.h"
 #include "vulkan/backend.h"
+#include "vulkan/sample_resource.h"
 #include "vulkan/spirv_module.h"
 #include "vulkan/texture_format_support.h"
 #include "io/lookups_csv.h"
@@ -88,6 +90,7 @@ int run_sample(const std::vector<std::string>& argv)
         throw Error("bad value for --filter: ground-truth integrates over a scene's pixels, not around a lookup "
                     "(use render)");
     const ResourceOptions resource = resource_options_from(args);
+    check_resource_options(options, resource); // what the kind cannot run, before any work
     Backend backend = backend_from(args);
     TextureSource source = texture_source_from(args);
     check_format_filter(source.format, options); // integer data and hardware filtering, before any work
@@ -112,6 +115,20 @@ int run_sample(const std::vector<std::string>& argv)
     use.level0_only = source.build == TextureBuild::gpu;
     use.other_bytes = uint64_t(lookups.size()) * sample_lookup_bytes(!device.gpu);
     use.other_what = std::to_string(lookups.size()) + " lookups";
+    if (is_texel_source(resource.resource)) {
+        // The atlas or physical texture is built from the texture: its size, from the header, is checked
+        // against the device's largest image and its bytes join the budget's, before anything is decoded.
+        TextureSource header = source; // the size alone: the budget is checked below, the source's bytes in it
+        header.memory_budget = UINT64_MAX;
+        const TextureSize size = check_texture(header, use);
+        if (device.gpu)
+            check_source_device(device.gpu->context, resource.resource, size.width, size.height);
+        else
+            check_source_size(resource.resource, size.width, size.height, max_source_side);
+        use.other_bytes += source_host_bytes(resource.resource, size.width, size.height, !device.gpu,
+                                             device.gpu && device.limits.host_memory);
+        use.other_what += " and the " + std::string(resource.resource == Resource::atlas ? "atlas" : "virtual texture");
+    }
     MipChain chain = load_texture(source, use);
     GpuSession* gpu = device.gpu.get();
 
