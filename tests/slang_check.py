@@ -14,7 +14,7 @@ Groups:
                  HARNESS_SAMPLE_LOCAL_SIZE; every resource slangc keeps at the (set, binding) where glslang puts
                  it, as the same kind (storage class and type). Without slangc here, glslang's module alone.
   target.TARGET  tests/slang/uses_texfilter.slang (a Slang shader that #includes texfilter/texfilter.glsl and
-                 calls every 2D family on a Sampler2D and on a Texture2D through TF_SOURCE) compiles to TARGET,
+                 calls every 2D family on a Sampler2D, a Texture2D and a TF_SOURCE) compiles to TARGET,
                  and the output is validated where a tool for it is here: SPIR-V by spirv-val, GLSL by
                  glslangValidator, WGSL by naga where installed; HLSL and Metal are not (no compiler here).
                  TARGETS below says which kinds each target takes (docs/API.md "Slang").
@@ -33,13 +33,13 @@ import sys
 
 SKIP = 77  # ctest SKIP_RETURN_CODE
 # target: (slangc -target, flags, output suffix, the validator of the output, or None). Sampler2D (GLSL's
-# sampler2D) only where slangc emits valid code for it: its HLSL, Metal and WGSL output for texelFetch,
-# textureSize and textureQueryLevels on a sampler2D passed to a function pass the SamplerState where the
+# sampler2D) only where slangc emits valid code for it: its HLSL, Metal and WGSL output for a Sampler2D's
+# Load, GetDimensions (and so texelFetch, textureSize, textureQueryLevels) passes the SamplerState where the
 # coordinate or the level goes (e.g. HLSL `t.Load(sampler, coord)`, WGSL `textureDimensions(t, sampler)`), so
-# those targets take the TF_SOURCE kind alone (a Texture2D read with Load/GetDimensions), docs/API.md "Slang".
+# those targets take Texture2D (+ SamplerState) and the TF_SOURCE kind, docs/API.md "Slang".
 SOURCE_ONLY = ["-DTEXFILTER_SAMPLER_2D=0"]
 TARGETS = {
-    "spirv": ("spirv", ["-O0"], "spv", "spirv-val"),
+    "spirv": ("spirv", ["-O0"], "spv", "spirv-val"),  # every kind: Sampler2D, Texture2D, TF_SOURCE
     "glsl": ("glsl", [], "comp", "glslang"),
     "hlsl": ("hlsl", SOURCE_ONLY, "hlsl", None),  # no HLSL compiler on Debian bookworm
     "metal": ("metal", SOURCE_ONLY, "metal", None),  # no Metal compiler off macOS
