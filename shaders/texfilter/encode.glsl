@@ -1,5 +1,5 @@
 // texfilter/encode.glsl — linear values to the codes an 8-bit, sRGB or half-float image stores, rounded
-// exactly as the host rounds them (tf::pack_texels, host/core/texture_format.h), for a compute shader that
+// to nearest, ties to even, as the host forms in docs/API.md "encode.glsl" round them, for a compute shader that
 // writes such an image through an integer view (build_mip.glsl's chains; any render target you pack).
 //
 // Use:     uint tf_mip_srgb8(float v);   // 0..255: the sRGB code of clamp(v, 0, 1)
@@ -21,7 +21,7 @@
 #ifndef TF_ENCODE_GLSL
 #define TF_ENCODE_GLSL
 
-// Stored codes, rounded exactly as tf::pack_texels rounds (texture_format.h), for stores through an
+// Stored codes, rounded to nearest (ties to even) as docs/API.md "encode.glsl" states, for stores through an
 // integer view of an 8-bit or half-float image (a storage image's own float -> unorm or -> half conversion
 // may round either way: Vulkan allows both neighbours).
 // unorm8: round(clamp(v)·255), ties to even, from the bits (v·255 is exact in 32-bit integers).
@@ -43,7 +43,7 @@ uint tf_mip_unorm8(float v)
     return q;
 }
 
-// sRGB8: the code of the exact encode (IEC 61966-2-1) of clamp(v), as tf::pack_texels: code k + 1 from the
+// sRGB8: the code of the exact encode (IEC 61966-2-1) of clamp(v), rounded to nearest: code k + 1 from the
 // smallest float that the host rounds to k + 1 (the table, found by bisection over floats against the host's
 // rounding; tests/test_gpu_build.cpp checks it), so a binary search gives the host's code for every float.
 const float tfi_srgb8_thresholds[255] = float[255](
