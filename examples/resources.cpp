@@ -19,8 +19,10 @@
 #include <vector>
 
 // SPIR-V from texfilter_add_shaders(... COMPILER glslc EMBED): `const std::uint32_t layers_comp[]` ...
+#include "atlas_comp.h"
 #include "bindless_comp.h"
 #include "layers_comp.h"
+#include "virtual_comp.h"
 
 namespace {
 
@@ -55,25 +57,28 @@ uint16_t to_half(float v)
     return uint16_t(((bits >> 16) & 0x8000) | (uint32_t(exponent) << 10) | ((bits >> 13) & 0x3ff));
 }
 
-// One image (`colours.size()` layers), every level of layer k filled with colours[k].
-Image upload_constant_layers(const Context& context, const std::vector<Rgba>& colours)
+// A square image of side `side` (a power of two), `levels` levels and `layers` layers, texel (x, y) of
+// `level` in `layer` = texel(level, layer, x, y).
+template <class Texel>
+Image upload_image(const Context& context, uint32_t side, uint32_t levels, uint32_t layers, Texel texel)
 {
-    const uint32_t layers = uint32_t(colours.size());
-    Image image = create_image(context, FORMAT, SIZE, SIZE, LEVELS, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+    Image image = create_image(context, FORMAT, side, side, levels, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                layers);
     VkDeviceSize total = 0;
-    for (uint32_t level = 0; level < LEVELS; ++level)
-        total += VkDeviceSize(SIZE >> level) * (SIZE >> level) * 4 * sizeof(uint16_t) * layers;
+    for (uint32_t level = 0; level < levels; ++level)
+        total += VkDeviceSize(side >> level) * (side >> level) * 4 * sizeof(uint16_t) * layers;
     Buffer staging = create_host_buffer(context, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     auto* words = static_cast<uint16_t*>(staging.mapped);
     std::vector<VkBufferImageCopy> regions;
     VkDeviceSize offset = 0;
-    for (uint32_t level = 0; level < LEVELS; ++level) {
-        const uint32_t size = SIZE >> level;
+    for (uint32_t level = 0; level < levels; ++level) {
+        const uint32_t size = side >> level;
         for (uint32_t layer = 0; layer < layers; ++layer) {
-            for (uint32_t t = 0; t < size * size; ++t)
+            for (uint32_t t = 0; t < size * size; ++t) {
+                const Rgba colour = texel(level, layer, t % size, t / size);
                 for (uint32_t c = 0; c < 4; ++c)
-                    words[offset / 2 + t * 4 + c] = to_half(colours[layer].c[c]);
+                    words[offset / 2 + t * 4 + c] = to_half(colour.c[c]);
+            }
             regions.push_back({.bufferOffset = offset,
                                .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, layer, 1},
                                .imageExtent = {size, size, 1}});
@@ -93,11 +98,75 @@ Image upload_constant_layers(const Context& context, const std::vector<Rgba>& co
     return image;
 }
 
-// One descriptor of a binding: an image view and/or a sampler, or (view and sampler null) the results buffer.
+// One image (`colours.size()` layers), every level of layer k filled with colours[k].
+Image upload_constant_layers(const Context& context, const std::vector<Rgba>& colours)
+{
+    return upload_image(context, SIZE, LEVELS, uint32_t(colours.size()),
+                        [&](uint32_t, uint32_t layer, uint32_t, uint32_t) { return colours[layer]; });
+}
+
+// atlas.comp.glsl's atlas: ATLAS_GRID x ATLAS_GRID tiles of SIZE^2 texels, tile k (row by row) one colour,
+// layer_colour(k), on each of its own levels (at origin >> l of the atlas's level l); the atlas's last level,
+// smaller than a tile's last, is never read through a tile: it holds tile 0's colour.
+constexpr uint32_t ATLAS_GRID = 2;
+Image upload_atlas(const Context& context)
+{
+    const uint32_t side = ATLAS_GRID * SIZE;
+    return upload_image(context, side, LEVELS + 1, 1, [](uint32_t level, uint32_t, uint32_t x, uint32_t y) {
+        const uint32_t tile = SIZE >> level;
+        return layer_colour(tile == 0 ? 0 : int32_t((y / tile) * ATLAS_GRID + x / tile));
+    });
+}
+
+// virtual.comp.glsl's textures and pages: VIRTUAL_TEXTURES textures of SIZE^2 texels (LEVELS levels), texture
+// j all texture_colour(j), cut into PAGE^2 pages that lie scattered in one physical texture of
+// PHYSICAL_PAGES^2 pages; the page table as the shader's two buffers declare it (std430).
+constexpr uint32_t PAGE = 4, PHYSICAL_PAGES = 8, MAX_LEVELS = 8; // virtual.comp.glsl's PAGE and MAX_LEVELS
+constexpr int32_t VIRTUAL_TEXTURES = 2;
+const Rgba UNUSED_PAGE = {{1.0f, 0.0f, 1.0f, 1.0f}};
+struct VirtualLevel {
+    int32_t width, height, pagesPerRow, firstEntry;
+};
+struct VirtualTexture {
+    int32_t levels, pad; // std430: level[] is 8-byte aligned (its struct's largest member, an ivec2)
+    VirtualLevel level[MAX_LEVELS];
+};
+static_assert(sizeof(VirtualTexture) == 136, "virtual.comp.glsl's VirtualTexture in std430");
+struct VirtualPages {
+    std::vector<VirtualTexture> textures;
+    std::vector<uint32_t> entries;  // physical page x | y << 16
+    std::vector<int32_t> pageOwner; // the texture whose page lies at physical page n (row by row), or -1
+};
+VirtualPages make_virtual_pages()
+{
+    VirtualPages v;
+    v.pageOwner.assign(PHYSICAL_PAGES * PHYSICAL_PAGES, -1);
+    uint32_t n = 0;
+    for (int32_t t = 0; t < VIRTUAL_TEXTURES; ++t) {
+        VirtualTexture texture{.levels = int32_t(LEVELS)};
+        for (uint32_t l = 0; l < LEVELS; ++l) {
+            const uint32_t size = SIZE >> l, pages = (size + PAGE - 1) / PAGE;
+            texture.level[l] = {int32_t(size), int32_t(size), int32_t(pages), int32_t(v.entries.size())};
+            for (uint32_t p = 0; p < pages * pages; ++p, ++n) {
+                const uint32_t slot = (n * 29u + 11u) % (PHYSICAL_PAGES * PHYSICAL_PAGES); // 29 is odd: distinct slots
+                v.entries.push_back((slot % PHYSICAL_PAGES) | (slot / PHYSICAL_PAGES) << 16);
+                v.pageOwner[slot] = t;
+            }
+        }
+        v.textures.push_back(texture);
+    }
+    if (n > PHYSICAL_PAGES * PHYSICAL_PAGES)
+        fail("virtual textures: " + std::to_string(n) + " pages do not fit the physical texture");
+    return v;
+}
+
+// One descriptor of a binding: image views and/or samplers (one per array element), or a storage buffer.
 struct Resource {
     VkDescriptorType type;
-    std::vector<VkDescriptorImageInfo> images; // one per array element; empty for the buffer
+    std::vector<VkDescriptorImageInfo> images; // empty for a buffer
+    VkDescriptorBufferInfo buffer{};           // VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
 };
+uint32_t descriptor_count(const Resource& r) { return r.images.empty() ? 1u : uint32_t(r.images.size()); }
 
 // Runs `code` (PROBES invocations) with `resources` at bindings 0, 1, ... and the results buffer after them,
 // push constant `count`; returns the PROBES * RESULTS vec4s it wrote.
@@ -109,8 +178,8 @@ std::vector<float> run_probes(const Context& context, const uint32_t* code, size
     std::vector<VkDescriptorSetLayoutBinding> bindings;
     std::vector<VkDescriptorPoolSize> poolSizes;
     for (const Resource& r : resources) {
-        bindings.push_back({uint32_t(bindings.size()), r.type, uint32_t(r.images.size()), VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
-        poolSizes.push_back({r.type, uint32_t(r.images.size())});
+        bindings.push_back({uint32_t(bindings.size()), r.type, descriptor_count(r), VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+        poolSizes.push_back({r.type, descriptor_count(r)});
     }
     bindings.push_back({uint32_t(bindings.size()), VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
     poolSizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1});
@@ -129,8 +198,9 @@ std::vector<float> run_probes(const Context& context, const uint32_t* code, size
     std::vector<VkWriteDescriptorSet> writes;
     for (uint32_t b = 0; b < resources.size(); ++b)
         writes.push_back({.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, .dstSet = set, .dstBinding = b,
-                          .descriptorCount = uint32_t(resources[b].images.size()), .descriptorType = resources[b].type,
-                          .pImageInfo = resources[b].images.data()});
+                          .descriptorCount = descriptor_count(resources[b]), .descriptorType = resources[b].type,
+                          .pImageInfo = resources[b].images.empty() ? nullptr : resources[b].images.data(),
+                          .pBufferInfo = resources[b].images.empty() ? &resources[b].buffer : nullptr});
     VkDescriptorBufferInfo resultsInfo{results.buffer, 0, VK_WHOLE_SIZE};
     writes.push_back({.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, .dstSet = set, .dstBinding = uint32_t(resources.size()),
                       .descriptorCount = 1, .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, .pBufferInfo = &resultsInfo});
@@ -263,6 +333,40 @@ int main(int argc, char**)
         std::printf("bindless: skipped, %s lacks descriptor indexing:%s\n", context.properties.deviceName,
                     context.bindlessMissing.c_str());
     }
+
+    // Texel sources (TF_SOURCE): an atlas's tiles with repeat wrap inside each tile, and virtual textures
+    // through a page table. Manual filters only, so the manual bound.
+    Image atlas = upload_atlas(context);
+    values = run_probes(context, atlas_comp, sizeof atlas_comp,
+                        {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {{sampler, atlas.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}}}},
+                        int32_t(ATLAS_GRID));
+    auto tileWanted = [](uint32_t i) { return layer_colour(int32_t((i * 5u) % (ATLAS_GRID * ATLAS_GRID))); };
+    status |= !check("atlas tile (TF_SOURCE AtlasTile), tf_trilinear, repeat in the tile", values, 0, manualBound, tileWanted);
+    status |= !check("atlas tile (TF_SOURCE AtlasTile), tf_ewa, repeat in the tile", values, 1, manualBound, tileWanted);
+    destroy_image(context, atlas);
+
+    const VirtualPages pages = make_virtual_pages();
+    Image physical = upload_image(context, PHYSICAL_PAGES * PAGE, 1, 1, [&](uint32_t, uint32_t, uint32_t x, uint32_t y) {
+        const int32_t owner = pages.pageOwner[(y / PAGE) * PHYSICAL_PAGES + x / PAGE];
+        return owner < 0 ? UNUSED_PAGE : texture_colour(owner);
+    });
+    const VkDeviceSize tableBytes = pages.textures.size() * sizeof(VirtualTexture);
+    const VkDeviceSize entryBytes = pages.entries.size() * sizeof(uint32_t);
+    Buffer table = create_host_buffer(context, tableBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    Buffer entries = create_host_buffer(context, entryBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    std::memcpy(table.mapped, pages.textures.data(), tableBytes);
+    std::memcpy(entries.mapped, pages.entries.data(), entryBytes);
+    values = run_probes(context, virtual_comp, sizeof virtual_comp,
+                        {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {{sampler, physical.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}}},
+                         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, {}, {table.buffer, 0, VK_WHOLE_SIZE}},
+                         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, {}, {entries.buffer, 0, VK_WHOLE_SIZE}}},
+                        VIRTUAL_TEXTURES);
+    auto virtualWanted = [](uint32_t i) { return texture_colour(int32_t((i * 7u) % uint32_t(VIRTUAL_TEXTURES))); };
+    status |= !check("virtual texture (TF_SOURCE int), tf_trilinear, mirror", values, 0, manualBound, virtualWanted);
+    status |= !check("virtual texture (TF_SOURCE int), tf_ewa, mirror", values, 1, manualBound, virtualWanted);
+    destroy_buffer(context, entries);
+    destroy_buffer(context, table);
+    destroy_image(context, physical);
 
     vkDestroySampler(context.device, sampler, nullptr);
     destroy_context(context);

@@ -390,6 +390,80 @@ sample_resources() {
     expect_success "sample: --stochastic on an array (reference)" ok_stochastic_array.csv -- \
         "$TEXFILTER" sample --texture checker --filter trilinear --stochastic blue --resource array \
         --backend reference --lookups good.csv -o ok_stochastic_array.csv
+    # The texel-source kinds (atlas, virtual): manual taps only; the hardware sampler only on the atlas.
+    local t=("$TEXFILTER" sample --texture checker --backend reference --lookups good.csv)
+    expect_success "sample: --resource atlas, hw-trilinear (reference)" ok_atlas.csv -- \
+        "${t[@]}" --filter hw-trilinear --resource atlas -o ok_atlas.csv
+    expect_success "sample: --resource virtual, ewa (reference)" ok_virtual.csv -- \
+        "${t[@]}" --filter ewa --resource virtual -o ok_virtual.csv
+    expect_error "sample: sat on an atlas" "--resource atlas cannot run --filter sat: the summed-area table" out.csv -- \
+        "${t[@]}" --filter sat --resource atlas -o out.csv
+    expect_error "sample: --taps hardware on a virtual texture" "--resource virtual cannot run --taps hardware" \
+        out.csv -- "${t[@]}" --filter aniso --taps hardware --resource virtual -o out.csv
+    expect_error "sample: hw-bilinear on a virtual texture" "--resource virtual cannot run --filter hw-bilinear" \
+        out.csv -- "${t[@]}" --filter hw-bilinear --resource virtual -o out.csv
+    expect_error "sample: an atlas past 16384 a side" "a 16384x16384 texture needs an atlas of 32768x32768 texels" \
+        out.csv -- "${t[@]}" --filter trilinear --resource atlas --texture-size 16384 -o out.csv
+    expect_error "sample: the atlas counts in --memory-budget" "1 lookups and the atlas" out.csv -- \
+        "$TEXFILTER" sample --texture checker --texture-size 512 --backend reference --lookups good.csv \
+        --filter trilinear --resource atlas --memory-budget 8M -o out.csv
+}
+
+# sample --spirv FILE (a lookup shader from another compiler): refused before any work, one message naming the
+# file and what is wrong with it; a module with the sample pass's interface runs (glslangValidator makes both).
+sample_spirv() {
+    local s=("$TEXFILTER" sample --texture checker --filter nearest --lookups good.csv)
+    expect_error "sample --spirv: missing file" "missing.spv: cannot open the SPIR-V file" out.csv -- \
+        "${s[@]}" --spirv missing.spv -o out.csv
+    # refused DESCRIPTION FILE CONTENT EXPECTED: FILE written with printf CONTENT, then refused saying EXPECTED.
+    refused() {
+        printf "$3" >"$2"
+        expect_error "sample --spirv: $1" "$4" out.csv -- "${s[@]}" --spirv "$2" -o out.csv
+    }
+    refused "empty file" empty.spv '' "empty.spv: empty (expected a SPIR-V module)"
+    refused "not whole words" odd.spv 'not spirv' "odd.spv: 9 bytes, not a whole number of 32-bit words"
+    refused "no magic number" text.spv 'not a module' "text.spv: not a SPIR-V module (no SPIR-V magic number)"
+    refused "the other byte order" swapped.spv '\x07\x23\x02\x03\x00\x05\x01\x00' \
+        "swapped.spv: not a SPIR-V module (the other byte order"
+    refused "a header and nothing else" header_only.spv \
+        '\x03\x02\x23\x07\x00\x05\x01\x00\x00\x00\x00\x00\x05\x00\x00\x00\x00\x00\x00\x00' \
+        "header_only.spv: not valid SPIR-V for Vulkan 1.2 ("
+    expect_error "sample --spirv: a directory" "is a directory" out.csv -- "${s[@]}" --spirv . -o out.csv
+    expect_error "sample --spirv with the reference backend" "--spirv is the device's lookup shader: it needs --backend vulkan" \
+        out.csv -- "${s[@]}" --backend reference --spirv empty.spv -o out.csv
+    expect_error "sample --spirv with --resource separate" "--spirv replaces the combined kind's shader" out.csv -- \
+        "${s[@]}" --resource separate --spirv empty.spv -o out.csv
+    expect_error "sample --spirv with an integer format" "--format r16ui is read through the integer build" out.csv -- \
+        "${s[@]}" --format r16ui --spirv empty.spv -o out.csv
+    # Modules that are valid SPIR-V but not a sample shader.
+    local interface='layout(set = 0, binding = 1, std430) readonly buffer L { float lookups[]; };
+layout(set = 0, binding = 2, std430) writeonly buffer R { vec4 results[]; };
+layout(set = 0, binding = 3, std430) writeonly buffer S { uvec2 stats[]; };
+layout(push_constant, std430) uniform P { int wrapMode; float lodBias, lodMin, lodMax; uint count; } pc;'
+    printf '#version 450\nlayout(location = 0) out vec4 c;\nvoid main() { c = vec4(1.0); }\n' >frag.frag
+    printf '#version 450\nlayout(local_size_x = 64) in;\n%s\nlayout(set = 0, binding = 7) uniform sampler2D extra;\nvoid main() { results[0] = texelFetch(extra, ivec2(0), 0) + lookups[0]; }\n' \
+        "$interface" >binding7.comp
+    printf '#version 450\n#extension GL_EXT_samplerless_texture_functions : require\nlayout(local_size_x = 64) in;\n%s\nlayout(set = 0, binding = 0) uniform texture2D t;\nvoid main() { results[0] = vec4(textureSize(t, 0), 0, 0) + lookups[0]; }\n' \
+        "$interface" >sampled.comp
+    printf '#version 450\nlayout(local_size_x = 64) in;\n%s\nvoid main() { uint i = gl_GlobalInvocationID.x; if (i < pc.count) { results[i] = vec4(lookups[6u * i]); stats[i] = uvec2(0u); } }\n' \
+        "$interface" >good.comp
+    for shader in frag.frag binding7.comp sampled.comp good.comp; do
+        glslangValidator -V --target-env vulkan1.2 "$shader" -o "${shader%.*}.spv" >/dev/null ||
+            fail "sample --spirv: glslangValidator $shader" "the test's own shader does not compile"
+    done
+    expect_error "sample --spirv: a fragment shader" "frag.spv: has no GLCompute entry point named 'main'" out.csv -- \
+        "${s[@]}" --spirv frag.spv -o out.csv
+    expect_error "sample --spirv: a binding the pass lacks" "binding7.spv: a resource at binding 7, which the sample pass does not bind" out.csv -- \
+        "${s[@]}" --spirv binding7.spv -o out.csv
+    expect_error "sample --spirv: a sampled image where the pass binds a combined one" \
+        "sampled.spv: binding 0 is a sampled image; the sample pass binds a combined image sampler there" out.csv -- \
+        "${s[@]}" --spirv sampled.spv -o out.csv
+    if "$TEXFILTER" info >/dev/null 2>&1; then
+        expect_success "sample --spirv: a module with the pass's interface runs" ok_spirv.csv -- \
+            "${s[@]}" --spirv good.spv -o ok_spirv.csv
+    else
+        skip "sample --spirv: a module with the pass's interface runs" "no Vulkan device here"
+    fi
 }
 
 diff_contract() {
@@ -1384,7 +1458,7 @@ for i in range(200000): print('0.5,0.5,0.01,0,0,0.01')" >many.csv
 }
 
 # The groups, in order; ctest runs each as its own entry (bad_inputs.GROUP), listed by --list.
-CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_resources diff_contract ground_truth_and_bench_errors
+CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_resources sample_spirv diff_contract ground_truth_and_bench_errors
     golden_errors vulkan_errors golden_output_directory outputs_and_inputs unwritable_outputs
     signals_remove_temporaries truncated_images memory_budgets lookups_and_texels reproducible_outputs
     bad_formats gpu_builds environment_maps

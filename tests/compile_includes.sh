@@ -22,6 +22,9 @@
 #   - texfilter.glsl with every overridable define set before including (TF_COUNT_FETCHES,
 #     TF_COUNT_HW_LOOKUPS, TF_EWA_MAX_TEXELS, TF_ANISO_RATIO_SLACK, TF_MAGNIFY; TF_COMPUTE_QUADS in compute), 460,
 #     all three stages.
+# Each public include's layout is checked too (check_layout): its guard, line 1, relative includes, and its
+# header block as a contract (check_header_contract: the labels Use, Options, Needs, Cost, Degenerate input,
+# Example in that order, no dates, dB, issue numbers or driver names).
 # Prints one line per compile; exits non-zero if any fails.
 set -euo pipefail
 
@@ -200,11 +203,46 @@ check_layout() {
         printf 'FAIL  %-17s %s\n' "header" "$name.glsl: line 1 is not '// texfilter/$name.glsl — what it does'"
         failures=$((failures + 1))
     fi
+    check_header_contract "$file" "$name"
     if grep -n '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]\(texfilter/\|\.\./\|/\)' "$file"; then
         printf 'FAIL  %-17s %s\n' "relative" "$name.glsl: include dependencies by bare name (\"common.glsl\")"
         failures=$((failures + 1))
     else
         printf 'ok    %-17s %s\n' "relative" "$name.glsl"
+    fi
+}
+
+# The header block (the leading `//` lines) is the include's contract: the labels below, in this order, each
+# opening a line ("// Use:"; a file without such a concern writes "none" after the label), and no lab notes
+# (dates, dB, issue numbers, driver or GPU names, error figures), which belong in docs/DESIGN.md.
+header_labels=("Use:" "Options:" "Needs:" "Cost:" "Degenerate input:" "Example:")
+header_banned='20[0-9][0-9]-[0-9][0-9]|\<dB\>|[Ii]ssue [0-9]+|lavapipe|llvmpipe|Mesa|NVIDIA|H100|H200|RMSE|PSNR'
+check_header_contract() {
+    local file=$1 name=$2 header label line previous=0 problems=()
+    header=$(awk '/^\/\// { print; next } { exit }' "$file")
+    for label in "${header_labels[@]}"; do
+        line=$(grep -n -m 1 "^// $label" <<<"$header" | cut -d: -f1 || true)
+        if [[ -z $line ]]; then
+            problems+=("no '// $label' line")
+        elif ((line < previous)); then
+            problems+=("'$label' comes before the label it should follow")
+        else
+            previous=$line
+        fi
+    done
+    local banned
+    banned=$(grep -n -o -E "$header_banned" <<<"$header" | tr '\n' ' ' || true)
+    if [[ -n $banned ]]; then
+        problems+=("lab notes in the header (docs/DESIGN.md holds them): $banned")
+    fi
+    if ((${#problems[@]} == 0)); then
+        printf 'ok    %-17s %s\n' "contract" "$name.glsl header: ${header_labels[*]}"
+    else
+        local problem
+        for problem in "${problems[@]}"; do
+            printf 'FAIL  %-17s %s\n' "contract" "$name.glsl header: $problem"
+        done
+        failures=$((failures + 1))
     fi
 }
 
@@ -219,11 +257,16 @@ check() {
 
 shopt -s nullglob
 includes=("$INCLUDE_DIR"/texfilter/*.glsl)
-if [[ ${#includes[@]} -eq 0 ]]; then
-    echo "FAIL: no includes found in $INCLUDE_DIR/texfilter" >&2
+internal_includes=("$INCLUDE_DIR"/texfilter/detail/*.glsl)
+if [[ ${#includes[@]} -eq 0 || ${#internal_includes[@]} -eq 0 ]]; then
+    echo "FAIL: no includes found in $INCLUDE_DIR/texfilter or its detail/" >&2
     exit 1
 fi
-if [[ -n $ONLY && $ONLY != options ]]; then
+if [[ $ONLY == detail ]]; then
+    includes=("${internal_includes[@]}")
+elif [[ -z $ONLY ]]; then
+    includes+=("${internal_includes[@]}")
+elif [[ $ONLY != options ]]; then
     if [[ ! -f $INCLUDE_DIR/texfilter/$ONLY.glsl ]]; then
         echo "FAIL: no include $INCLUDE_DIR/texfilter/$ONLY.glsl" >&2
         exit 1
@@ -233,12 +276,11 @@ elif [[ $ONLY == options ]]; then
     includes=()
 fi
 
-# The access layer's internal files (access, family, instantiate: re-included once per resource kind, so no
-# guard) are not for users: each must open with its header comment, say "internal", and refuse to compile
-# when included on its own (outside a family file's instantiation).
-internal_files=(access family instantiate)
+# The internal files (texfilter/detail/: the access layer and each family's per-kind part, re-included once per
+# resource kind, so no guard; compile_includes.detail) are not for users: each must open with its header
+# comment, say "internal", and refuse to compile when included on its own (outside a family's instantiation).
 check_internal() {
-    local file=$1 name=$2 shader="$WORK/internal_$2.frag"
+    local file=$1 name=detail/$2 shader="$WORK/internal_$2.frag"
     if head -1 "$file" | grep -q "^// texfilter/$name.glsl — internal"; then
         printf 'ok    %-17s %s\n' "header" "$name.glsl (internal)"
     else
@@ -324,7 +366,7 @@ check_builder() {
 
 for file in "${includes[@]}"; do
     name=$(basename "$file" .glsl)
-    if [[ " ${internal_files[*]} " == *" $name "* ]]; then
+    if [[ $file == */texfilter/detail/* ]]; then
         check_internal "$file" "$name"
         continue
     fi

@@ -79,6 +79,16 @@ KINDS = {
                       forms=[dict(T="shadowTex", X=", dref", manual=False, queries=False, hw=True),
                              dict(T="depth, smp", X=", dref", manual=False, queries=False, hw=True)]),
 }
+# The user's texel source (docs/API.md "Texel sources"): TF_SOURCE, not a TF_RESOURCES bit. A tile of an atlas
+# as the user declares it before the include; its shader calls every manual family with `src`.
+KINDS["source"] = dict(bit=None, textures=[],
+                       forms=[dict(T="src", X="", manual=True, queries=True, hw=False)])
+SOURCE_PRELUDE = """layout(set = 0, binding = 7) uniform sampler2D atlas;
+struct Tile { ivec2 origin, size; int levels; };
+#define TF_SOURCE Tile
+ivec2 tf_source_size(Tile t, int level) { return max(t.size >> level, ivec2(1)); }
+int tf_source_levels(Tile t) { return t.levels; }
+vec4 tf_source_fetch(Tile t, ivec2 texel, int level) { return texelFetch(atlas, (t.origin >> level) + texel, level); }"""
 SAMPLER_TYPES = ("sampler", "samplerShadow")
 BITS = {"TF_RESOURCE_SAMPLER_2D": 1, "TF_RESOURCE_TEXTURE_2D": 2, "TF_RESOURCE_SAMPLER_2D_ARRAY": 4,
         "TF_RESOURCE_TEXTURE_2D_ARRAY": 8, "TF_RESOURCE_INTEGER": 16, "TF_RESOURCE_SHADOW": 32,
@@ -127,6 +137,8 @@ def shader(kind, stage, prelude="", bindless=False):
         lines.append("#extension GL_EXT_ray_tracing : require")
     if bindless:
         lines.append("#extension GL_EXT_nonuniform_qualifier : require")
+    if kind == "source":
+        prelude = SOURCE_PRELUDE + "\n" + prelude
     lines += [prelude, '#include "texfilter/texfilter.glsl"']
     expr = "".join(f"\n    r += {c};" for c in calls(kind))
     for binding, (type_, name) in enumerate(KINDS[kind]["textures"], start=8):
@@ -140,6 +152,8 @@ def shader(kind, stage, prelude="", bindless=False):
     float dref = uv.x;
     tf_Compare cmp = tf_compare(TF_COMPARE_LESS_OR_EQUAL, dref);
     tf_Sampler s = tf_sampler(TF_WRAP_REPEAT);"""
+    if kind == "source":
+        body += "\n    Tile src = Tile(ivec2(256 * k, 0), ivec2(200, 120), 8);"
     if stage == "frag":
         lines.append(f"""layout(location = 0) in vec2 uv;
 layout(location = 0) out vec4 outColor;
@@ -229,7 +243,8 @@ ERROR_LINE = re.compile(r"^(ERROR: |.*: error: )(?!.*compilation (errors|termina
 
 def run_resources(tools, kind):
     ok = True
-    bit = BITS[KINDS[kind]["bit"]]
+    # The texel source: alone with TF_RESOURCES 0; "all but its kind" is every bit with TF_SOURCE left undefined.
+    bit = BITS[KINDS[kind]["bit"]] if kind != "source" else 0
     others = ALL_BITS & ~bit
     for compiler in COMPILERS:
         only = shader(kind, "frag", f"#define TF_RESOURCES {bit}")
@@ -238,6 +253,8 @@ def run_resources(tools, kind):
         if not good:
             show_failure(log, only)
         without = shader(kind, "frag", f"#define TF_RESOURCES {others}")
+        if kind == "source":
+            without = without.replace("#define TF_SOURCE Tile\n", "")
         compiled, log, _ = tools.compile(compiler, without, "frag")
         errors = [l for l in log.splitlines() if re.search(r"\berror\b|^ERROR:", l)
                   and not re.search(r"compilation (errors|terminated)|^\d+ errors? generated|error\(s\)", l)]
@@ -347,7 +364,7 @@ def run_nonuniform(tools, kind):
 def groups():
     out = [f"compile.{k}.{s}.{c}" for k in KINDS for s in KINDS[k].get("stages", STAGES) for c in COMPILERS]
     out += [f"resources.{k}" for k in KINDS]
-    out += [f"nonuniform.{k}" for k in KINDS]
+    out += [f"nonuniform.{k}" for k in KINDS if k != "source"]  # a source's fetch is the user's code
     return out
 
 

@@ -1,7 +1,8 @@
 # Writes OUTPUT: one add_test a test case of EXECUTABLE (its ctest reporter's listing, tests/test_main.cpp),
 # named PREFIX + the case's name, or one a named check of a case that has them (--tf-list-checks,
-# tests/support.h), labelled LABELS + the words of its suite, with ENVIRONMENT.
-# cmake -D EXECUTABLE=... -D PREFIX=... -D LABELS=... -D ENVIRONMENT=... -D NAMED_CHECKS=ON|OFF -D OUTPUT=...
+# tests/support.h), labelled LABELS + the words of its suite, with ENVIRONMENT, requiring FIXTURES (if any).
+# cmake -D EXECUTABLE=... -D PREFIX=... -D LABELS=... -D ENVIRONMENT=... -D NAMED_CHECKS=ON|OFF [-D FIXTURES=...]
+#       -D OUTPUT=...
 #       -P list_doctest_cases.cmake
 cmake_minimum_required(VERSION 3.22) # IN_LIST, bracket arguments
 execute_process(COMMAND ${EXECUTABLE} --list-test-cases --reporters=ctest --no-intro=true
@@ -55,6 +56,9 @@ foreach(line IN LISTS lines)
     string(APPEND script "add_test([==[${test}]==] [==[${EXECUTABLE}]==] [==[--test-case=${case}]==] ${subcase})\n"
            "set_tests_properties([==[${test}]==] PROPERTIES ENVIRONMENT [==[${ENVIRONMENT}]==]"
            " LABELS [==[${labels}]==] SKIP_REGULAR_EXPRESSION [==[SKIP: .* lacks ]==])\n")
+    if(FIXTURES)
+      string(APPEND script "set_tests_properties([==[${test}]==] PROPERTIES FIXTURES_REQUIRED [==[${FIXTURES}]==])\n")
+    endif()
   endforeach()
 endforeach()
 if(names STREQUAL "")

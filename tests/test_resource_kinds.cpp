@@ -4,24 +4,8 @@
 // filtering by hand (bilinear, trilinear on the shadow resource) against the hardware comparison sampler
 // (hw-bilinear, hw-trilinear through sampler2DShadow) on the same lookups.
 //
-// Bounds, per lookup:
-// - manual forms (texelFetch): float rounding. The shader works in float on float input: a result is a
-//   normalised sum of n taps (n = the lookup's fetches + hardware lookups, from --stats) of values in
-//   [0, 1], each adding one ulp, plus 16 ulp for the LOD, blend and normalisation (2n + 16 ulp; EWA's
-//   weights add 2.5 (3 + 6 alpha R^2) ulp, as tests/test_ewa.cpp derives). Where the result jumps under a
-//   tiny change of the footprint (a level edge, an aniso probe count, a texel at the EWA support's edge:
-//   float lambda or ratio on the other side), the reference's own spread under the footprint scaled by
-//   1 ± 1e-5 (both columns, and each column alone: lambda and the axis ratio move by ~1.4e-5, far more than
-//   float's 1e-7) is allowed on top. aniso and ewa also place their taps in float (probe k at
-//   uv + t_k axis; EWA's texel offsets from uv): 2 roundings of ulp(max(|u|, |v|) + 1) in uv, times the
-//   level-0 side in texels, move a bilinear tap by that much, i.e. its value by that times
-//   (across + down) <= 2 adjacent: 4 2^-24 (max(|u|, |v|) + 1) size adjacent.
-// - hardware taps (--taps hardware): the sampler's rounding on top: bilinear weights to
-//   subTexelPrecisionBits (a step 2^-s in each of alpha and beta: 2^-s (across + down) <= 2 2^-s adjacent,
-//   plus one more step as tests/test_hw_vs_manual.cpp allows: 3 2^-s adjacent), a tap's float texel
-//   position (2 2^-14 adjacent, as test_ewa), and for aniso's trilinear probes at an explicit LOD the level
-//   blend quantised to mipmapPrecisionBits (2^-m times the largest difference between two levels' values,
-//   <= 1 for [0, 1] data). adjacent = the largest difference of neighbouring texels on any level.
+// Bounds, per lookup: tests/sample_checks.cpp derives them (float rounding of the manual forms, the sampler's
+// sub-texel and mipmap precision for hardware taps, the reference's own spread at level edges).
 // Each layered check also asserts that it can fail: on most lookups the right texture's result is further
 // from the one a wrong layer / index would give than the bound (distinct layer content).
 #include "core/procedural.h"
@@ -32,6 +16,7 @@
 #include "reference/resources.h"
 #include "reference/stochastic.h"
 #include "device_lod.h"
+#include "sample_checks.h"
 #include "support.h"
 #include "vulkan/resource_images.h"
 
@@ -45,35 +30,9 @@
 
 using namespace tf;
 using tf::test::max_channel_diff;
+using namespace tf::test::sample;
 
 namespace {
-
-constexpr int kSize = 64;                // texture side: small, so every run is cheap
-constexpr double kUlp = 1.0 / 16777216.0; // 2^-24
-constexpr double kSupport = 2.0;         // TF_EWA_SUPPORT (R^2)
-
-std::string g_texfilter;
-std::filesystem::path g_work;
-
-// 256 lookups: footprints from 1/4 texel to 64 texels of the 64^2 texture, up to 4:1, uv in [-1, 2].
-const std::vector<Lookup>& lookups()
-{
-    static const std::vector<Lookup> all = test::as_float(test::random_footprint_lookups(
-        256, 1313, {.octave_min = -2.0, .octave_max = 6.0, .max_stretch = 2.0, .texture_size = double(kSize)}));
-    return all;
-}
-
-const std::string& lookups_path()
-{
-    static const std::string path = [] {
-        g_texfilter = test::texfilter_path();
-        g_work = test::make_work_dir("resources");
-        const std::string p = (g_work / "lookups.csv").string();
-        test::write_lookups_csv(p, lookups());
-        return p;
-    }();
-    return path;
-}
 
 // What the test device offers for the kinds lavapipe 22.3 lacks: non-uniform indexing of sampled-image
 // arrays (bindless), linear filtering of D32_SFLOAT (the hardware's bilinear/trilinear comparison). A
@@ -99,158 +58,6 @@ bool skip(bool missing, const std::string& what)
     if (missing)
         std::printf("SKIP: %s lacks %s\n", test::test_device_info().name.c_str(), what.c_str());
     return missing;
-}
-
-double sub_texel_step() { return std::ldexp(1.0, -int(test::test_device_info().sub_texel_precision_bits)); }
-double mipmap_step() { return std::ldexp(1.0, -int(test::test_device_info().mipmap_precision_bits)); }
-
-struct Case {
-    std::string texture = "noise";
-    std::string flags;            // the filter's flags
-    SamplerOptions options;       // the same, for the reference
-    ResourceOptions resource;
-};
-
-std::string resource_flags(const ResourceOptions& r)
-{
-    std::string f = " --resource " + to_string(r.resource);
-    if (is_layered(r.resource))
-        f += " --layers " + std::to_string(r.layers) + " --layer " + std::to_string(r.layer);
-    if (r.resource == Resource::shadow)
-        f += " --compare " + to_string(r.compare) + " --dref " + test::show(double(r.dref));
-    return f;
-}
-
-test::SampleResult gpu_run(const Case& c)
-{
-    const std::string path = lookups_path();
-    return test::run_sample(g_texfilter, g_work,
-                            "--texture " + c.texture + " --texture-size " + std::to_string(kSize) + " --wrap " +
-                                to_string(c.options.wrap) + " " + c.flags + resource_flags(c.resource),
-                            path, true);
-}
-
-std::vector<MipChain> chains_of(const Case& c) { return make_resource_chains(make_procedural(c.texture, kSize), c.resource); }
-
-std::vector<Lookup> scaled(std::vector<Lookup> ls, double x, double y)
-{
-    for (Lookup& l : ls) {
-        l.dudx *= x, l.dvdx *= x;
-        l.dudy *= y, l.dvdy *= y;
-    }
-    return ls;
-}
-
-// Largest neighbouring-texel difference on any level of any chain (wrapped).
-double adjacent_difference(const std::vector<MipChain>& chains, Wrap wrap)
-{
-    double d = 0;
-    for (const MipChain& chain : chains)
-        for (const Image& img : chain.levels)
-            for (int y = 0; y < img.height; ++y)
-                for (int x = 0; x < img.width; ++x) {
-                    const glm::dvec4 t(img.at(x, y));
-                    d = std::max({d, max_channel_diff(t, glm::dvec4(img.at(wrap_texel(x + 1, img.width, wrap), y))),
-                                  max_channel_diff(t, glm::dvec4(img.at(x, wrap_texel(y + 1, img.height, wrap))))});
-                }
-    return d;
-}
-
-struct Outcome {
-    std::vector<glm::dvec4> reference;
-    std::vector<double> bound;
-};
-
-// The reference for c's lookups and the bound of each (see the top).
-Outcome reference_and_bounds(const Case& c, const std::vector<MipChain>& chains, const test::SampleResult& gpu)
-{
-    const std::vector<Lookup>& ls = lookups();
-    Outcome o;
-    o.reference = reference_sample_resource(chains, ls, c.options, c.resource);
-    std::vector<double> spread(ls.size(), 0.0);
-    for (auto [x, y] : {std::pair{1 + 1e-5, 1 + 1e-5}, {1 - 1e-5, 1 - 1e-5}, {1 + 1e-5, 1.0}, {1 - 1e-5, 1.0},
-                        {1.0, 1 + 1e-5}, {1.0, 1 - 1e-5}}) {
-        const auto moved = reference_sample_resource(chains, scaled(ls, x, y), c.options, c.resource);
-        for (size_t i = 0; i < ls.size(); ++i)
-            spread[i] = std::max(spread[i], max_channel_diff(moved[i], o.reference[i]));
-    }
-    const bool ewa = c.options.filter == Filter::ewa, hardware_taps = c.options.taps == Taps::hardware;
-    const double weights = ewa ? 2.5 * (3 + 6 * double(c.options.alpha) * kSupport) : 0.0;
-    double sampler = 0;
-    if (hardware_taps && (ewa || c.options.filter == Filter::aniso)) {
-        sampler = (3 * sub_texel_step() + 2 * std::exp2(-14)) * adjacent_difference(chains, c.options.wrap);
-        if (!ewa)
-            sampler += mipmap_step(); // the probes' level blend; values in [0, 1]
-    }
-    const bool float_taps = ewa || c.options.filter == Filter::aniso;
-    const double adjacent = float_taps ? adjacent_difference(chains, c.options.wrap) : 0.0;
-    for (size_t i = 0; i < ls.size(); ++i) {
-        const double n = gpu.stats[i].texel_fetches + gpu.stats[i].hardware_lookups;
-        const double position =
-            float_taps ? 4 * kUlp * (std::max(std::abs(ls[i].u), std::abs(ls[i].v)) + 1) * kSize * adjacent : 0.0;
-        o.bound.push_back(spread[i] + (16 + 2 * n + weights) * kUlp + position + sampler);
-    }
-    return o;
-}
-
-// GPU vs reference within the bound on every lookup; `wrong` (when given): what a wrong layer / index / an
-// unfiltered comparison would give, which must be further than the bound on at least `min_caught` of them.
-void check_case(const Case& c, const std::vector<std::vector<glm::dvec4>>& wrongs = {}, double min_caught = 0.9)
-{
-    const test::SampleResult gpu = gpu_run(c);
-    const std::vector<MipChain> chains = chains_of(c);
-    const Outcome o = reference_and_bounds(c, chains, gpu);
-    const std::string name = c.flags + resource_flags(c.resource);
-    CHECK(gpu.colors.size() == lookups().size(), name);
-    if (gpu.colors.size() != lookups().size())
-        return;
-    test::limit_failure_lines(8);
-    double worst = 0;
-    for (size_t i = 0; i < gpu.colors.size(); ++i) {
-        const double error = max_channel_diff(gpu.colors[i], o.reference[i]);
-        worst = std::max(worst, error / o.bound[i]);
-        CHECK(error <= o.bound[i], name + ": lookup " + std::to_string(i) + " GPU " + test::show(gpu.colors[i]) +
-                                       " reference " + test::show(o.reference[i]) + " bound " + test::show(o.bound[i]));
-    }
-    std::printf("%-90s worst error/bound %.3f\n", name.c_str(), worst);
-    for (const auto& wrong : wrongs) {
-        size_t caught = 0;
-        for (size_t i = 0; i < wrong.size(); ++i)
-            caught += max_channel_diff(wrong[i], o.reference[i]) > 2 * o.bound[i];
-        const double fraction = double(caught) / double(wrong.size());
-        std::printf("%-90s a wrong texture is caught on %.0f %% of the lookups\n", "", 100 * fraction);
-        CHECK(fraction >= min_caught, name + ": a wrong texture differs from the right one beyond the bound on " +
-                                          test::show(fraction) + " of the lookups");
-    }
-}
-
-SamplerOptions filter_options(Filter filter, Taps taps = Taps::manual, Wrap wrap = Wrap::repeat)
-{
-    SamplerOptions o;
-    o.filter = filter;
-    o.taps = taps;
-    o.wrap = wrap;
-    return o;
-}
-
-std::string filter_flags(const SamplerOptions& o)
-{
-    std::string f = "--filter " + to_string(o.filter);
-    if (o.filter == Filter::aniso || o.filter == Filter::ewa)
-        f += " --taps " + to_string(o.taps);
-    return f;
-}
-
-Case make_case(Resource resource, Filter filter, Taps taps = Taps::manual, int layers = 4, int layer = 2,
-               Wrap wrap = Wrap::repeat)
-{
-    Case c;
-    c.options = filter_options(filter, taps, wrap);
-    c.flags = filter_flags(c.options);
-    c.resource.resource = resource;
-    c.resource.layers = layers;
-    c.resource.layer = layer;
-    return c;
 }
 
 // The reference as if every lookup read texture `index` of the case's chains.
@@ -345,7 +152,7 @@ void check_pcf_hardware(Filter hw, Filter manual)
     const int top = int(lit.levels.size()) - 1;
     const double e = 2 * mipmap_step();
     const std::vector<double> device_lods =
-        manual == Filter::trilinear ? test::device_lods(g_texfilter, g_work, lookups_path(), ls, kSize) : std::vector<double>();
+        manual == Filter::trilinear ? test::device_lods(texfilter(), work_dir(), lookups_path(), ls, kSize) : std::vector<double>();
     test::limit_failure_lines(8);
     double worst = 0;
     int partial = 0;
@@ -389,56 +196,12 @@ void check_pcf_hardware(Filter hw, Filter manual)
           std::to_string(partial) + " lookups partly lit (nearest: lit)");
 }
 
-// sample --stochastic on a resource kind: row i draws the numbers of pixel (0, 0), lookup i, as with combined
-// (test_stochastic.cpp sample-backends), so the device and the reference of that kind pick the same texels except
-// where xi lies within float rounding of a weight boundary: at most 1 % of the rows may differ by more than 1e-5
-// (the cap sample-backends uses). It can fail: at least a quarter of the rows must be off the deterministic filter
-// (the estimate is noisy: it really is the stochastic form), and on a layered kind a reference that read another
-// texture must differ on most rows, as must one that drew another row's numbers (the row order of a bindless
-// batch, which reads its lookups' textures in groups, kept).
+// sample --stochastic on a resource kind (sample_checks.h).
 void check_stochastic(Resource resource, Filter filter, int layers = 4, int layer = 2)
 {
     if (resource == Resource::bindless && skip(!has_bindless(), "shaderSampledImageArrayNonUniformIndexing (bindless)"))
         return;
-    Case c = make_case(resource, filter, Taps::manual, layers, layer);
-    c.options.stochastic = true;
-    c.options.noise = Noise::white;
-    c.options.accumulate = 8;
-    c.flags += " --stochastic white --accumulate 8";
-    const test::SampleResult gpu = gpu_run(c);
-    const std::vector<MipChain> chains = chains_of(c);
-    const std::vector<Lookup>& ls = lookups();
-    const std::vector<glm::dvec4> cpu = reference_sample_resource(chains, ls, c.options, c.resource);
-    SamplerOptions deterministic = c.options;
-    deterministic.stochastic = false;
-    const std::vector<glm::dvec4> exact = reference_sample_resource(chains, ls, deterministic, c.resource);
-    const std::string name = c.flags + resource_flags(c.resource);
-    CHECK(gpu.colors.size() == ls.size(), name);
-    if (gpu.colors.size() != ls.size())
-        return;
-    auto share = [&](const std::vector<glm::dvec4>& a, const std::vector<glm::dvec4>& b, double tolerance) {
-        size_t n = 0;
-        for (size_t i = 0; i < ls.size(); ++i)
-            n += max_channel_diff(a[i], b[i]) > tolerance ? 1 : 0;
-        return double(n) / double(ls.size());
-    };
-    const double differ = share(gpu.colors, cpu, 1e-5), noisy = share(cpu, exact, 1e-3);
-    std::printf("%-90s rows differing %.4f, off the deterministic filter %.3f\n", name.c_str(), differ, noisy);
-    CHECK(differ <= 0.01, name + ": share of rows where device and reference differ: " + test::show(differ));
-    CHECK(noisy >= 0.25, name + ": share of rows off the deterministic filter (noise is there): " + test::show(noisy));
-    if (is_layered(resource)) {
-        ResourceOptions other = c.resource;
-        if (resource == Resource::bindless)
-            other.layer = (c.resource.layer + 1) % c.resource.layers;
-        else
-            other.layer = c.resource.layer == 0 ? 1 : 0;
-        const double caught = share(gpu.colors, reference_sample_resource(chains, ls, c.options, other), 1e-5);
-        CHECK(caught >= 0.5, name + ": a reference on other textures differs on only " + test::show(caught));
-    }
-    SamplerOptions shifted = c.options; // the same lookups drawing the next frames' numbers
-    shifted.stochastic_first = 8;
-    const double reseeded = share(gpu.colors, reference_sample_resource(chains, ls, shifted, c.resource), 1e-5);
-    CHECK(reseeded >= 0.25, name + ": other random numbers change only " + test::show(reseeded) + " of the rows");
+    tf::test::sample::check_stochastic(make_case(resource, filter, Taps::manual, layers, layer));
 }
 
 } // namespace

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Renders the pictures of docs/API.md with our own CLI: one per filter family on the same view (the
 # plane scene, a 512² checker, 256x256, the fragment stage with fine quad derivatives), the Gaussian-pixel
-# ground truth they are judged against, and three LOD pictures (mipcolors: each MIP level a flat colour).
+# ground truth they are judged against, three LOD pictures (mipcolors: each MIP level a flat colour), the
+# environment maps, and an atlas tile under the hardware sampler and through TF_SOURCE.
 #
 # usage: tools/api_pictures.sh [TEXFILTER]   (default: build/texfilter; build it first: tools/build.sh)
 # Writes docs/images/api/*.png (8-bit sRGB, ~0.2 MB in all); a few seconds a picture on lavapipe.
@@ -52,5 +53,19 @@ picture reflect-ewa reflect checker ewa
 picture reflect-hw-aniso reflect checker hw-aniso
 picture reflect-latlong-ewa reflect checker ewa --env latlong
 picture skybox-labels skybox cube-labels trilinear
+
+# Texel sources (docs/API.md): a 64² checker as one tile of an atlas (`sample --resource atlas`: the other cells
+# red, green, blue), looked up at every pixel of a 192x192 grid over the tile with a footprint of 8 texels (LOD 3)
+# and repeat wrap. Left the hardware sampler at the tile's uv in the atlas (hw-trilinear: footprints near the
+# edges reach the neighbouring cells), right tf_trilinear through TF_SOURCE (the tile repeats into itself).
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+python3 tools/atlas_picture.py lookups 192 8 64 >"$work/lookups.csv"
+for filter in hw-trilinear trilinear; do
+    "$texfilter" sample --texture checker --texture-size 64 --resource atlas --wrap repeat --filter "$filter" \
+        --lookups "$work/lookups.csv" -o "$work/$filter.csv" >/dev/null
+done
+python3 tools/atlas_picture.py png 192 "$work/hw-trilinear.csv" "$work/trilinear.csv" "$out/atlas-bleeding.png"
+echo "$out/atlas-bleeding.png"
 
 du -ch "$out"/*.png | tail -n 1

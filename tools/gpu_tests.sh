@@ -24,7 +24,7 @@ fail() { echo "gpu_tests: $*" >&2; exit 2; }
 empty_or_new() { [ ! -e "$1" ] || { [ -d "$1" ] && [ -z "$(ls -A "$1")" ]; }; }
 
 # The test executables that run on the device (in process or through `texfilter sample`).
-DEVICE_TESTS=${TF_PACK_TESTS:-"hw_vs_manual resource_kinds brilinear_aniso ewa sat bicubic stochastic formats gpu_build
+DEVICE_TESTS=${TF_PACK_TESTS:-"hw_vs_manual resource_kinds texel_sources brilinear_aniso ewa sat bicubic stochastic formats gpu_build
 sample_order stages environment derivatives camera analytic_truth debug_views"}
 
 pack() { # BUILD LEAN_TEXFILTER DIR

@@ -1,4 +1,4 @@
-// probes.glsl — texfilter example: what invocation i of layers.comp.glsl and bindless.comp.glsl looks up
+// probes.glsl — texfilter example: what invocation i of layers, bindless, atlas and virtual.comp.glsl looks up
 // (resources.cpp computes the same indices to know the expected colour). Include after texfilter.
 
 layout(push_constant) uniform Params { int count; } pc; // layers, or array elements

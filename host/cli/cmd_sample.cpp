@@ -1,10 +1,14 @@
 #include "flags/cli_common.h"
 #include "cli/commands.h"
 #include "cli/sample_resource.h"
+#include "core/texel_sources.h"
 #include "vulkan/backend.h"
+#include "vulkan/sample_resource.h"
+#include "vulkan/spirv_module.h"
 #include "vulkan/texture_format_support.h"
 #include "io/lookups_csv.h"
 #include "io/output_path.h"
+#include "io/text_file.h"
 #include "reference/render.h"
 #include "texture/error.h"
 #include <algorithm>
@@ -34,6 +38,25 @@ void print_stats(const std::vector<LookupStats>& stats)
     summary("hardware lookups", &LookupStats::hardware_lookups);
 }
 
+// --spirv FILE: the lookup shader read and checked (vulkan/spirv_module.h) before any work; empty without it.
+std::vector<uint32_t> sample_spirv_from(const Args& args, Backend backend, const ResourceOptions& resource,
+                                        const TextureSource& source)
+{
+    if (!args.has("--spirv"))
+        return {};
+    const std::string path = args.get("--spirv", "");
+    if (backend != Backend::vulkan)
+        throw Error("--spirv is the device's lookup shader: it needs --backend vulkan");
+    if (resource.resource != Resource::combined)
+        throw Error("--spirv replaces the combined kind's shader: it needs --resource combined, not " +
+                    to_string(resource.resource));
+    if (format_info(source.format).integer)
+        throw Error("--spirv replaces the float formats' shader; --format " + to_string(source.format) +
+                    " is read through the integer build");
+    constexpr uint64_t max_bytes = 64ull << 20; // the harness module is ~0.5 MB
+    return check_sample_spirv(read_text_file(path, max_bytes, "the SPIR-V file"), path);
+}
+
 } // namespace
 
 int run_sample(const std::vector<std::string>& argv)
@@ -43,13 +66,18 @@ int run_sample(const std::vector<std::string>& argv)
                                         {{"--lookups", "IN.csv", "header u,v,dudx,dvdx,dudy,dvdy; one lookup a row"},
                                          {"-o", "OUT.csv", "r,g,b,a in linear light, one row per lookup"},
                                          {"--stats", "", "vulkan: add columns fetches,hw_lookups (counted in the "
-                                                         "shader) and print their mean, min and max"}},
+                                                         "shader) and print their mean, min and max"},
+                                         {"--spirv", "FILE.spv",
+                                          "vulkan, --resource combined: run the lookups through FILE.spv instead of "
+                                          "the built-in shader (shaders/harness/sample.comp.glsl compiled by another "
+                                          "compiler, e.g. Slang's; checked first: valid SPIR-V, the sample pass's "
+                                          "bindings)"}},
                                         resource_flags(),
                                         device_flags()});
     Args args = parse_args("sample", argv, specs, 0);
     if (args.has("--help")) {
         std::fputs(format_help("texfilter sample --texture T|PATH --filter F --lookups IN.csv "
-                               "[--resource K] [--stochastic white|blue [--accumulate N]] [--backend vulkan|reference] [--stats] "
+                               "[--resource K] [--stochastic white|blue [--accumulate N]] [--backend vulkan|reference] [--stats] [--spirv FILE.spv] "
                                "-o OUT.csv",
                                specs)
                        .c_str(),
@@ -62,6 +90,7 @@ int run_sample(const std::vector<std::string>& argv)
         throw Error("bad value for --filter: ground-truth integrates over a scene's pixels, not around a lookup "
                     "(use render)");
     const ResourceOptions resource = resource_options_from(args);
+    check_resource_options(options, resource); // what the kind cannot run, before any work
     Backend backend = backend_from(args);
     TextureSource source = texture_source_from(args);
     check_format_filter(source.format, options); // integer data and hardware filtering, before any work
@@ -77,6 +106,7 @@ int run_sample(const std::vector<std::string>& argv)
     bool with_stats = args.has("--stats");
     if (with_stats && backend != Backend::vulkan)
         throw Error("--stats counts the shader's fetches: it needs --backend vulkan");
+    const std::vector<uint32_t> spirv = sample_spirv_from(args, backend, resource, source);
     std::vector<Lookup> lookups = read_lookups_csv(args.require("--lookups"));
     CommandDevice device = open_command_device(backend, args);
     if (device.gpu)
@@ -85,6 +115,20 @@ int run_sample(const std::vector<std::string>& argv)
     use.level0_only = source.build == TextureBuild::gpu;
     use.other_bytes = uint64_t(lookups.size()) * sample_lookup_bytes(!device.gpu);
     use.other_what = std::to_string(lookups.size()) + " lookups";
+    if (is_texel_source(resource.resource)) {
+        // The atlas or physical texture is built from the texture: its size, from the header, is checked
+        // against the device's largest image and its bytes join the budget's, before anything is decoded.
+        TextureSource header = source; // the size alone: the budget is checked below, the source's bytes in it
+        header.memory_budget = UINT64_MAX;
+        const TextureSize size = check_texture(header, use);
+        if (device.gpu)
+            check_source_device(device.gpu->context, resource.resource, size.width, size.height);
+        else
+            check_source_size(resource.resource, size.width, size.height, max_source_side);
+        use.other_bytes += source_host_bytes(resource.resource, size.width, size.height, !device.gpu,
+                                             device.gpu && device.limits.host_memory);
+        use.other_what += " and the " + std::string(resource.resource == Resource::atlas ? "atlas" : "virtual texture");
+    }
     MipChain chain = load_texture(source, use);
     GpuSession* gpu = device.gpu.get();
 
@@ -99,6 +143,9 @@ int run_sample(const std::vector<std::string>& argv)
     } else {
         std::vector<glm::vec4> results = with_texture(gpu->context, chain, needs_sat(options.filter), source.format,
                                                       source.build, [&](auto& t) {
+            if (!spirv.empty())
+                return gpu_sample_with_shader(gpu->context, t, lookups, options,
+                                              {spirv.data(), spirv.size() * sizeof(uint32_t)}, &stats);
             return gpu_sample(gpu->context, t, lookups, options, &stats);
         });
         gpu->finish();

@@ -1,6 +1,7 @@
 #include "cli/sample_resource.h"
 
 #include "core/resource_textures.h"
+#include "core/texel_sources.h"
 #include "reference/resources.h"
 #include "texture/error.h"
 #include "vulkan/cleanup.h"
@@ -13,13 +14,26 @@ namespace {
 
 constexpr int kMaxLayers = 64; // distinct layer content (core/resource_textures.cpp) and a small upload
 
+// The lookups on uploaded images, which are destroyed afterwards (also when the pass throws).
+std::vector<glm::dvec4> sample_on_device(const VulkanContext& context, GpuResources images,
+                                         const std::vector<Lookup>& lookups, const SamplerOptions& options,
+                                         const ResourceOptions& resource, std::vector<LookupStats>* stats)
+{
+    Cleanup cleanup;
+    cleanup.add([&] { destroy_resources(context, images); });
+    const std::vector<glm::vec4> results = gpu_sample_resource(context, images, lookups, options, resource, stats);
+    return {results.begin(), results.end()};
+}
+
 } // namespace
 
 std::vector<FlagSpec> resource_flags()
 {
     return {{"--resource", "K",
              "combined (default), separate (texture2D + sampler), array, separate-array, bindless (sampler2D[] "
-             "indexed non-uniformly), shadow (a depth image: PCF)"},
+             "indexed non-uniformly), shadow (a depth image: PCF), atlas (one tile of an atlas), virtual (pages "
+             "and a page table); atlas and virtual read texels through TF_SOURCE: manual taps only, hw-* on the "
+             "atlas samples it at the tile's uv (and bleeds)"},
             {"--layers", "N", "array kinds, bindless: layers / textures, 1..64, each distinct (default 4)"},
             {"--layer", "L", "array kinds: the layer read (clamped to 0..N-1 as Vulkan does); bindless: the first "
                              "index, 0..N-1 (lookup i reads (L + i) % N) (default 0)"},
@@ -63,17 +77,22 @@ std::vector<glm::dvec4> sample_resource(GpuSession* gpu, const MipChain& chain, 
     check_resource_options(options, resource);
     if (gpu)
         check_resource_device(gpu->context, options, resource); // before any upload
+    if (is_texel_source(resource.resource)) {
+        const Image& level0 = chain.levels.at(0);
+        if (gpu)
+            check_source_device(gpu->context, resource.resource, level0.width, level0.height);
+        const SourceBinding source = make_source_binding(chain, resource.resource);
+        if (!gpu)
+            return reference_sample_source(source, lookups, options);
+        return sample_on_device(gpu->context, upload_texel_source(gpu->context, source), lookups, options, resource,
+                                stats);
+    }
     const std::vector<MipChain> chains = make_resource_chains(chain, resource);
     if (!gpu)
         return reference_sample_resource(chains, lookups, options, resource);
-    std::vector<glm::vec4> results;
-    {
-        GpuResources images = upload_resources(gpu->context, chains, resource.resource, needs_sat(options.filter));
-        Cleanup cleanup;
-        cleanup.add([&] { destroy_resources(gpu->context, images); });
-        results = gpu_sample_resource(gpu->context, images, lookups, options, resource, stats);
-    }
-    return {results.begin(), results.end()};
+    return sample_on_device(gpu->context, upload_resources(gpu->context, chains, resource.resource,
+                                                           needs_sat(options.filter)),
+                            lookups, options, resource, stats);
 }
 
 } // namespace tf

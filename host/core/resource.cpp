@@ -13,6 +13,7 @@ const std::pair<Resource, const char*> kResourceNames[] = {
     {Resource::combined, "combined"}, {Resource::separate, "separate"},
     {Resource::array, "array"},       {Resource::separate_array, "separate-array"},
     {Resource::bindless, "bindless"}, {Resource::shadow, "shadow"},
+    {Resource::atlas, "atlas"},       {Resource::virtual_texture, "virtual"},
 };
 
 const std::pair<CompareOp, const char*> kCompareNames[] = {
@@ -57,6 +58,11 @@ std::string to_string(CompareOp op) { return name_of(kCompareNames, op); }
 bool is_layered(Resource resource)
 {
     return resource == Resource::array || resource == Resource::separate_array || resource == Resource::bindless;
+}
+
+bool is_texel_source(Resource resource)
+{
+    return resource == Resource::atlas || resource == Resource::virtual_texture;
 }
 
 double compare_depth(CompareOp op, double dref, double depth)

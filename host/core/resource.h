@@ -17,6 +17,8 @@ enum class Resource {
     separate_array = HARNESS_RESOURCE_SEPARATE_ARRAY, // texture2DArray + sampler
     bindless = HARNESS_RESOURCE_BINDLESS,             // sampler2D[], a non-uniform index a lookup
     shadow = HARNESS_RESOURCE_SHADOW,                 // a depth image: percentage-closer filtering
+    atlas = HARNESS_RESOURCE_ATLAS,                   // one tile of an atlas, read through TF_SOURCE
+    virtual_texture = HARNESS_RESOURCE_VIRTUAL,       // pages of a physical texture and a page table (TF_SOURCE)
 };
 
 // VkCompareOp's values (TF_COMPARE_* in the includes): a depth texel D passes when `dref OP D`.
@@ -28,6 +30,9 @@ CompareOp parse_compare_op(const std::string& name);
 std::string to_string(CompareOp op);
 
 bool is_layered(Resource resource); // array, separate-array, bindless: more than one texture (--layers)
+// atlas, virtual: the texture's texels lie elsewhere (core/texel_sources.h), read through the includes'
+// TF_SOURCE overloads (manual taps only).
+bool is_texel_source(Resource resource);
 
 // Vulkan's depth comparison (Image Operations, "Depth Compare Operation"): 1 when `dref OP depth`, else 0.
 double compare_depth(CompareOp op, double dref, double depth);

@@ -49,4 +49,18 @@ std::vector<glm::dvec4> reference_sample_resource(const std::vector<MipChain>& c
     return colors;
 }
 
+std::vector<glm::dvec4> reference_sample_source(const SourceBinding& source, const std::vector<Lookup>& lookups,
+                                                const SamplerOptions& options)
+{
+    if (!is_hardware(options.filter))
+        return reference_sample_all(read_source(source), lookups, options);
+    if (source.kind != Resource::atlas)
+        throw Error("reference_sample_source: --resource " + to_string(source.kind) + " has no hardware lookups");
+    std::vector<Lookup> in_atlas;
+    in_atlas.reserve(lookups.size());
+    for (const Lookup& l : lookups)
+        in_atlas.push_back(atlas_lookup(source, l));
+    return reference_sample_all(source.image, in_atlas, options);
+}
+
 } // namespace tf

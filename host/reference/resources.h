@@ -6,6 +6,7 @@
 // reference filter over those 0/1 texels. The result is the lit fraction in all four channels, as the
 // includes' tf_compare forms return it. Independent of the GLSL (double, from the spec's formulas).
 #include "core/resource.h"
+#include "core/texel_sources.h"
 #include "reference/reference.h"
 #include <vector>
 
@@ -19,5 +20,12 @@ MipChain compare_chain(const MipChain& depth, CompareOp op, double dref);
 std::vector<glm::dvec4> reference_sample_resource(const std::vector<MipChain>& chains,
                                                   const std::vector<Lookup>& lookups, const SamplerOptions& options,
                                                   const ResourceOptions& resource);
+
+// The texel-source kinds (atlas, virtual; core/texel_sources.h): the texture read back through the source's
+// addressing (read_source: every texel by source_fetch, as the shader's tf_source_fetch finds it), then the
+// ordinary reference on it. The hw-* filters on the atlas read the atlas itself at the tile's uv
+// (atlas_lookup), with the sampler's wrap mode over the whole atlas: they bleed, as the hardware does.
+std::vector<glm::dvec4> reference_sample_source(const SourceBinding& source, const std::vector<Lookup>& lookups,
+                                                const SamplerOptions& options);
 
 } // namespace tf

@@ -6,6 +6,7 @@
 #include "core/lookup.h"
 #include "scene/scene.h"
 #include "vulkan/context.h"
+#include "vulkan/pipeline.h"
 #include "vulkan/upload.h"
 #include <glm/vec4.hpp>
 #include <functional>
@@ -24,6 +25,12 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
                                   const std::vector<Lookup>& lookups, const SamplerOptions& options,
                                   std::vector<LookupStats>* stats = nullptr,
                                   const std::function<void(VkCommandBuffer)>& prelude = {}); // recorded first, same submission
+// The same through a lookup shader given instead of the built-in one (sample --spirv: SPIR-V from another
+// compiler, checked by vulkan/spirv_module.h), for a float texture bound as the combined kind.
+std::vector<glm::vec4> gpu_sample_with_shader(const VulkanContext& context, const GpuTexture& texture,
+                                              const std::vector<Lookup>& lookups, const SamplerOptions& options,
+                                              ShaderCode shader, std::vector<LookupStats>* stats = nullptr,
+                                              const std::function<void(VkCommandBuffer)>& prelude = {});
 
 
 } // namespace tf

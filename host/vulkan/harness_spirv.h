@@ -18,6 +18,8 @@ SpirvWords sample_spirv_array();
 SpirvWords sample_spirv_separate_array();
 SpirvWords sample_spirv_bindless();
 SpirvWords sample_spirv_shadow();
+SpirvWords sample_spirv_atlas();
+SpirvWords sample_spirv_virtual();
 // render_env.frag.glsl once an environment map kind (-DHARNESS_ENV=HARNESS_ENV_CUBE / _LATLONG; env_spirv.cpp).
 SpirvWords env_spirv_cube();
 SpirvWords env_spirv_latlong();

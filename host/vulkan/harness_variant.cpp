@@ -25,6 +25,8 @@ HarnessVariant harness_variant(Resource resource, uint32_t textures)
     case Resource::separate_array: return {code(sample_spirv_separate_array()), sampled, 1, sampled, true};
     case Resource::bindless: return {code(sample_spirv_bindless()), combined, textures, combined, false, true};
     case Resource::shadow: return {code(sample_spirv_shadow()), sampled, 1, combined, true};
+    case Resource::atlas: return {code(sample_spirv_atlas()), combined, 1, combined};
+    case Resource::virtual_texture: return {code(sample_spirv_virtual()), combined, 1, combined};
     }
     return {{sample_comp, sizeof(sample_comp)}, combined, 1, combined};
 }

@@ -132,6 +132,24 @@ GpuResources upload_resources(const VulkanContext& context, const std::vector<Mi
     return r;
 }
 
+GpuResources upload_texel_source(const VulkanContext& context, const SourceBinding& source)
+{
+    const Image& level0 = source.image.levels.at(0);
+    GpuResources r;
+    r.resource = source.kind;
+    r.width = level0.width;
+    r.height = level0.height;
+    r.levels = int(source.image.levels.size());
+    Cleanup on_failure;
+    on_failure.add([&] { destroy_resources(context, r); });
+    r.base = upload_texture(context, source.image, false);
+    const size_t bytes = source.words.size() * sizeof(int32_t);
+    r.source = create_host_buffer(context, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    std::memcpy(r.source.mapped, source.words.data(), bytes);
+    on_failure.dismiss();
+    return r;
+}
+
 void destroy_resources(const VulkanContext& context, GpuResources& resources)
 {
     for (VkImageView view : {resources.sat_low_array, resources.sat_high_array})
@@ -142,6 +160,7 @@ void destroy_resources(const VulkanContext& context, GpuResources& resources)
     for (GpuTexture& t : resources.textures)
         destroy_texture(context, t);
     destroy_image(context, resources.depth);
+    destroy_buffer(context, resources.source);
     resources = GpuResources{};
 }
 

@@ -7,6 +7,8 @@
 // Use: upload_resources(context, make_resource_chains(base, options), options.resource), bind (see
 // harness_variant.h), destroy_resources. Cost: one staging buffer of a level, one submit a level a layer.
 #include "core/resource.h"
+#include "core/texel_sources.h"
+#include "vulkan/resources.h"
 #include "vulkan/upload.h"
 #include <vector>
 
@@ -19,6 +21,8 @@ struct GpuResources {
     GpuImage layered;                   // array kinds: chains[k] in layer k, view VK_IMAGE_VIEW_TYPE_2D_ARRAY
     std::vector<GpuTexture> textures;   // bindless: chains[1..] (chains[0] is base)
     GpuImage depth;                     // shadow: chains[0].r as D32_SFLOAT
+    Buffer source;                      // atlas, virtual: the words at HARNESS_BINDING_SOURCE (base holds
+                                        // the atlas or the physical texture)
     VkImageView sat_low_array = VK_NULL_HANDLE, sat_high_array = VK_NULL_HANDLE; // array kinds: base's
                                         // summed-area table images as one-layer arrays (what they declare)
     int width = 0, height = 0, levels = 0, layers = 1;
@@ -31,6 +35,10 @@ struct GpuResources {
 GpuResources upload_resources(const VulkanContext& context, const std::vector<MipChain>& chains, Resource resource,
                               bool with_sat);
 void destroy_resources(const VulkanContext& context, GpuResources& resources);
+
+// atlas, virtual (core/texel_sources.h): source.image as base (RGBA32F, its levels as they are: the atlas's
+// per-tile levels are not rebuilt) and source.words in a host-visible storage buffer.
+GpuResources upload_texel_source(const VulkanContext& context, const SourceBinding& source);
 
 // Every level of every chain into layer k of `g` (RGBA32F, or D32 from .r with depth_only), one level at a
 // time through one staging buffer of level 0's size; the image ends SHADER_READ_ONLY_OPTIMAL. The chains

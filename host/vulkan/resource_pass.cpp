@@ -45,6 +45,8 @@ Pass create_resource_pass(const VulkanContext& context, const GpuResources& reso
             textures.push_back({texture_sampler, t.chain.view, read});
         break;
     case Resource::shadow: textures.push_back({texture_sampler, resources.depth.view, read}); break;
+    case Resource::atlas:
+    case Resource::virtual_texture: textures.push_back({texture_sampler, resources.base.chain.view, read}); break;
     }
     if (textures.size() != variant.texture_count)
         throw Error("--resource " + to_string(resource.resource) + ": the shader binds " +
@@ -64,7 +66,10 @@ Pass create_resource_pass(const VulkanContext& context, const GpuResources& reso
                                       {HARNESS_BINDING_SAT_HIGH, variant.table_type, {high}}};
     if (variant.separate_sampler)
         images.push_back({HARNESS_BINDING_SAMPLER, VK_DESCRIPTOR_TYPE_SAMPLER, {{sampler, VK_NULL_HANDLE, read}}});
-    return create_pass_with_images(context, images, stages, stages, buffers, cleanup);
+    std::vector<PassBuffer> all = buffers;
+    if (is_texel_source(resource.resource)) // the words texel_sources.glsl reads
+        all.push_back({HARNESS_BINDING_SOURCE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, resources.source.buffer});
+    return create_pass_with_images(context, images, stages, stages, all, cleanup);
 }
 
 } // namespace tf

@@ -19,8 +19,17 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
                                   std::vector<LookupStats>* stats,
                                   const std::function<void(VkCommandBuffer)>& prelude)
 {
+    return gpu_sample_with_shader(context, texture, lookups, options,
+                                  harness_shader(HarnessShader::sample_comp, texture.format), stats, prelude);
+}
+
+std::vector<glm::vec4> gpu_sample_with_shader(const VulkanContext& context, const GpuTexture& texture,
+                                              const std::vector<Lookup>& lookups, const SamplerOptions& options,
+                                              ShaderCode shader, std::vector<LookupStats>* stats,
+                                              const std::function<void(VkCommandBuffer)>& prelude)
+{
     return run_sample_pass(
-        context, lookups, options, stats, harness_shader(HarnessShader::sample_comp, texture.format),
+        context, lookups, options, stats, shader,
         [&](const std::vector<PassBuffer>& buffers, Cleanup& cleanup) {
             return create_pass(context, texture, options, VK_SHADER_STAGE_COMPUTE_BIT, VK_SHADER_STAGE_COMPUTE_BIT,
                                buffers, cleanup);

@@ -1,5 +1,6 @@
 #include "vulkan/sample_resource.h"
 
+#include "core/texel_sources.h"
 #include "harness/config.h"
 #include "texture/error.h"
 #include "vulkan/harness_variant.h"
@@ -13,6 +14,20 @@ void check_resource_options(const SamplerOptions& options, const ResourceOptions
 {
     const std::string kind = "--resource " + to_string(resource.resource);
     const bool sat = options.filter == Filter::sat || options.filter == Filter::sat_assembly;
+    if (is_texel_source(resource.resource)) {
+        // The includes' TF_SOURCE overloads are the manual forms: texels through tf_source_fetch, no sampler.
+        if (sat)
+            throw Error(kind + " cannot run --filter " + to_string(options.filter) +
+                        ": the summed-area table is built for one texture of its own, not texels read through "
+                        "TF_SOURCE (use --resource combined or separate)");
+        if (options.taps == Taps::hardware)
+            throw Error(kind + " cannot run --taps hardware: a hardware tap filters a sampler's texture, and the "
+                        "texels come through TF_SOURCE (use --taps manual)");
+        if (is_hardware(options.filter) && resource.resource != Resource::atlas)
+            throw Error(kind + " cannot run --filter " + to_string(options.filter) +
+                        ": the hardware sampler would filter the physical texture's shuffled pages (use a manual "
+                        "filter)");
+    }
     if (sat && resource.resource != Resource::combined && resource.resource != Resource::separate)
         throw Error(kind + " cannot run --filter " + to_string(options.filter) +
                     ": the summed-area table is built for one colour texture (use --resource combined or separate)");
@@ -40,6 +55,11 @@ void check_resource_device(const VulkanContext& context, const SamplerOptions& o
                     "indexing), which " + context.info.name + " does not offer");
     if (resource.resource == Resource::shadow)
         check_shadow_format(context, uses_hardware_lookups(options) && options.filter != Filter::hw_nearest);
+}
+
+void check_source_device(const VulkanContext& context, Resource kind, int width, int height)
+{
+    check_source_size(kind, width, height, int(std::min<uint32_t>(context.info.max_image_dimension_2d, 1u << 30)));
 }
 
 std::vector<glm::vec4> gpu_sample_resource(const VulkanContext& context, const GpuResources& resources,

@@ -12,10 +12,14 @@
 namespace tf {
 
 // Throws tf::Error for what the kind cannot do (a summed-area table on anything but combined; bindless on
-// a device without non-uniform indexing of sampled-image arrays), naming the flag and the reason.
+// a device without non-uniform indexing of sampled-image arrays; hardware taps or the SAT through a texel
+// source, hw-* on a virtual texture), naming the flag and the reason.
 void check_resource_options(const SamplerOptions& options, const ResourceOptions& resource);
 void check_resource_device(const VulkanContext& context, const SamplerOptions& options,
                            const ResourceOptions& resource);
+// atlas, virtual: the atlas or physical texture of a width x height texture fits the device's
+// maxImageDimension2D (core/texel_sources.h's check_source_size).
+void check_source_device(const VulkanContext& context, Resource kind, int width, int height);
 // Whether the filter makes hardware (sampler) lookups: hw-* modes, or --taps hardware for aniso and ewa.
 bool uses_hardware_lookups(const SamplerOptions& options);
 

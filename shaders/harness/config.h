@@ -112,7 +112,38 @@
 #define HARNESS_RESOURCE_SHADOW 7         // texture2D u_image (depth) + samplerShadow u_sampler: manual
                                           // filters compare with tf_compare(pc.compareOp, pc.dref), hw with
                                           // the sampler's compareOp
+#define HARNESS_RESOURCE_ATLAS 8          // the texture as one tile of an atlas (sampler2D u_texture, levels
+                                          // per tile), read through TF_SOURCE (texel_sources.glsl)
+#define HARNESS_RESOURCE_VIRTUAL 9        // the texture's levels in pages of a one-level physical texture
+                                          // (sampler2D u_texture), found through a page table (TF_SOURCE)
 #define HARNESS_BINDLESS_COUNT 4 // bindless: lookup i reads u_textures[(pc.layer + i) % HARNESS_BINDLESS_COUNT]
+
+// The texel-source kinds (atlas, virtual; host/core/texel_sources.h, shaders/harness/texel_sources.glsl):
+// the ints at HARNESS_BINDING_SOURCE that say where the texture's texels lie in u_texture.
+#define HARNESS_BINDING_SOURCE 8 // storage buffer: int words[] (readonly)
+// atlas: the tile's level-0 origin and size in atlas texels and its level count; level l of the tile is the
+// atlas's level l at origin >> l, max(1, size >> l) texels (the floor rule).
+#define HARNESS_ATLAS_ORIGIN_X 0
+#define HARNESS_ATLAS_ORIGIN_Y 1
+#define HARNESS_ATLAS_WIDTH 2
+#define HARNESS_ATLAS_HEIGHT 3
+#define HARNESS_ATLAS_LEVELS 4
+#define HARNESS_ATLAS_WORDS 5
+#define HARNESS_ATLAS_GRID 2      // the atlas: HARNESS_ATLAS_GRID^2 cells of side P = the next power of two
+#define HARNESS_ATLAS_CELL_X 1    // >= the texture's sides; the texture in this cell, the others constant
+#define HARNESS_ATLAS_CELL_Y 1
+// virtual: a texture's words start at its id (TF_SOURCE is an int): its level count, then for each level
+// its width, height, pages a row and where its first page entry is, counted from the texture's first word
+// (words[id + first + py * pages a row + px] is page (px, py) of the level); a page entry is the
+// page's place in the physical texture, in pages: x | y << 16. Page p of a level is its texels
+// [p.x * PAGE, (p.x + 1) * PAGE) x [p.y * PAGE, ...); the pages lie shuffled in the physical texture.
+#define HARNESS_VIRTUAL_PAGE 8          // texels a page side
+#define HARNESS_VIRTUAL_LEVELS 0
+#define HARNESS_VIRTUAL_LEVEL_WORDS 4   // a level's words, from word 1 on
+#define HARNESS_VIRTUAL_WIDTH 0
+#define HARNESS_VIRTUAL_HEIGHT 1
+#define HARNESS_VIRTUAL_PAGES_X 2
+#define HARNESS_VIRTUAL_FIRST_PAGE 3
 
 // sample's records: a lookup is u, v, du/dx, dv/dx, du/dy, dv/dy (floats), its result a vec4, its stats
 // texel fetches and hardware lookups (uints).

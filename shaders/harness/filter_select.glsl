@@ -26,6 +26,8 @@ uint hwLookupCount = 0u;
 #define TF_RESOURCES (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_INTEGER)
 #elif HARNESS_RESOURCE == HARNESS_RESOURCE_SHADOW
 #define TF_RESOURCES (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_SHADOW)
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_ATLAS || HARNESS_RESOURCE == HARNESS_RESOURCE_VIRTUAL
+#define TF_RESOURCES 0 // the TF_SOURCE kind only (texel_sources.glsl)
 #else
 #define TF_RESOURCES TF_RESOURCE_SAMPLER_2D
 #endif
@@ -35,6 +37,9 @@ uint hwLookupCount = 0u;
 #endif
 #include "push_constants.glsl"    // before the includes: TF_MAGNIFY reads MAGNIFY_ID
 #define TF_MAGNIFY MAGNIFY_ID
+#if HARNESS_RESOURCE == HARNESS_RESOURCE_ATLAS || HARNESS_RESOURCE == HARNESS_RESOURCE_VIRTUAL
+#include "texel_sources.glsl" // TF_SOURCE and its functions, before the includes
+#endif
 #include "texfilter/texfilter.glsl"
 #include "texfilter/debug.glsl"
 #include "stochastic_noise.glsl"
@@ -58,7 +63,8 @@ uint hwLookupCount = 0u;
 // The texture as HARNESS_RESOURCE binds it (config.h), and how harness_filter passes it to the includes:
 // HARNESS_TEX / HARNESS_X the texture and the extras after uv for the manual forms, HARNESS_TEX_HW /
 // HARNESS_X_HW for the _hw forms (none for integer data), HARNESS_SAT / HARNESS_SAT_X the SAT's tables,
-// HARNESS_GRAD the hw-* modes' lookup, HARNESS_SIZE0 / HARNESS_LEVELS the queries of the debug views.
+// HARNESS_GRAD the hw-* modes' lookup, HARNESS_SIZE0 / HARNESS_LEVELS the queries of the debug views. The
+// texel-source kinds (atlas, virtual) pass a TF_SOURCE value (texel_sources.glsl) where the others pass a texture.
 // sample's lookup index (bindless: which texture a lookup reads); 0 in render.
 uint harnessLookupIndex = 0u;
 // render's pixel (--stochastic: the random numbers are a function of pixel, frame and lookup); (0, 0) in sample.
@@ -150,6 +156,14 @@ layout(set = 0, binding = HARNESS_BINDING_SAMPLER) uniform samplerShadow u_sampl
 #define HARNESS_GRAD(uv, dx, dy) vec4(textureGrad(sampler2DShadow(u_image, u_sampler), vec3(uv, pc.dref), dx, dy))
 #define HARNESS_SIZE0 textureSize(u_image, 0)
 #define HARNESS_LEVELS textureQueryLevels(u_image)
+#elif HARNESS_RESOURCE == HARNESS_RESOURCE_ATLAS || HARNESS_RESOURCE == HARNESS_RESOURCE_VIRTUAL
+// The includes' TF_SOURCE overloads (texel_sources.glsl): manual taps only, so no HARNESS_TEX_HW (the host
+// refuses --taps hardware); hw-* sample the atlas at the tile's uv (virtual: refused by the host).
+#define HARNESS_TEX harness_source()
+#define HARNESS_X
+#define HARNESS_GRAD(uv, dx, dy) harness_source_grad(uv, dx, dy)
+#define HARNESS_SIZE0 tf_source_size(harness_source(), 0)
+#define HARNESS_LEVELS tf_source_levels(harness_source())
 #else
 #error "HARNESS_RESOURCE: unknown resource kind"
 #endif

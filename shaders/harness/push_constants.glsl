@@ -25,36 +25,42 @@ layout(constant_id = HARNESS_SPEC_GRADIENTS) const int GRADIENTS_ID = HARNESS_GR
 // for bench --lookups-per-pixel, which times a GPU's filters above the harness's own per-pixel cost.
 layout(constant_id = HARNESS_SPEC_LOOKUPS) const int LOOKUPS_ID = 1;
 
-// tf::PushConstants (host/scene/shader_interface.h): both sides take the offsets from config.h.
-layout(push_constant) uniform PushConstants {
-    layout(offset = HARNESS_PUSH_WRAP_MODE) int wrapMode;
-    layout(offset = HARNESS_PUSH_LOD_BIAS) float lodBias;
-    layout(offset = HARNESS_PUSH_LOD_MIN) float lodMin;
-    layout(offset = HARNESS_PUSH_LOD_MAX) float lodMax;
-    layout(offset = HARNESS_PUSH_COUNT) uint count;           // sample: number of lookups
-    layout(offset = HARNESS_PUSH_BAND) float band;            // brilinear
-    layout(offset = HARNESS_PUSH_PROBES) int probes;          // aniso
-    layout(offset = HARNESS_PUSH_ANISO_SHAPE) int anisoShape; // aniso: TF_ANISO_GPU / TF_ANISO_FELINE
-    layout(offset = HARNESS_PUSH_TAPS) int taps;              // aniso, ewa: TF_TAPS_MANUAL / TF_TAPS_HARDWARE
-    layout(offset = HARNESS_PUSH_ALPHA) float alpha;          // ewa
-    layout(offset = HARNESS_PUSH_MAX_ANISO) float maxAniso;   // ewa
-    layout(offset = HARNESS_PUSH_BOXES) int boxes;            // sat-assembly
-    layout(offset = HARNESS_PUSH_TRUTH_SIDE) int truthSide;   // ground-truth: samples a pixel = side^2
-    layout(offset = HARNESS_PUSH_PIXEL_FILTER) int pixelFilter; // ground-truth: HARNESS_PIXEL_FILTER_*
+// tf::PushConstants (host/scene/shader_interface.h): both sides take the offsets from config.h. The members
+// sit at their natural std430 offsets, in config.h's order with its free words as padding members, rather
+// than under layout(offset = ...): Slang's GLSL front end refuses member offsets, and std430 is the layout
+// both compilers give a push_constant block. tests/slang_check.py checks each member's Offset in the SPIR-V
+// of glslang and of slangc against HARNESS_PUSH_* (the member's name in upper case with underscores).
+layout(push_constant, std430) uniform PushConstants {
+    int wrapMode;
+    float lodBias;
+    float lodMin;
+    float lodMax;
+    uint count;       // sample: number of lookups
+    float band;       // brilinear
+    int probes;       // aniso
+    int anisoShape;   // aniso: TF_ANISO_GPU / TF_ANISO_FELINE
+    int taps;         // aniso, ewa: TF_TAPS_MANUAL / TF_TAPS_HARDWARE
+    float alpha;      // ewa
+    float maxAniso;   // ewa
+    int boxes;        // sat-assembly
+    int free_48;      // HARNESS_PUSH_FREE_48: unused
+    int truthSide;    // ground-truth: samples a pixel = side^2
+    int pixelFilter;  // ground-truth: HARNESS_PIXEL_FILTER_*
+    int free_60;      // HARNESS_PUSH_FREE_60: unused
     // sat: per channel, the value of quantisation level 0 and the span of levels 0..65535
     // (SatTable::offset, ::scale; see sat.glsl)
-    layout(offset = HARNESS_PUSH_SAT_OFFSET) vec4 satOffset;
-    layout(offset = HARNESS_PUSH_SAT_SCALE) vec4 satScale;
-    layout(offset = HARNESS_PUSH_TRUTH_FIRST) int truthFirst; // ground-truth: samples [first, first + count)
-    layout(offset = HARNESS_PUSH_TRUTH_COUNT) int truthCount; // of the grid; 0 = from first to the end
+    vec4 satOffset;
+    vec4 satScale;
+    int truthFirst;   // ground-truth: samples [first, first + count)
+    int truthCount;   // of the grid; 0 = from first to the end
     // render: the gradients times this. 1, but in the viewer's previews, rendered at 1/k of the size: 1/k, so
     // each preview pixel is filtered with the footprint of a full-size pixel (the same LOD and cost a lookup).
-    layout(offset = HARNESS_PUSH_GRADIENT_SCALE) float gradientScale;
-    layout(offset = HARNESS_PUSH_LAYER) int layer;         // sample: array layer, first bindless index
-    layout(offset = HARNESS_PUSH_COMPARE_OP) int compareOp; // sample, shadow: VkCompareOp (manual filters)
-    layout(offset = HARNESS_PUSH_DREF) float dref;          // sample, shadow: the reference depth
-    layout(offset = HARNESS_PUSH_TRUTH_ANALYTIC) int truthAnalytic; // ground-truth: HARNESS_ANALYTIC_*
-    layout(offset = HARNESS_PUSH_STOCHASTIC) int stochastic; // --stochastic: frame * 4 + HARNESS_NOISE_*
+    float gradientScale;
+    int layer;        // sample: array layer, first bindless index
+    int compareOp;    // sample, shadow: VkCompareOp (manual filters)
+    float dref;       // sample, shadow: the reference depth
+    int truthAnalytic; // ground-truth: HARNESS_ANALYTIC_*
+    int stochastic;   // --stochastic: frame * 4 + HARNESS_NOISE_*
 } pc;
 
 #endif

@@ -1,46 +1,43 @@
 // texfilter/bicubic.glsl — bicubic magnification: the cubic B-spline and Catmull-Rom reconstructions of one
-// level, from 16 texelFetch reads or from a few hardware bilinear taps, and the level-0 reconstruction that
-// trilinear, aniso and ewa use when TF_MAGNIFY asks for one.
+// level, from 16 texelFetch reads or a few hardware bilinear taps; also TF_MAGNIFY's level-0 reconstruction.
 //
-// Use:     vec4 tf_bspline(sampler2D tex, vec2 uv, tf_Sampler s);        // level 0, 16 texel fetches
-//          vec4 tf_catmull_rom(sampler2D tex, vec2 uv, tf_Sampler s);    // level 0, 16 texel fetches
-//          vec4 tf_bspline_hw(sampler2D tex, vec2 uv, tf_Sampler s);     // level 0, 4 bilinear taps
-//          vec4 tf_catmull_rom_hw(sampler2D tex, vec2 uv, tf_Sampler s); // level 0, 9 bilinear taps
+// Use:     vec4 tf_bspline(sampler2D tex, vec2 uv, tf_Sampler s);        // level 0
+//          vec4 tf_catmull_rom(sampler2D tex, vec2 uv, tf_Sampler s);    // level 0
+//          vec4 tf_bspline_hw(sampler2D tex, vec2 uv, tf_Sampler s);     // level 0, hardware taps
+//          vec4 tf_catmull_rom_hw(sampler2D tex, vec2 uv, tf_Sampler s); // level 0, hardware taps
 //          vec4 tf_cubic_level(sampler2D tex, vec2 uv, int level, int wrapMode, int kernel);    // any level
 //          vec4 tf_cubic_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, int kernel); // any level
-//          kernel: TF_RECONSTRUCT_BSPLINE, TF_RECONSTRUCT_CATMULL_ROM or TF_RECONSTRUCT_BILINEAR (then the
-//          bilinear lookup of bilinear.glsl / one tap). Every 2D resource kind, as bilinear.glsl lists them
-//          (manual: texture2D, u/isampler2D, arrays with `int layer`, depth with `tf_Compare cmp`; _hw: sampler2D,
-//          texture2D + sampler, arrays, sampler2DShadow / texture2D + samplerShadow with `float dref`).
-// Math:    separable, on the level's texel grid (DESIGN.md §3): x = u·w_l − ½, i0 = floor(x), t = x − i0; texels
-//          i0−1 .. i0+2 weighted by the kernel k at distances 1+t, t, 1−t, 2−t, per axis.
-//          B-spline: k(d) = (4 − 6d² + 3|d|³)/6 for |d| < 1, (2 − |d|)³/6 for 1 <= |d| < 2. C², positive,
-//          does not interpolate (a texel's own value is smoothed with its neighbours', variance 1/3 texel²).
-//          Catmull-Rom (Keys, a = −½): k(d) = 1.5|d|³ − 2.5d² + 1 for |d| < 1, −0.5|d|³ + 2.5d² − 4|d| + 2 for
-//          1 <= |d| < 2. C¹, interpolates, reproduces quadratics; negative lobes: results may leave the texels'
-//          range by up to ~1/8 of a step's height (ringing), as the kernel defines.
-// Hardware taps (_hw, needs a LINEAR sampler with the wrap mode s.wrap bound with the texture): texels with
-//          weights of one sign merge into one bilinear tap placed between them by their weight ratio.
-//          B-spline: 2x2 taps (all weights positive; Sigg and Hadwiger's form). Catmull-Rom: 3x3 taps, the
-//          middle two texels of each axis merged (both weights >= 0), the outer ones read at their centres:
-//          exact, where the common 2x2 form is an approximation. The sampler rounds each tap's position to
-//          subTexelPrecisionBits (often 8): weights then differ from the manual form's by up to 2^-bits a tap.
-// Magnification in the MIP filters (TF_MAGNIFY, common.glsl): trilinear, aniso's probes and ewa reconstruct
-//          level 0 with TF_MAGNIFY's kernel instead of bilinear: trilinear and each probe blend
-//          (1 − f)·cubic(level 0) + f·bilinear(level 1) for λ in [0, 1) and read the cubic alone for λ <= 0;
-//          ewa (whose own Gaussian reconstructs every level) blends towards the cubic by the same share,
-//          1 − clamp(λ, 0, 1) with λ trilinear's LOD. Level 0's share vanishes at λ = 1: no seam. Coarser
-//          levels stay bilinear: they are prefiltered, so the cubic's sharpness buys nothing there.
-// Options: s.wrap. The public forms read level 0 only (magnification filters: under minification they alias
-//          as bilinear does; use them with TF_MAGNIFY in trilinear, aniso or ewa for a MIP-mapped result).
-// Needs:   tex: any sampler2D (texelFetch), or bound with a linear sampler for _hw.
-// Cost:    manual 16 texel fetches; _hw B-spline 4 bilinear taps, Catmull-Rom 9.
+//          Every resource kind (docs/API.md "Resources") has the same overloads, the texture replaced (manual:
+//          texture2D, u/isampler2D, arrays + `int layer`, depth + `tf_Compare cmp`; _hw: texture2D + sampler,
+//          arrays, shadow samplers + `float dref`), and a TF_SOURCE texel source (common.glsl) the manual ones.
+//          The prototype list below.
+// Math:    per axis on the level's grid: x = u·w_l − ½, i0 = floor(x), t = x − i0; texels i0−1 .. i0+2 weighted
+//          by k(1+t), k(t), k(1−t), k(2−t). B-spline: k(d) = (4 − 6d² + 3|d|³)/6 for |d| < 1, (2 − |d|)³/6 for
+//          |d| < 2 (C², positive, smooths: does not interpolate). Catmull-Rom (Keys, a = −½): 1.5|d|³ − 2.5d² + 1
+//          for |d| < 1, −0.5|d|³ + 2.5d² − 4|d| + 2 for |d| < 2 (C¹, interpolates; negative lobes ring: results
+//          may leave the texels' range by up to ~1/8 of a step).
+// Options: s.wrap; kernel TF_RECONSTRUCT_BSPLINE, TF_RECONSTRUCT_CATMULL_ROM or TF_RECONSTRUCT_BILINEAR (the
+//          bilinear lookup). TF_MAGNIFY (common.glsl) selects one of these kernels for level 0 in trilinear,
+//          aniso and ewa. The level-0 forms are magnification filters: under minification they alias as
+//          bilinear does.
+// Needs:   manual: any sampler2D (texelFetch). _hw: a LINEAR sampler with the wrap mode s.wrap bound with the
+//          texture; taps are rounded to its subTexelPrecisionBits (weights then differ from the manual form's
+//          by up to 2^-bits a tap).
+// Cost:    manual 16 texel fetches; _hw B-spline 4 hardware lookups, Catmull-Rom 9.
 // Degenerate input: non-finite uv gives vec4(0); huge uv is moved by whole periods first (tf_reduce_uv).
 // Example: vec4 c = tf_catmull_rom(tex, uv, tf_sampler(TF_WRAP_CLAMP));
 //          #define TF_MAGNIFY TF_RECONSTRUCT_BSPLINE   // before the first include: smooth magnification
-//          vec4 d = tf_trilinear(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT));
 #ifndef TF_BICUBIC_GLSL
 #define TF_BICUBIC_GLSL
+
+// Hardware taps (_hw): texels whose weights have one sign merge into one bilinear tap placed between them by
+// their weight ratio. B-spline: 2x2 taps (all weights positive; Sigg and Hadwiger's form). Catmull-Rom: 3x3
+// taps, the middle two texels of each axis merged (both weights >= 0), the outer ones read at their centres:
+// exact, where the common 2x2 form is an approximation.
+// TF_MAGNIFY in the MIP filters: trilinear and each aniso probe blend (1 − f)·cubic(level 0) + f·bilinear(level 1)
+// for λ in [0, 1) and read the cubic alone for λ <= 0; ewa (whose own Gaussian reconstructs every level) blends
+// towards the cubic by the same share, 1 − clamp(λ, 0, 1) with λ trilinear's LOD. Level 0's share vanishes at
+// λ = 1: no seam. Coarser levels stay bilinear: they are prefiltered, so the cubic's sharpness buys nothing.
 
 #include "common.glsl"
 #include "bilinear.glsl"
@@ -55,140 +52,95 @@ vec4 tfi_cubic_weights(float t, int kernel)
                : (1.0 / 6.0) * vec4(s * s * s, 4.0 - 6.0 * t2 + 3.0 * t3, 1.0 + 3.0 * (t + t2 - t3), t3);
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_bspline(sampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_bspline_hw(sampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(sampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom_hw(sampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_cubic_level(sampler2D tex, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(sampler2D tex, vec2 uv, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+vec4 tf_bspline(texture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_bspline_hw(texture2D tex, sampler smp, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(texture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom_hw(texture2D tex, sampler smp, vec2 uv, tf_Sampler s);
+vec4 tf_cubic_level(texture2D tex, sampler smp, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(texture2D tex, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(texture2D tex, sampler smp, vec2 uv, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+vec4 tf_bspline(sampler2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_bspline_hw(sampler2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_catmull_rom(sampler2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_catmull_rom_hw(sampler2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_cubic_level(sampler2DArray tex, vec2 uv, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(sampler2DArray tex, vec2 uv, int layer, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+vec4 tf_bspline(texture2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_bspline_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_catmull_rom(texture2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_catmull_rom_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_cubic_level(texture2DArray tex, sampler smp, vec2 uv, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(texture2DArray tex, vec2 uv, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+vec4 tf_bspline(isampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_bspline(itexture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_bspline(usampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_bspline(utexture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(isampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(itexture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(usampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(utexture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_cubic_level(isampler2D tex, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(itexture2D tex, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(usampler2D tex, vec2 uv, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(utexture2D tex, vec2 uv, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+vec4 tf_bspline(sampler2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s);
+vec4 tf_bspline(texture2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s);
+vec4 tf_bspline_hw(sampler2DShadow tex, vec2 uv, float dref, tf_Sampler s);
+vec4 tf_bspline_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, tf_Sampler s);
+vec4 tf_catmull_rom(sampler2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s);
+vec4 tf_catmull_rom(texture2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s);
+vec4 tf_catmull_rom_hw(sampler2DShadow tex, vec2 uv, float dref, tf_Sampler s);
+vec4 tf_catmull_rom_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, tf_Sampler s);
+vec4 tf_cubic_level(sampler2D tex, vec2 uv, tf_Compare cmp, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(texture2D tex, vec2 uv, tf_Compare cmp, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(sampler2DShadow tex, vec2 uv, float dref, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+vec4 tf_cubic_level(samplerCube tex, vec2 uv, int face, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(textureCube tex, sampler smp, vec2 uv, int face, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(samplerCube tex, vec2 uv, int face, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(textureCube tex, sampler smp, vec2 uv, int face, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+vec4 tf_cubic_level(samplerCubeArray tex, vec2 uv, int face, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(samplerCubeArray tex, vec2 uv, int face, int layer, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, int level, int wrapMode, int kernel);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+vec4 tf_cubic_level(sampler2D tex, vec2 uv, tf_LatLong latlong, int level, int wrapMode, int kernel);
+vec4 tf_cubic_level_hw(sampler2D tex, vec2 uv, tf_LatLong latlong, int level, int wrapMode, int kernel);
+#endif
+#ifdef TF_SOURCE
+vec4 tf_bspline(TF_SOURCE tex, vec2 uv, tf_Sampler s);
+vec4 tf_catmull_rom(TF_SOURCE tex, vec2 uv, tf_Sampler s);
+vec4 tf_cubic_level(TF_SOURCE tex, vec2 uv, int level, int wrapMode, int kernel);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_BICUBIC
-#include "instantiate.glsl"
+#include "detail/instantiate.glsl"
 #undef TFI_FAMILY
 
-#elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_BICUBIC // per resource kind (access.glsl)
-
-#if TFI_CAN_FETCH
-// The cubic kernels from texel fetches (tf_cubic_level without its bilinear case).
-vec4 tfi_cubic_level_fetched(TFI_T, vec2 uv TFI_X, int level, int wrapMode, int kernel)
-{
-    if (!tf_finite(uv))
-        return vec4(0.0);
-    ivec2 size = tf_level_size(TFI_A, level);
-    vec2 x = clamp(tf_reduce_uv(uv, wrapMode) * vec2(size) - 0.5, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
-    vec2 i0 = floor(x);
-    vec4 wx = tfi_cubic_weights(x.x - i0.x, kernel), wy = tfi_cubic_weights(x.y - i0.y, kernel);
-    ivec4 xs = ivec4(TFI_WRAP(i0.x - 1.0, size.x, wrapMode), TFI_WRAP(i0.x, size.x, wrapMode),
-                     TFI_WRAP(i0.x + 1.0, size.x, wrapMode), TFI_WRAP(i0.x + 2.0, size.x, wrapMode));
-    ivec4 ys = ivec4(TFI_WRAP(i0.y - 1.0, size.y, wrapMode), TFI_WRAP(i0.y, size.y, wrapMode),
-                     TFI_WRAP(i0.y + 1.0, size.y, wrapMode), TFI_WRAP(i0.y + 2.0, size.y, wrapMode));
-    TF_COUNT_FETCHES(16);
-    vec4 sum = vec4(0.0);
-    for (int j = 0; j < 4; ++j) {
-        vec4 row = wx.x * TFI_FETCH(ivec2(xs.x, ys[j]), level) + wx.y * TFI_FETCH(ivec2(xs.y, ys[j]), level) +
-                   wx.z * TFI_FETCH(ivec2(xs.z, ys[j]), level) + wx.w * TFI_FETCH(ivec2(xs.w, ys[j]), level);
-        sum += wy[j] * row;
-    }
-    return sum;
-}
-
-vec4 tf_cubic_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, int kernel)
-{
-    return kernel == TF_RECONSTRUCT_BILINEAR // one return (common.glsl)
-               ? tf_bilinear_level(TFI_A, uv TFI_XA, level, wrapMode)
-               : tfi_cubic_level_fetched(TFI_A, uv TFI_XA, level, wrapMode, kernel);
-}
-#endif
-
-#if TFI_HW
-// The cubic kernels from hardware taps at an already reduced uv (tf_cubic_level_hw without its bilinear case).
-vec4 tfi_cubic_level_taps(TFI_T, vec2 uv TFI_X, int level, int kernel)
-{
-    float l = float(level);
-    vec2 size = vec2(tf_level_size(TFI_A, level));
-    vec2 x = clamp(uv * size - 0.5, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
-    vec2 i0 = floor(x);
-    vec4 wx = tfi_cubic_weights(x.x - i0.x, kernel), wy = tfi_cubic_weights(x.y - i0.y, kernel);
-    // A tap at texel coordinate c reads texels floor(c − ½) and the next, the second weighted frac(c − ½).
-    vec4 sum = vec4(0.0);
-    if (kernel == TF_RECONSTRUCT_CATMULL_ROM) { // one return (common.glsl)
-        vec3 gx = vec3(wx.x, wx.y + wx.z, wx.w), gy = vec3(wy.x, wy.y + wy.z, wy.w); // middle pair >= 1
-        vec3 px = vec3(i0.x - 0.5, i0.x + 0.5 + wx.z / gx.y, i0.x + 2.5) / size.x;
-        vec3 py = vec3(i0.y - 0.5, i0.y + 0.5 + wy.z / gy.y, i0.y + 2.5) / size.y;
-        TF_COUNT_HW_LOOKUPS(9);
-        for (int j = 0; j < 3; ++j)
-            sum += gy[j] * (gx.x * TFI_LOOKUP(vec2(px.x, py[j]), l) + gx.y * TFI_LOOKUP(vec2(px.y, py[j]), l) +
-                            gx.z * TFI_LOOKUP(vec2(px.z, py[j]), l));
-    } else {
-        vec2 g0 = vec2(wx.x + wx.y, wy.x + wy.y), g1 = vec2(wx.z + wx.w, wy.z + wy.w); // each >= 1/6
-        vec2 p0 = (i0 - 0.5 + vec2(wx.y, wy.y) / g0) / size;
-        vec2 p1 = (i0 + 1.5 + vec2(wx.w, wy.w) / g1) / size;
-        TF_COUNT_HW_LOOKUPS(4);
-        sum = g0.y * (g0.x * TFI_LOOKUP(p0, l) + g1.x * TFI_LOOKUP(vec2(p1.x, p0.y), l)) +
-              g1.y * (g0.x * TFI_LOOKUP(vec2(p0.x, p1.y), l) + g1.x * TFI_LOOKUP(p1, l));
-    }
-    return sum;
-}
-
-vec4 tf_cubic_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, int kernel)
-{
-    if (!tf_finite(uv))
-        return vec4(0.0);
-    uv = tf_reduce_uv(uv, wrapMode); // a sampler given |uv| >= ~1e37 returns NaN (uv·size overflows)
-    vec4 color;
-    if (kernel == TF_RECONSTRUCT_BILINEAR) { // one return from here on (common.glsl)
-        TF_COUNT_HW_LOOKUPS(1);
-        color = TFI_LOOKUP(uv, float(level));
-    } else {
-        color = tfi_cubic_level_taps(TFI_A, uv TFI_XA, level, kernel);
-    }
-    return color;
-}
-#endif
-
-// Level `level` as trilinear and aniso's manual probes read it: TF_MAGNIFY's kernel on level 0, bilinear on
-// the others (TF_MAGNIFY is a constant or a specialization constant: the branch folds away).
-#if TFI_CAN_FETCH
-vec4 tfi_mip_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
-{
-    return TF_MAGNIFY != TF_RECONSTRUCT_BILINEAR && level == 0 // one return (common.glsl)
-               ? tf_cubic_level(TFI_A, uv TFI_XA, 0, wrapMode, TF_MAGNIFY)
-               : tf_bilinear_level(TFI_A, uv TFI_XA, level, wrapMode);
-}
-#endif
-
-// TF_MAGNIFY's level 0 from texel fetches or hardware taps (ewa, aniso's hardware probes).
-vec4 tfi_magnified_level0(TFI_T, vec2 uv TFI_X, int wrapMode, bool hardware)
-{
-    // One return (common.glsl): every caller passes `hardware` as a constant. A shadow sampler has only the
-    // _hw forms, which never come here with hardware false.
-    vec4 color = vec4(0.0);
-#if TFI_HW
-    if (hardware)
-        color = tf_cubic_level_hw(TFI_A, uv TFI_XA, 0, wrapMode, TF_MAGNIFY);
-#endif
-#if TFI_CAN_FETCH
-    if (!hardware)
-        color = tf_cubic_level(TFI_A, uv TFI_XA, 0, wrapMode, TF_MAGNIFY);
-#endif
-    return color;
-}
-
-#if TFI_MANUAL && !TFI_ENV
-vec4 tf_bspline(TFI_T, vec2 uv TFI_X, tf_Sampler s)
-{
-    return tf_cubic_level(TFI_A, uv TFI_XA, 0, s.wrap, TF_RECONSTRUCT_BSPLINE);
-}
-vec4 tf_catmull_rom(TFI_T, vec2 uv TFI_X, tf_Sampler s)
-{
-    return tf_cubic_level(TFI_A, uv TFI_XA, 0, s.wrap, TF_RECONSTRUCT_CATMULL_ROM);
-}
-#endif
-
-#if TFI_HW && !TFI_ENV
-vec4 tf_bspline_hw(TFI_T, vec2 uv TFI_X, tf_Sampler s)
-{
-    return tf_cubic_level_hw(TFI_A, uv TFI_XA, 0, s.wrap, TF_RECONSTRUCT_BSPLINE);
-}
-vec4 tf_catmull_rom_hw(TFI_T, vec2 uv TFI_X, tf_Sampler s)
-{
-    return tf_cubic_level_hw(TFI_A, uv TFI_XA, 0, s.wrap, TF_RECONSTRUCT_CATMULL_ROM);
-}
-#endif
-
-#endif
 #endif

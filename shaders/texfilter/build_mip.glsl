@@ -1,54 +1,50 @@
 // texfilter/build_mip.glsl — the MIP chain every texfilter filter reads, built on the GPU by a compute
 // shader you dispatch: the same levels as tf::build_mip_chain (texture/mip.h), within float rounding.
 //
-// Use:     a compute shader with layout(local_size_x = TF_MIP_GROUP_SIZE) in; that defines, before the
-//          include, how a level's texel is read and written, then calls one function:
-//              #define TF_MIP_LOAD(level, p)      imageLoad(chain[level], p)         // vec4, level's texel p
+// Use:     define, before the include, how a level's texel is read and written, then call one function a
+//          dispatch (docs/API.md "build_mip.glsl" has the whole shader):
+//              #define TF_MIP_LOAD(level, p)      imageLoad(chain[level], p)   // vec4, level's texel p
 //              #define TF_MIP_STORE(level, p, v)  imageStore(chain[level], p, v)
-//              #define TF_MIP_COUNTER             counter.value  // a coherent buffer uint, 0 before the first
-//                                                                // dispatch; the last group puts it back to 0
+//              #define TF_MIP_COUNTER             counter.value  // coherent buffer uint, 0 before the first
+//                                                                // dispatch; the last group resets it to 0
 //              #include "texfilter/build_mip.glsl"
 //              layout(local_size_x = TF_MIP_GROUP_SIZE) in;
-//              void main() { tf_build_mip_pass(pc.sourceLevel, pc.levels, pc.tail != 0, pc.size0); }
-//          One dispatch a pass of tf::plan_mip_build (texfilter/host.h; the rule is below), with
-//          groups = pass.groups_x x pass.groups_y, the pass's fields as push constants, and a compute ->
-//          compute barrier (shader writes -> shader reads) between passes. A 2^k texture up to 8192^2 is one
-//          dispatch; odd levels take one dispatch each until a level fits the tail.
-//          Also: ivec2 tf_mip_level_size(ivec2 size0, int level), a level's size by the floor rule.
-// Needs:   the images the macros name, `coherent` (the tail's group reads what other groups wrote in the
-//          same dispatch), one storage view a level (image2D chain[N], rgba32f or rgba16f); a 16 KB
-//          shared tile (every Vulkan device has it); TF_MIP_COUNTER a coherent buffer member.
+//              void tf_build_mip_pass(int sourceLevel, int passLevels, bool tail, ivec2 size0);
+//          One dispatch a pass of tf::plan_mip_build (texfilter/host.h): groups = pass.groups_x x
+//          pass.groups_y, the pass's fields as push constants, a compute -> compute barrier (shader writes ->
+//          shader reads) between passes. Also: ivec2 tf_mip_level_size(ivec2 size0, int level).
+// Math:    size_l = max(1, size_0 >> l). Below an even (or 1-texel) side, texel i averages source texels 2i
+//          and 2i+1 (or takes i); below an odd side 2d+1, texels 2i, 2i+1, 2i+2 at weights (d−i, d, i+1)/(2d+1)
+//          (each source texel's overlap with the destination's box). Separable, rows first, in float: within
+//          12.5·2^-23·Σ w·|x| of tf::downsample's double sums, plus 16·2^-126 where denormals are flushed.
 // Options: TF_MIP_TAIL_TEXELS (default 16384, i.e. 128 x 128): the largest level the last group finishes
 //          alone; host and shader must agree (tf::mip_build_tail_texels).
-// Cost:    every level read once from its own image and written once; the tile's levels come from
-//          shared memory. Memory bound: ~1.33x the bytes of level 0, read and written.
-//
-// Levels follow Vulkan's floor rule, size_l = max(1, size_0 >> l). Destination texel i of a level below
-// an even (or 1-texel) side takes source texels 2i and 2i+1 at weight 1/2 (or texel i at 1); below an odd
-// side 2d+1 it takes 2i, 2i+1 and 2i+2 at weights (d−i, d, i+1)/(2d+1): each source texel's overlap with
-// the destination's box, so no texel is dropped (DESIGN.md §3). 2-D is the product of the two axes,
-// computed separably (rows first), in float.
-//
-// Precision (derived in docs/API.md "GPU-built MIP chains"): a level built from the same source differs
-// from tf::downsample's (sums in double, rounded once) by at most 12.5·2^-23 · Σ w·|x| over the texel's
-// taps, plus 16·2^-126 where the device flushes denormals.
-//
+// Needs:   a compute shader with local size TF_MIP_GROUP_SIZE; one storage view a level (image2D chain[N],
+//          rgba32f or rgba16f), `coherent` (the tail's group reads what other groups wrote in the same
+//          dispatch); TF_MIP_COUNTER a coherent buffer member; a 16 KB shared tile (every Vulkan device). Level 0
+//          in linear light: decode sRGB first; store 8-bit, sRGB and half levels through encode.glsl.
+// Cost:    every level read once and written once (the tile's levels from shared memory): memory bound,
+//          ~1.33x level 0's bytes read and written. A 2^k texture up to 8192² is one dispatch; odd levels take
+//          one dispatch each until a level fits the tail.
+// Degenerate input: none checked: a NaN or ±Inf texel spreads into every texel of the levels below it that
+//          averages it (as tf::build_mip_chain's do). Without TF_MIP_LOAD the include stops with an #error.
+// Example: tf_build_mip_pass(pc.sourceLevel, pc.levels, pc.tail != 0, pc.size0); // in main()
+#ifndef TF_BUILD_MIP_GLSL
+#define TF_BUILD_MIP_GLSL
+
 // Passes. A pass reads its source level through TF_MIP_LOAD and writes `passLevels` levels below it (1..6).
 // A group makes a 32 x 32 tile of the first, keeps it in shared memory and halves it for the next ones
 // (32 -> 16 -> ... -> 1), so every level of a pass after its first must come from an even or 1-texel side
 // on both axes (no texel of another tile needed). With `tail`, the group that finishes last (counted
-// through TF_MIP_COUNTER, as AMD's single-pass downsampler hands over its last levels) then builds every
+// through TF_MIP_COUNTER, as single-pass downsamplers hand over their last levels) then builds every
 // remaining level alone, reading and writing the images, any parity; the planner adds the tail once the
 // pass's last level has at most TF_MIP_TAIL_TEXELS texels.
 // sRGB, 8-bit and half-float textures: storage images of sRGB formats are not writable on most devices,
 // and a store's float -> unorm or -> half conversion may round to either neighbour. Build the chain in
 // linear light in an RGBA32F image, then store each level's codes (tf_mip_srgb8, tf_mip_unorm8,
 // tf_mip_half: the host's rounding, exactly) through an integer view (R8G8B8A8_UINT, R16G16B16A16_UINT,
-// ...) of the target image created with VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT. Decode sRGB level-0 texels
-// (a sampled sRGB view decodes) before building. vkCmdBlitImage from the RGBA32F chain also converts, with
-// the device's own rounding (lavapipe's sRGB encode is one code low on ~2 % of texels).
-#ifndef TF_BUILD_MIP_GLSL
-#define TF_BUILD_MIP_GLSL
+// ...) of the target image created with VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT. vkCmdBlitImage from the
+// RGBA32F chain also converts, with the device's own rounding (docs/DESIGN.md has a measured case).
 
 #include "encode.glsl"
 

@@ -7,39 +7,38 @@
 //              #define TF_SAT_LOAD_LOW(e)        imageLoad(satLow, e)              // uvec4 (RGBA32UI)
 //              #define TF_SAT_STORE_LOW(e, v)    imageStore(satLow, e, v)
 //              #define TF_SAT_STORE_HIGH(e, v)   imageStore(satHigh, e, uvec4(v))  // R32UI
-//              #define TF_SAT_RANGE              range.words    // a buffer uint[9], see below
+//              #define TF_SAT_RANGE              range.words    // a buffer uint[9]
 //              #include "texfilter/build_sat.glsl"
-//              layout(local_size_x = TF_SAT_GROUP_SIZE) in;
 //              // 1. range:   tf_sat_range_pass(size);     groups: tf_sat_range_groups(size), 1
 //              // 2. rows:    tf_sat_rows_pass(size);      groups: size.y + 1, 1
 //              // 3. columns: tf_sat_columns_pass(size);   groups: (size.x + 1 + 15) / 16, 1
 //          with a compute -> compute barrier (shader writes -> shader reads) between them. Then
-//          tf_sat_offset(TF_SAT_RANGE) and tf_sat_scale(TF_SAT_RANGE) are tf_sat's offset and scale, in any
-//          later shader (or read the 9 words back: tf::sat_range_offset_scale does the same on the host).
-//          Also: uint tf_sat_key(float) and float tf_sat_unkey(uint), the range words' order-preserving keys.
-// Needs:   size.x, size.y in 1..4096 (the bit budget, as tf::build_sat); satLow RGBA32UI and satHigh R32UI
-//          storage images of (size.x + 1) x (size.y + 1); TF_SAT_RANGE cleared before pass 1 to
-//          { 0xFFFFFFFF x 4, 0 x 4, 0xFFFFFFFF } (tf::sat_range_initial; vkCmdUpdateBuffer).
-//          Doubles (shaderFloat64) for the quantisation, so it rounds as the host does; define
-//          TF_SAT_NO_FP64 on a device without them: float quantisation, within one level of the host's
-//          (not bit for bit).
-// Options: TF_SAT_NO_FP64 (above), defined before the include.
-// Cost:    pass 1 reads level 0; pass 2 reads it again (quantising each texel once) and writes the row sums
-//          into satLow; pass 3 reads those and writes both tables: 2 reads of level 0, 1 read and 2 writes
-//          of the tables.
-//
-// The range words: 0..3 the smallest texel of R, G, B, A and 4..7 the largest, as order-preserving keys
-// (tf_sat_key); word 8 is the first non-finite texel, (index << 4) | (kind << 2) | channel with index =
-// y·width + x and kind 1 NaN, 2 +Inf, 3 −Inf, or 0xFFFFFFFF when every texel is finite. A table built
-// from a non-finite texel is meaningless: check word 8 (tf::build_sat refuses such textures).
-// Quantisation (sat.glsl's header): offset = the smallest value, scale = largest − smallest rounded up to
-// float, q = round((v − offset)/scale · 65535), half away from zero, in double: the host's formula.
-// Row pass: one group a row; each invocation sums a run of ≤ 16 texels of the row (256 runs cover 4096), the group scans the runs, and the
-// row's inclusive prefix sums (below 2^28) go to satLow (x + 1, y + 1), column 0 zero. Column pass: each
-// group 16 columns x 16 runs of rows; a run's sum, a scan over the 16 runs, then the running 40-bit sums
-// (two words, uaddCarry: no 64-bit integers) go to satLow and satHigh; row 0 zero.
+//          tf_sat_offset(TF_SAT_RANGE) and tf_sat_scale(TF_SAT_RANGE) are tf_sat's offset and scale in any
+//          later shader (or read the 9 words back: tf::sat_range_offset_scale). Also: uint tf_sat_key(float),
+//          float tf_sat_unkey(uint), the range words' order-preserving keys.
+// Math:    per channel q = round((v − offset)/scale · 65535), half away from zero, in double (offset the
+//          smallest texel, scale largest − smallest rounded up to float); entry (i, j) = Σ q over texels
+//          [0, i) x [0, j), modulo 2^40 in two words (no 64-bit integers).
+// Options: TF_SAT_NO_FP64, defined before the include, on a device without shaderFloat64: float quantisation,
+//          within one level of the host's (not bit for bit).
+// Needs:   size.x, size.y in 1..4096 (the bit budget); satLow RGBA32UI and satHigh R32UI storage images of
+//          (size.x + 1) x (size.y + 1); TF_SAT_RANGE cleared before pass 1 to { 0xFFFFFFFF x 4, 0 x 4,
+//          0xFFFFFFFF } (tf::sat_range_initial; vkCmdUpdateBuffer); shaderFloat64 unless TF_SAT_NO_FP64.
+// Cost:    2 reads of level 0 (passes 1 and 2), 1 read and 2 writes of the tables (passes 2 and 3).
+// Degenerate input: a NaN or ±Inf texel makes the tables meaningless; range word 8 then names the first one
+//          ((index << 4) | (kind << 2) | channel, index = y·width + x, kind 1 NaN, 2 +Inf, 3 −Inf), else it stays
+//          0xFFFFFFFF: check it (tf::build_sat refuses such textures). Without the macros: an #error.
+// Example: layout(local_size_x = TF_SAT_GROUP_SIZE) in;
+//          void main() { tf_sat_rows_pass(pc.size); } // the second dispatch
 #ifndef TF_BUILD_SAT_GLSL
 #define TF_BUILD_SAT_GLSL
+
+// The range words: 0..3 the smallest texel of R, G, B, A and 4..7 the largest, as order-preserving keys
+// (tf_sat_key); word 8 the first non-finite texel (see above). Quantisation as sat.glsl states it.
+// Row pass: one group a row; each invocation sums a run of ≤ 16 texels of the row (256 runs cover 4096), the
+// group scans the runs, and the row's inclusive prefix sums (below 2^28) go to satLow (x + 1, y + 1), column 0
+// zero. Column pass: each group 16 columns x 16 runs of rows; a run's sum, a scan over the 16 runs, then the
+// running 40-bit sums (two words, uaddCarry: no 64-bit integers) go to satLow and satHigh; row 0 zero.
 
 #ifndef TF_SAT_LOAD
 #error "texfilter/build_sat.glsl: define TF_SAT_LOAD(p), TF_SAT_LOAD_LOW, TF_SAT_STORE_LOW, TF_SAT_STORE_HIGH and TF_SAT_RANGE before including it"

@@ -1,49 +1,55 @@
-// texfilter/common.glsl — shared pieces of every texfilter include: the sampler options (tf_Sampler),
-// wrap modes, a wrapped texel fetch, the cost hooks, the resource kinds (TF_RESOURCES), the depth comparison
-// of the shadow kinds (tf_Compare) and the bindless hook (TF_NONUNIFORM). Pulls in version.glsl.
+// texfilter/common.glsl — what every texfilter include shares: the sampler options (tf_Sampler), wrap modes,
+// a wrapped texel fetch, the cost hooks, the resource kinds (TF_RESOURCES), the user's texel source
+// (TF_SOURCE), the depth comparison (tf_Compare) and the bindless hook (TF_NONUNIFORM). Pulls in version.glsl.
 //
 // Use:     #include "texfilter/common.glsl"   (every other include pulls it in itself)
 //          tf_Sampler tf_sampler(int wrap);    // wrap, lodBias 0, lodMin 0, lodMax 1000 (all levels)
 //          tf_Sampler(int wrap, float lodBias, float lodMin, float lodMax) // the struct; needs lodMin <= lodMax
-//          tf_Compare tf_compare(int op, float dref); // shadow kinds: a texel passes (1) when `dref op D`
+//          tf_Compare tf_compare(int op, float dref); // depth kinds: a texel D passes (1) when `dref op D`
 //          vec4  tf_fetch(sampler2D tex, ivec2 texel, int level, int wrapMode); // wrapped texelFetch
-//          int   tf_wrap(float i, int size, int wrapMode); // integer-valued texel coordinate → [0, size)
 //          ivec2 tf_level_size(sampler2D tex, int level);  // max(1, textureSize(tex, 0) >> level)
+//          int   tf_wrap(float i, int size, int wrapMode); // integer-valued texel coordinate → [0, size)
 //          bool  tf_finite(vec2 v);                         // neither NaN nor ±Inf
 //          vec2  tf_reduce_uv(vec2 uv, int wrapMode);       // uv by whole periods into [-1, 1] (clamp: [-1, 2])
-//          tf_fetch and tf_level_size exist for every resource kind (access.glsl): e.g.
-//          tf_fetch(sampler2DArray tex, ivec2 texel, int layer, int level, int wrapMode),
-//          tf_fetch(sampler2D depth, ivec2 texel, tf_Compare cmp, int level, int wrapMode) (0 or 1),
-//          tf_level_size(texture2D tex, int level).
-// Constants: TF_WRAP_REPEAT, TF_WRAP_CLAMP (clamp to edge), TF_WRAP_MIRROR (mirrored repeat; any other
-//          value acts as repeat). TF_MAX_TEXEL_COORD = 2^24: texel coordinates are clamped to ± that.
-//          TF_TAPS_MANUAL, TF_TAPS_HARDWARE: names for a caller's run-time choice of tf_X or tf_X_hw.
-//          TF_COMPARE_NEVER 0, _LESS 1, _EQUAL 2, _LESS_OR_EQUAL 3, _GREATER 4, _NOT_EQUAL 5, _GREATER_OR_EQUAL 6,
-//          _ALWAYS 7: VkCompareOp's values.
+//          tf_fetch and tf_level_size have an overload for every resource kind and a TF_SOURCE texel source
+//          (the prototype list below), e.g. tf_fetch(sampler2DArray tex, ivec2 texel, int layer, int level,
+//          int wrapMode), tf_fetch(sampler2D depth, ivec2 texel, tf_Compare cmp, int level, int wrapMode) (0/1).
+// Constants: TF_WRAP_REPEAT, TF_WRAP_CLAMP (clamp to edge), TF_WRAP_MIRROR (mirrored repeat; any other value
+//          acts as repeat). TF_MAX_TEXEL_COORD = 2^24. TF_TAPS_MANUAL, TF_TAPS_HARDWARE: names for a run-time
+//          choice of tf_X or tf_X_hw. TF_COMPARE_NEVER 0, _LESS 1, _EQUAL 2, _LESS_OR_EQUAL 3, _GREATER 4,
+//          _NOT_EQUAL 5, _GREATER_OR_EQUAL 6, _ALWAYS 7: VkCompareOp's values.
 // Options: define before the first include:
 //          TF_COUNT_FETCHES(n)     invoked with each number of texelFetch reads (default: nothing);
 //          TF_COUNT_HW_LOOKUPS(n)  invoked with each number of hardware filtered lookups (default: nothing);
 //          TF_NONUNIFORM           bindless: `#define TF_NONUNIFORM nonuniformEXT` (and enable
-//                                  GL_EXT_nonuniform_qualifier) when the texture you pass is indexed
-//                                  divergently, e.g. tf_trilinear(texs[nonuniformEXT(i)], ...): every image
-//                                  instruction inside the includes then takes a NonUniform operand. Default: none.
+//                                  GL_EXT_nonuniform_qualifier) when the texture is indexed divergently,
+//                                  e.g. tf_trilinear(texs[nonuniformEXT(i)], ...); default: nothing.
 //          TF_MAGNIFY              how trilinear, aniso and ewa reconstruct level 0 (bicubic.glsl):
 //                                  TF_RECONSTRUCT_BILINEAR (default), _BSPLINE or _CATMULL_ROM; an int
 //                                  expression (e.g. a specialization constant) chooses at run time.
-//          TF_RESOURCES            the resource kinds to instantiate (compile time; default: all), a mask of
-//                                  TF_RESOURCE_SAMPLER_2D 1 (sampler2D), TF_RESOURCE_TEXTURE_2D 2 (texture2D, and
-//                                  texture2D + sampler for _hw), TF_RESOURCE_SAMPLER_2D_ARRAY 4, TF_RESOURCE_
-//                                  TEXTURE_2D_ARRAY 8, TF_RESOURCE_INTEGER 16 (u/isampler2D, u/itexture2D),
-//                                  TF_RESOURCE_SHADOW 32 (percentage-closer filtering; sampler2DShadow for _hw),
-//                                  TF_RESOURCE_CUBE 64 (samplerCube, textureCube + sampler: cube.glsl),
-//                                  TF_RESOURCE_CUBE_ARRAY 128 (samplerCubeArray, textureCubeArray + sampler),
-//                                  TF_RESOURCE_LATLONG 256 (sampler2D lat-long maps: latlong.glsl).
-//                                  A family called with a kind left out fails to compile ("no matching function").
-// Needs:   nothing bound: every function takes the texture. Texel space (DESIGN.md §3): u = s·w_l with
-//          w_l = max(1, w >> l); wraps act on integer texel coordinates before texelFetch, so the sampler's
-//          own filter and address modes are not used and any sampler2D works (e.g. RGBA32F). The includes
-//          enable GL_EXT_samplerless_texture_functions (texelFetch on texture2D) where a kind needs it.
+//          TF_RESOURCES            the resource kinds to instantiate, a mask (default: all; under Slang the
+//                                  kinds it compiles): TF_RESOURCE_SAMPLER_2D 1, TF_RESOURCE_TEXTURE_2D 2
+//                                  (texture2D; + sampler for _hw), TF_RESOURCE_SAMPLER_2D_ARRAY 4,
+//                                  TF_RESOURCE_TEXTURE_2D_ARRAY 8, TF_RESOURCE_INTEGER 16 (u/isampler2D,
+//                                  u/itexture2D), TF_RESOURCE_SHADOW 32 (depth maps; sampler2DShadow for _hw),
+//                                  TF_RESOURCE_CUBE 64, TF_RESOURCE_CUBE_ARRAY 128 (cube.glsl),
+//                                  TF_RESOURCE_LATLONG 256 (latlong.glsl). A kind left out: "no matching function".
+//          TF_SOURCE               your own texel source (an atlas tile, a virtual texture, ...): `#define
+//                                  TF_SOURCE T` (any type) and declare, before the include,
+//                                      ivec2 tf_source_size(T src, int level);  // the level's size in texels
+//                                      int   tf_source_levels(T src);           // its MIP level count
+//                                      vec4  tf_source_fetch(T src, ivec2 texel, int level);
+//                                  (texel already wrapped into [0, size) by the wrap mode). Every manual 2D
+//                                  family then takes `T src` where it takes a sampler2D; no _hw, SAT or
+//                                  environment forms. TF_RESOURCES 0 leaves only T's. docs/API.md "Texel sources".
+// Needs:   nothing bound: every function takes the texture. Texel space (DESIGN.md §3): u = s·w_l,
+//          w_l = max(1, w >> l); wraps act on integer texel coordinates before texelFetch, so the sampler's own
+//          filter and address modes are unused and any sampler2D works. The includes enable
+//          GL_EXT_samplerless_texture_functions where a kind needs it.
 // Cost:    tf_fetch: 1 texel fetch; the others none.
+// Degenerate input: texel coordinates are clamped to ±TF_MAX_TEXEL_COORD before wrapping (pass finite ones);
+//          tf_fetch's level must be in [0, levels − 1]; a NaN depth or dref passes only _ALWAYS and _NOT_EQUAL;
+//          tf_reduce_uv's result means nothing for a non-finite uv (the filters return vec4(0) for one first).
 // Example: tf_Sampler s = tf_sampler(TF_WRAP_REPEAT);
 //          vec4 c = tf_fetch(tex, ivec2(-1, 3), 0, s.wrap); // texel (w-1, 3) of level 0
 #ifndef TF_COMMON_GLSL
@@ -62,10 +68,69 @@
 #define TF_RESOURCE_CUBE_ARRAY 128
 #define TF_RESOURCE_LATLONG 256
 #ifndef TF_RESOURCES
+#ifdef __SLANG__
+// Under Slang (slangc -allow-glsl; docs/API.md "Slang"): sampler2D (its Sampler2D), sampler2DArray, lat-long maps,
+// and Texture2D / Texture2DArray (+ SamplerState for _hw), the GLSL names below standing for them. Its GLSL
+// mode has none of the integer, shadow or cube texture types the other kinds take.
+#define TF_RESOURCES (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_TEXTURE_2D | TF_RESOURCE_SAMPLER_2D_ARRAY | \
+                      TF_RESOURCE_TEXTURE_2D_ARRAY | TF_RESOURCE_LATLONG)
+#else
 #define TF_RESOURCES 511
+#endif
 #endif
 #if (TF_RESOURCES & (2 | 4 | 8 | 16 | 32 | 64 | 128)) != 0
 #extension GL_EXT_samplerless_texture_functions : require
+#endif
+#ifdef __SLANG__
+// Slang's GLSL mode lacks the separate texture and sampler types and their samplerless functions: the GLSL names
+// stand for Slang's types, and access.glsl reads them through these (TFI_SLANG_TEXTURE).
+#define texture2D Texture2D
+#define texture2DArray Texture2DArray
+#define sampler SamplerState
+#define utexture2D Texture2D<uint4>
+#define utexture2DArray Texture2DArray<uint4>
+vec4 tfi_slang_fetch(Texture2D t, ivec2 p, int level) { return t.Load(ivec3(p, level)); }
+vec4 tfi_slang_fetch(Texture2DArray t, ivec3 p, int level) { return t.Load(ivec4(p, level)); }
+ivec3 tfi_slang_size(Texture2D t, int level)
+{
+    uint w, h, levels;
+    t.GetDimensions(uint(level), w, h, levels);
+    return ivec3(int(w), int(h), 1);
+}
+ivec3 tfi_slang_size(Texture2DArray t, int level)
+{
+    uint w, h, layers, levels;
+    t.GetDimensions(uint(level), w, h, layers, levels);
+    return ivec3(int(w), int(h), int(layers));
+}
+int tfi_slang_levels(Texture2D t)
+{
+    uint w, h, levels;
+    t.GetDimensions(0u, w, h, levels);
+    return int(levels);
+}
+int tfi_slang_levels(Texture2DArray t)
+{
+    uint w, h, layers, levels;
+    t.GetDimensions(0u, w, h, layers, levels);
+    return int(levels);
+}
+uvec4 tfi_slang_fetch(Texture2D<uint4> t, ivec2 p, int level) { return t.Load(ivec3(p, level)); }
+uvec4 tfi_slang_fetch(Texture2DArray<uint4> t, ivec3 p, int level) { return t.Load(ivec4(p, level)); }
+ivec3 tfi_slang_size(Texture2D<uint4> t, int level)
+{
+    uint w, h, levels;
+    t.GetDimensions(uint(level), w, h, levels);
+    return ivec3(int(w), int(h), 1);
+}
+ivec3 tfi_slang_size(Texture2DArray<uint4> t, int level)
+{
+    uint w, h, layers, levels;
+    t.GetDimensions(uint(level), w, h, layers, levels);
+    return ivec3(int(w), int(h), int(layers));
+}
+vec4 tfi_slang_lookup(Texture2D t, SamplerState s, vec2 uv, float lod) { return t.SampleLevel(s, uv, lod); }
+vec4 tfi_slang_lookup(Texture2DArray t, SamplerState s, vec3 uvLayer, float lod) { return t.SampleLevel(s, uvLayer, lod); }
 #endif
 // TFI_UNROLL before a loop of constant trip count whose body indexes local arrays by the loop counter: unrolled,
 // the indices are constants and the arrays registers; left rolled, a SIMD implementation (lavapipe) indexes
@@ -160,12 +225,10 @@ float tfi_compare_texel(tf_Compare c, float d)
     return (c.op & bit) != 0 || c.op == TF_COMPARE_ALWAYS || (bit == 0 && c.op == TF_COMPARE_NOT_EQUAL) ? 1.0 : 0.0;
 }
 
-// One return where a branch tests the wrap mode or another argument callers often pass as a constant (the
-// kernel, TF_MAGNIFY, the tap form): assign the result and return it once. glslc -O (shaderc 2023.2, Debian
-// bookworm) wraps a function with an early return in a one-case switch (merge-return); when a constant folds
-// that branch away, its block-merge pass keeps a stale structured-CFG analysis and crashes
-// (StructuredCFGAnalysis::SwitchMergeBlock, fixed in SPIRV-Tools 2023.1). Early returns on run-time
-// conditions (non-finite input) are fine. tests/compile_matrix.py compiles every function that way.
+// One return where a branch tests an argument callers often pass as a constant (wrap mode, kernel, TF_MAGNIFY,
+// the tap form): glslc -O (shaderc 2023.2, SPIRV-Tools before 2023.1) crashes in block merging once a constant
+// folds an early return's branch away. Early returns on run-time conditions (non-finite input) are fine.
+// tests/compile_matrix.py compiles every function that way.
 
 // Texel coordinates past ±2^24 carry no information in float; clamping there keeps int math defined.
 const float TF_MAX_TEXEL_COORD = 16777216.0;
@@ -223,8 +286,9 @@ vec2 tf_reduce_uv(vec2 uv, int wrapMode)
     return wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0, 2.0) : tfi_whole_periods(uv);
 }
 
-// The lat-long kind's extra parameter (access.glsl kind 19): it only tells its overloads from sampler2D's.
-struct tfi_LatLong {
+// Marks a sampler2D as a lat-long map for the 2D families (latlong.glsl): tf_ewa(tex, uv, tf_LatLong(0), ...)
+// filters it in uv, its texels read across the seam and the poles. The member means nothing.
+struct tf_LatLong {
     int unused;
 };
 
@@ -248,75 +312,71 @@ vec3 tfi_cube_direction(int face, vec2 st)
     return M + c.x * S + c.y * T;
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_fetch(sampler2D tex, ivec2 texel, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+ivec2 tf_level_size(texture2D tex, sampler smp, int level);
+vec4 tf_fetch(texture2D tex, ivec2 texel, int level, int wrapMode);
+vec4 tf_fetch(texture2D tex, sampler smp, ivec2 texel, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+ivec2 tf_level_size(sampler2DArray tex, int level);
+vec4 tf_fetch(sampler2DArray tex, ivec2 texel, int layer, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+ivec2 tf_level_size(texture2DArray tex, int level);
+ivec2 tf_level_size(texture2DArray tex, sampler smp, int level);
+vec4 tf_fetch(texture2DArray tex, ivec2 texel, int layer, int level, int wrapMode);
+vec4 tf_fetch(texture2DArray tex, sampler smp, ivec2 texel, int layer, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+ivec2 tf_level_size(isampler2D tex, int level);
+ivec2 tf_level_size(itexture2D tex, int level);
+ivec2 tf_level_size(usampler2D tex, int level);
+ivec2 tf_level_size(utexture2D tex, int level);
+vec4 tf_fetch(isampler2D tex, ivec2 texel, int level, int wrapMode);
+vec4 tf_fetch(itexture2D tex, ivec2 texel, int level, int wrapMode);
+vec4 tf_fetch(usampler2D tex, ivec2 texel, int level, int wrapMode);
+vec4 tf_fetch(utexture2D tex, ivec2 texel, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+ivec2 tf_level_size(sampler2DShadow tex, int level);
+ivec2 tf_level_size(texture2D tex, samplerShadow smp, int level);
+vec4 tf_fetch(sampler2D tex, ivec2 texel, tf_Compare cmp, int level, int wrapMode);
+vec4 tf_fetch(texture2D tex, ivec2 texel, tf_Compare cmp, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & (TF_RESOURCE_TEXTURE_2D | TF_RESOURCE_SHADOW)) != 0
+ivec2 tf_level_size(texture2D tex, int level);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+ivec2 tf_level_size(samplerCube tex, int level);
+ivec2 tf_level_size(textureCube tex, sampler smp, int level);
+vec4 tf_fetch(samplerCube tex, ivec2 texel, int face, int level, int wrapMode);
+vec4 tf_fetch(textureCube tex, sampler smp, ivec2 texel, int face, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+ivec2 tf_level_size(samplerCubeArray tex, int level);
+ivec2 tf_level_size(textureCubeArray tex, sampler smp, int level);
+vec4 tf_fetch(samplerCubeArray tex, ivec2 texel, int face, int layer, int level, int wrapMode);
+vec4 tf_fetch(textureCubeArray tex, sampler smp, ivec2 texel, int face, int layer, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+vec4 tf_fetch(sampler2D tex, ivec2 texel, tf_LatLong latlong, int level, int wrapMode);
+#endif
+#if (TF_RESOURCES & (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_SHADOW | TF_RESOURCE_LATLONG)) != 0
+ivec2 tf_level_size(sampler2D tex, int level);
+#endif
+#ifdef TF_SOURCE
+ivec2 tf_level_size(TF_SOURCE tex, int level);
+vec4 tf_fetch(TF_SOURCE tex, ivec2 texel, int level, int wrapMode);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_COMMON
-#include "instantiate.glsl"
+#include "detail/instantiate.glsl"
 #undef TFI_FAMILY
 
-#elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_COMMON // per resource kind (access.glsl)
-
-#if TFI_OWNS_T
-// Size of a MIP level by the Vulkan floor rule. Derived from level 0 on purpose: textureSize() with a
-// level that differs across a SIMD batch returned the wrong lane's size on lavapipe (Mesa 22.3).
-ivec2 tf_level_size(TFI_T, int level) { return max(TFI_SIZE0 >> level, ivec2(1)); }
-#endif
-
-#if TFI_CUBE
-// Texel p of level `level` of the face, any p (docs/ENVIRONMENT.md, "Texels off the face"): the texel that the
-// direction through p's centre on the face's extended plane hits, read through the (NEAREST) sampler at that
-// direction, which selects the face itself; one texel past both edges of a corner, the mean of the three texels
-// that meet there. In the face the direction is the texel's own centre, half a texel from every boundary.
-vec4 tfi_cube_read(TFI_T TFI_X, ivec2 p, int level, float n)
-{
-    vec3 d = tfi_cube_direction(face, (vec2(p) + 0.5) / n);
-#if TFI_KIND == 15
-    return textureLod(TF_NONUNIFORM(tex), d, float(level));
-#elif TFI_KIND == 16
-    return textureLod(TF_NONUNIFORM(samplerCube(tex, smp)), d, float(level));
-#elif TFI_KIND == 17
-    return textureLod(TF_NONUNIFORM(tex), vec4(d, float(layer)), float(level));
-#else
-    return textureLod(TF_NONUNIFORM(samplerCubeArray(tex, smp)), vec4(d, float(layer)), float(level));
-#endif
-}
-
-vec4 tfi_cube_texel(TFI_T TFI_X, ivec2 p, int level)
-{
-    int n = max(TFI_SIZE0.x >> level, 1);
-    ivec2 c = clamp(p, ivec2(0), ivec2(n - 1));
-    if (abs(p.x - c.x) != 1 || abs(p.y - c.y) != 1)
-        return tfi_cube_read(TFI_A TFI_XA, p, level, float(n));
-    return (tfi_cube_read(TFI_A TFI_XA, c, level, float(n)) + tfi_cube_read(TFI_A TFI_XA, ivec2(p.x, c.y), level, float(n)) +
-            tfi_cube_read(TFI_A TFI_XA, ivec2(c.x, p.y), level, float(n))) / 3.0;
-}
-#endif
-
-#if TFI_LATLONG
-// Texel p of a lat-long level, any p (docs/ENVIRONMENT.md): columns repeat; a row past a pole is the row as
-// far from it on the other side, half a turn round (W/2 columns: exact for even widths). Rows repeat every
-// 2H (over both poles and back), so p.y is first reduced into [0, 2H).
-vec4 tfi_latlong_texel(TFI_T, ivec2 p, int level)
-{
-    ivec2 size = tf_level_size(TFI_A, level);
-    int j = tf_wrap(float(p.y), 2 * size.y, TF_WRAP_REPEAT);
-    float i = float(p.x);
-    if (j >= size.y) {
-        j = 2 * size.y - 1 - j;
-        i += float(size.x / 2);
-    }
-    return texelFetch(TF_NONUNIFORM(tex), ivec2(tf_wrap(i, size.x, TF_WRAP_REPEAT), j), level);
-}
-#endif
-
-#if TFI_CAN_FETCH
-vec4 tf_fetch(TFI_T, ivec2 texel TFI_X, int level, int wrapMode)
-{
-    ivec2 size = tf_level_size(TFI_A, level);
-    TF_COUNT_FETCHES(1);
-    return TFI_FETCH(ivec2(TFI_WRAP(float(texel.x), size.x, wrapMode), TFI_WRAP(float(texel.y), size.y, wrapMode)),
-                     level);
-}
-#endif
-
-#endif
 #endif

@@ -11,39 +11,37 @@
 //          int   tf_debug_aniso_probe_count(vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int maxProbes, int shape);
 //          vec2  tf_debug_aniso_probe(vec2 uv, vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int maxProbes,
 //                                     int shape, int k); // uv of tf_aniso's probe k, k in [0, count)
-// Options: family TF_DEBUG_ISOTROPIC (trilinear, brilinear, the *_mip filters, sat, hardware sampling:
-//          Vulkan's lambda = log2(rho) + lodBias, clamped as tf_lod), TF_DEBUG_ANISO (tf_aniso's LOD
-//          log2(Pmax/N) or Feline's, with maxProbes and shape as tf_aniso takes them), TF_DEBUG_EWA (tf_ewa's
-//          LOD, with maxAniso as tf_ewa takes it). s: lodBias, lodMin, lodMax as every filter; levels: the
+//          They take sizes, not textures: one form serves every resource kind and texel source.
+// Math:    tf_Footprint, in level-0 texels: `center` = uv·textureSize; `major`, `minor` the half-axes of the
+//          ellipse the family integrates (after its clamps); `lod` the LOD it samples at (biased, clamped);
+//          `ratio` the pixel's own anisotropy (before any clamp). Palettes: all linear RGB, piecewise linear
+//          between the stops (details below).
+// Options: family TF_DEBUG_ISOTROPIC (trilinear, brilinear, the *_mip filters, sat, hardware sampling: the
+//          Vulkan LOD, clamped as tf_lod), TF_DEBUG_ANISO (tf_aniso's LOD, with maxProbes and shape),
+//          TF_DEBUG_EWA (tf_ewa's LOD, with maxAniso). s: lodBias, lodMin, lodMax as every filter; levels: the
 //          texture's level count (textureQueryLevels). No defines.
-// Palettes (docs/API.md): LOD: level l is the colour of the procedural `mipcolors` texture's level l
-//          (twelve hues 30 degrees apart, red, orange, yellow, ... repeating every 12 levels), mixed linearly
-//          with level l+1's by fract(lod), as trilinear over mipcolors would show it. Anisotropy: t =
-//          log2(ratio)/4 (equal steps for each doubling, as the eye judges ratios: 1, 2, 4, 8, 16) through
-//          grey (0.2), blue, green, yellow, red. Heat: t = value/maxValue through black, blue, red, yellow,
-//          white at t = 0, ¼, ½, ¾, 1. All linear RGB, piecewise linear between the stops.
-// Footprint: tf_Footprint holds the lookup in level-0 texels: `center` = uv·textureSize; `major` and `minor`
-//          the half-axes (vectors) of the ellipse the filter integrates, after its clamps: the pixel's
-//          pre-image J·(disk of radius ½) for EWA (minor axis grown to major/maxAniso); for aniso the
-//          probes' line (½ of the major axis the probes span) by ½·2^lod across it; for the isotropic
-//          family a circle of radius ½·2^lod (the level's texel), so LOD clamps show; `lod` the LOD the
-//          family samples at (biased, clamped to [lodMin, lodMax] and [0, levels−1]); `ratio` the pixel's
-//          own anisotropy, tf_debug_anisotropy (before any clamp; |major|/|minor| is the filter's).
-// Degenerate input: tf_debug_anisotropy gives 1 for zero gradients and for NaN or ±Inf in them (or a
-//          footprint past float range: the filters then take one isotropic lookup) and +Inf for a
-//          footprint of zero area with a non-zero axis (parallel or one zero column). The colour functions
-//          map NaN to their first stop (lod: level 0's colour; ratio: grey; heat: black), lod below 0 to
-//          level 0, +Inf to their last stop (lod: taken modulo 12 up to level 4096). tf_debug_footprint
-//          follows the family's own rules for the LOD (tf_lod, tf_aniso, tf_ewa headers): zero gradients the
-//          finest level allowed, non-finite ones the coarsest, with a circle of the level's texel.
-// Cost:    a few dozen ALU operations each, no texel fetch; nothing is declared (no bindings).
+// Needs:   nothing bound (no texture is read; nothing is declared).
+// Cost:    a few dozen ALU operations each, no texel fetch.
+// Degenerate input: tf_debug_anisotropy gives 1 for zero gradients and for NaN or ±Inf in them (or a footprint
+//          past float range) and +Inf for a footprint of zero area with a non-zero axis. The colour functions
+//          map NaN to their first stop (level 0's colour, grey, black), lod below 0 to level 0, +Inf to their
+//          last stop (lod: modulo 12 up to level 4096). tf_debug_footprint follows the family's LOD rules: zero
+//          gradients the finest level allowed, non-finite ones the coarsest, with a circle of the level's texel.
 // Example: float ratio = tf_debug_anisotropy(dFdxFine(uv), dFdyFine(uv), vec2(textureSize(tex, 0)));
 //          outColor = vec4(tf_debug_anisotropy_color(ratio), 1.0);
-//          tf_Footprint f = tf_debug_footprint(uv, dFdxFine(uv), dFdyFine(uv), vec2(textureSize(tex, 0)),
-//                                              textureQueryLevels(tex), s, TF_DEBUG_ANISO, 16, TF_ANISO_GPU, 16.0);
-//          outColor = vec4(tf_debug_lod_color(f.lod), 1.0);
 #ifndef TF_DEBUG_GLSL
 #define TF_DEBUG_GLSL
+
+// Palettes (docs/API.md): LOD: level l is the colour of the procedural `mipcolors` texture's level l (twelve
+// hues 30 degrees apart, red, orange, yellow, ... repeating every 12 levels), mixed linearly with level l+1's by
+// fract(lod), as trilinear over mipcolors would show it. Anisotropy: t = log2(ratio)/4 (equal steps for each
+// doubling, as the eye judges ratios: 1, 2, 4, 8, 16) through grey (0.2), blue, green, yellow, red. Heat:
+// t = value/maxValue through black, blue, red, yellow, white at t = 0, ¼, ½, ¾, 1.
+// Footprint: `major` and `minor` are vectors: for EWA the pixel's pre-image J·(disk of radius ½) (minor axis
+// grown to major/maxAniso); for aniso the probes' line (½ of the major axis the probes span) by ½·2^lod across
+// it; for the isotropic family a circle of radius ½·2^lod (the level's texel), so LOD clamps show; `lod`
+// clamped to [lodMin, lodMax] and [0, levels−1]; `ratio` is tf_debug_anisotropy (|major|/|minor| is the
+// filter's own).
 
 #include "aniso.glsl"
 #include "ewa.glsl"

@@ -1,20 +1,24 @@
-// texfilter/derivatives.glsl — UV gradients for the filters, in every stage: 2x2 quad differences in
-// the fragment stage (fine or coarse, plain or seam-free on periodic uv), the same quads built in compute
-// from subgroup quad operations, ray differentials (through a mirror too) and ray cones for ray-tracing
-// stages, where no quads exist.
+// texfilter/derivatives.glsl — UV gradients for the filters, in every stage: 2x2 quad differences in the
+// fragment stage (fine or coarse, plain or seam-free on periodic uv), the same quads built in compute from
+// subgroup quad operations, and ray differentials (through a mirror too) and ray cones for ray tracing.
 //
-// Use (fragment):  tf_Gradients tf_quad_gradients_fine(vec2 uv);   // macro: dFdxFine / dFdyFine
-//                  tf_Gradients tf_quad_gradients_coarse(vec2 uv); // macro: dFdxCoarse / dFdyCoarse
+// Use:     struct tf_Gradients { vec2 dUVdx, dUVdy; }; // change of uv one pixel right / down: the filters'
+//                                                      // dUVdx, dUVdy for any resource kind or texel source
+//          fragment (macros over dFdx/dFdy):
+//                  tf_Gradients tf_quad_gradients_fine(vec2 uv);   // dFdxFine / dFdyFine
+//                  tf_Gradients tf_quad_gradients_coarse(vec2 uv); // dFdxCoarse / dFdyCoarse
 //                  tf_Gradients tf_quad_gradients_fine_periodic(vec2 uv);   // seam-free on wrapping uv
 //                  tf_Gradients tf_quad_gradients_coarse_periodic(vec2 uv);
-// Use (compute, with TF_COMPUTE_QUADS):
+//          compute, with TF_COMPUTE_QUADS:
 //                  ivec2 tf_quad_pixel(ivec2 tileOrigin, int tileWidth); // the pixel this invocation shades
 //                  tf_Gradients tf_compute_quad_gradients(vec2 uv, int mode); // TF_DERIVATIVES_FINE / _COARSE
 //                  tf_Gradients tf_compute_quad_gradients_periodic(vec2 uv, int mode);
-// Use (any stage): tf_Gradients tf_periodic_gradients(tf_Gradients g, tf_Gradients gShifted, bvec2 periodic);
+//          any stage:
+//                  tf_Gradients tf_periodic_gradients(tf_Gradients g, tf_Gradients gShifted, bvec2 periodic);
 //                  tf_Gradients tf_ray_differential_gradients(vec3 dir, vec3 dDirdx, vec3 dDirdy, float t,
 //                                                             vec3 normal, vec3 dPdu, vec3 dPdv);
-//                  tf_RayDifferentials tf_transfer_ray_differentials(vec3 dir, float t, vec3 n, tf_RayDifferentials rd);
+//                  tf_RayDifferentials tf_transfer_ray_differentials(vec3 dir, float t, vec3 n,
+//                                                                    tf_RayDifferentials rd);
 //                  tf_RayDifferentials tf_reflect_ray_differentials(vec3 dir, vec3 n, vec3 dNdx, vec3 dNdy,
 //                                                                   tf_RayDifferentials rd);
 //                  float tf_ray_cone_pixel_spread(float fovY, float heightPixels); // gamma
@@ -25,21 +29,41 @@
 //                                                                  float spreadOther);
 //                  tf_DirGradients tf_ray_cone_reflect_direction_gradients(vec3 dir, vec3 n, tf_RayCone cone,
 //                                                                          float curvature);
-//                  struct tf_Gradients { vec2 dUVdx, dUVdy; }; // change of uv one pixel right / down
+// Math:    fine dx = p(x|1, y) − p(x&~1, y), dy = p(x, y|1) − p(x, y&~1) within each 2x2 quad; coarse: one pair
+//          for the quad from its top-left pixel (Vulkan allows any pixel; the compute form and the CPU
+//          reference use the top-left). Periodic (Tarini 2012): per component the smaller of the differences
+//          of uv and of fract(uv + 0.5). Ray differentials (Igehy 1999): the hit's dP projected onto the
+//          surface, mapped to uv by dPdu, dPdv. Ray cones (Akenine-Möller et al. 2019, 2021): the cone's
+//          cross-section of width w projected onto the tangent plane, its two axes mapped to uv. Below, more.
 // Options: TF_COMPUTE_QUADS: define before including, in a compute shader that also enables
-//          #extension GL_KHR_shader_subgroup_quad : require (before the include: glslang predefines
-//          extension macros, so this is opt-in); adds tf_quad_pixel and tf_compute_quad_gradients[_periodic].
-//          The fragment helpers are macros, so this file also compiles in stages without dFdx.
-// Needs:   nothing bound. Conventions (DESIGN.md §3, docs/DERIVATIVES.md):
-//          fine dx = p(x|1, y) − p(x&~1, y), dy = p(x, y|1) − p(x, y&~1) within each
-//          2x2 quad; coarse: one pair for the whole quad, taken from its top-left pixel (dx along the top
-//          row, dy down the left column). Vulkan lets coarse derivatives come from any pixel of the quad;
-//          the compute version and the CPU reference use the top-left one.
+//          #extension GL_KHR_shader_subgroup_quad : require (before the include); adds tf_quad_pixel and
+//          tf_compute_quad_gradients[_periodic]. The fragment helpers are macros, so this file also compiles
+//          in stages without dFdx.
+// Needs:   nothing bound. Periodic forms: the texture must repeat (TF_WRAP_REPEAT) on a periodic axis; exact
+//          while the true difference is under half a period a pixel. Compute quads: lanes 4q..4q+3 of a
+//          subgroup form quad q (bit 0 = x, bit 1 = y); a subgroup size that is a multiple of 4, a workgroup
+//          size that is a multiple of it (ask for full subgroups), and every invocation of a quad must run the
+//          quad operation (keep out-of-image invocations alive until after it). Ray differentials: a pinhole
+//          camera (offset rays share the origin). Ray cones: isotropic curvature only (sphere, plane).
+// Cost:    no texel fetch. fine: 2 quad swaps; coarse: 3 quad broadcasts; periodic: the same on a vec4
+//          (+ 2 fract, 4 compares); ray differentials: ~40 flops; a mirror's transfer + reflection ~60;
+//          ray cone gradients ~50 flops and 2 normalizations; direction footprints ~20 flops.
+// Degenerate input: non-finite ray input, a ray parallel to the surface (cos theta = 0) or dPdu parallel to
+//          dPdv give non-finite gradients, which every filter reads as "blur fully" (coarsest level); zero
+//          width or spread (t = 0 at the eye) gives zero gradients (the finest level); NaN in uv gives NaN
+//          periodic gradients. Defined, never a hang.
+// Example: tf_Gradients g = tf_quad_gradients_fine(uv);
+//          vec4 c = tf_trilinear(tex, uv, g.dUVdx, g.dUVdy, tf_sampler(TF_WRAP_REPEAT));
+//          // ray tracing: tf_RayCone cone = tf_ray_cone_propagate(tf_RayCone(0.0, gamma), hitDistance);
+//          tf_Gradients gc = tf_ray_cone_gradients(rayDir, cone.width, n, dPdu, dPdv);
+#ifndef TF_DERIVATIVES_GLSL
+#define TF_DERIVATIVES_GLSL
+
 // Compute layout: invocations form quads by subgroup invocation id (lanes 4q..4q+3 = one quad; lane bit 0
 //          = x, bit 1 = y), which is what subgroupQuadSwapHorizontal/Vertical exchange across. tf_quad_pixel
 //          maps a 1-D workgroup onto a tile of quads (tileWidth even), using gl_SubgroupID and
 //          gl_SubgroupInvocationID so the quads match the hardware's quads whatever the subgroup size
-//          (lavapipe: 8; NVIDIA: 32; AMD: 32/64); it needs a subgroup size that is a multiple of 4 (all of
+//          (8, 32 and 64 are common); it needs a subgroup size that is a multiple of 4 (all of
 //          these) and a workgroup size that is a multiple of the subgroup size (ask for full subgroups), and
 //          every invocation of a quad must run the quad operation (keep out-of-image invocations alive
 //          until after it, then discard their result).
@@ -75,19 +99,6 @@
 //          ray differentials' at the image centre and up to 1/cos^2(phi) larger at phi off the axis
 //          (docs/DERIVATIVES.md). Isotropic curvature only (sphere, plane); a general surface's two
 //          principal curvatures are not modelled.
-// Cost:    no texel fetch. fine: 2 quad swaps; coarse: 3 quad broadcasts; periodic: the same on a vec4
-//          (+ 2 fract, 4 compares); ray differentials: ~40 flops; a mirror's transfer + reflection ~60;
-//          ray cone gradients ~50 flops and 2 normalizations; direction footprints ~20 flops.
-// Degenerate input: non-finite ray input, a ray parallel to the surface (grazing: cos theta = 0) or dPdu
-//          parallel to dPdv give non-finite gradients, which every filter reads as "blur fully" (coarsest
-//          level); zero width or spread (t = 0 at the eye) gives zero gradients (the finest level); NaN in uv
-//          gives NaN periodic gradients. Defined, never a hang.
-// Example: tf_Gradients g = tf_quad_gradients_fine(uv);
-//          vec4 c = tf_trilinear(tex, uv, g.dUVdx, g.dUVdy, tf_sampler(TF_WRAP_REPEAT));
-//          // ray tracing: tf_RayCone cone = tf_ray_cone_propagate(tf_RayCone(0.0, gamma), hitDistance);
-//          tf_Gradients gc = tf_ray_cone_gradients(rayDir, cone.width, n, dPdu, dPdv);
-#ifndef TF_DERIVATIVES_GLSL
-#define TF_DERIVATIVES_GLSL
 
 #include "common.glsl" // tf_Sampler and the wrap modes, which callers pass with these gradients
 

@@ -2,15 +2,22 @@
 // exactly as the host rounds them (tf::pack_texels, host/core/texture_format.h), for a compute shader that
 // writes such an image through an integer view (build_mip.glsl's chains; any render target you pack).
 //
-// Use:     uint c = tf_mip_srgb8(v);   // 0..255: the sRGB code of clamp(v, 0, 1)
-//          uint c = tf_mip_unorm8(v);  // 0..255: round(clamp(v)·255), ties to even
-//          uint h = tf_mip_half(v);    // IEEE binary16 bits, round to nearest even (Inf, NaN kept)
-//          imageStore(codes, p, uvec4(tf_mip_srgb8(c.r), tf_mip_srgb8(c.g), tf_mip_srgb8(c.b), tf_mip_unorm8(c.a)));
+// Use:     uint tf_mip_srgb8(float v);   // 0..255: the sRGB code of clamp(v, 0, 1)
+//          uint tf_mip_unorm8(float v);  // 0..255: round(clamp(v, 0, 1)·255), ties to even
+//          uint tf_mip_half(float v);    // IEEE binary16 bits, round to nearest even
+//          Scalar functions of a value: no texture parameter, so nothing per resource kind or texel source.
+// Math:    sRGB: the exact encode (IEC 61966-2-1), code k + 1 from the smallest float the host rounds to k + 1
+//          (a 255-entry threshold table, binary search). unorm8: from the float's bits, exact. half: round to
+//          nearest even, subnormals included.
+// Options: none.
 // Needs:   nothing (no extension). Store through an R8G8B8A8_UINT (R16G16B16A16_UINT, ...) view of an image
 //          created with VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT and EXTENDED_USAGE: sRGB storage images are not
 //          writable on most devices, and a store's own float -> unorm or -> half conversion may round to
 //          either neighbour (Vulkan allows both).
 // Cost:    unorm8 and half: a dozen integer operations; sRGB8: a binary search of 8 steps in a 255-entry table.
+// Degenerate input: srgb8 and unorm8: NaN and −Inf give 0, +Inf 255. half: ±Inf stay ±Inf, NaN a quiet NaN
+//          (sign kept), |v| from the midpoint of 65504 and 65536 up gives ±Inf.
+// Example: imageStore(codes, p, uvec4(tf_mip_srgb8(c.r), tf_mip_srgb8(c.g), tf_mip_srgb8(c.b), tf_mip_unorm8(c.a)));
 #ifndef TF_ENCODE_GLSL
 #define TF_ENCODE_GLSL
 

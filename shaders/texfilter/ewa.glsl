@@ -1,93 +1,43 @@
-// texfilter/ewa.glsl — elliptical weighted average (EWA): a Gaussian over the pixel's elliptical
-// footprint, on two MIP levels blended by the fractional LOD. Correct zoomed in and zoomed out.
+// texfilter/ewa.glsl — elliptical weighted average (EWA): a Gaussian over the pixel's elliptical footprint,
+// on two MIP levels blended by the fractional LOD. Correct zoomed in and zoomed out.
 //
 // Use:     vec4 tf_ewa(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
 //          vec4 tf_ewa_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha,
-//                         float maxAniso); // the same weights from hardware bilinear taps on 2x2 blocks
-//          Every resource kind (access.glsl, docs/API.md "Resources"): the manual form also with texture2D,
-//          u/isampler2D, u/itexture2D, sampler2DArray / texture2DArray + `int layer` after uv, or a depth
-//          sampler2D / texture2D + `tf_Compare cmp` after uv (percentage-closer filtering over the footprint);
-//          the _hw form also with texture2D + sampler, sampler2DArray, texture2DArray + sampler (+ `int layer`),
-//          sampler2DShadow or texture2D + samplerShadow + `float dref` after uv (each tap a hardware
-//          comparison), e.g.
-//          tf_ewa(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha,
-//                 float maxAniso).
-// Options: s.wrap, s.lodBias, s.lodMin, s.lodMax as everywhere (common.glsl, lod.glsl). TF_MAGNIFY
-//   (common.glsl, bicubic.glsl): the magnification filter (below).
-// Magnification (issue 16): where trilinear would read level 0 (its λ = tf_lod < 1), the result moves towards
-//   the magnification filter of level 0 (bilinear, Vulkan's LINEAR magFilter, or TF_MAGNIFY's cubic)
-//   by level 0's trilinear share, 1 − clamp(λ, 0, 1): that filter alone at λ <= 0, the ellipse alone from λ = 1.
-//   The ellipse's one-texel reconstruction term (M = J·Jᵀ + I) is a Gaussian of σ ½ texel, blurrier than the
-//   tent: on the zoom scene it cost 11.4 dB against the Gaussian truth and 3.5x the flicker (lavapipe, 128²).
-//   The magnification filter is integrated over the pixel's footprint: the mean of 4 of its lookups at
-//   uv ± k·(dUVdx + dUVdy) and uv ± k·(dUVdx − dUVdy), k² the weight's per-axis variance (0.21 at alpha 2),
-//   whose spread has the ellipse's own covariance k²·J·Jᵀ. It is the filter itself as the footprint vanishes
-//   (zero gradients). One lookup instead aliased like trilinear where the footprint spans about a texel
-//   (λ in (0, 1): the plane's near rows). Measured (lavapipe, 2026-12-03, 256², checker 512, Gaussian truth,
-//   against one lookup): plane 35.3 -> 36.2 dB and flicker 0.0064 -> 0.0024; zoom 49.8 -> 65.6 dB and
-//   0.0034 -> 0.0008; tunnel 38.2 -> 42.2 dB; minify and slanted unchanged.
-//          alpha (2, as pbrt, is the usual choice): weight exp(-alpha r²) - exp(-alpha R²), clamped to
-//            [0, 64]; NaN or negative -> 0 (then 1 - r²/R²). Smaller alpha = a wider Gaussian = blurrier.
-//          maxAniso (e.g. 16): largest major/minor axis ratio; a thinner ellipse has its minor axis
-//            grown to major/maxAniso (below 1 or NaN: 1). Larger = sharper at grazing angles, more reads.
-//          TF_EWA_MAX_TEXELS: define before including (odd, >= 7; default 95): the loop cap K below.
-// Needs:   tex with a full MIP chain. tf_ewa: any sampler2D (texelFetch only). tf_ewa_hw: the sampler
-//          bound with the texture must filter linearly (min/mag; any mipmapMode: the level is an integer)
-//          with the wrap mode in s.wrap, no LOD bias and no LOD clamp narrower than the levels (the
-//          sampler's bias and clamps apply to textureLod too). See "Hardware taps" below.
+//                         float maxAniso); // the same weights, read as hardware bilinear taps on 2x2 blocks
+//          Every resource kind and a TF_SOURCE (common.glsl) have the same overloads, extras such as
+//          `int layer` right after uv: the prototype list near the end of this file.
+// Math:    J = [dUVdx dUVdy]·size in level-0 texels; the footprint ellipse J·Jᵀ, its minor axis grown to
+//          major/maxAniso. On level l (texels scaled by S = size_l/size_0) the filter uses M = S·J·Jᵀ·S + I (the
+//          +I is one texel of reconstruction: it makes zoom-in work). Texels whose centres have
+//          r² = xᵀM⁻¹x < R² = 2 weigh exp(−alpha·r²) − exp(−alpha·R²), zero at the support's edge (no texel pops in or
+//          out). A level's value is the weighted least-squares line through the texels read, at uv (exact on a
+//          linear texture, where a weighted mean sits on the weights' centroid), clamped to their range.
+//          λ = max(log2 minor, log2 major − log2((K−3)/(4R))) + lodBias, clamped: the minor axis spans 2 texels
+//          (pbrt's rule) unless the major one would exceed the loop cap; floor(λ) and floor(λ)+1 blended by frac(λ).
+//          Magnification: where trilinear's λ < 1, level 0's trilinear share 1 − clamp(λ, 0, 1) goes to the
+//          magnification filter (bilinear, or TF_MAGNIFY's cubic) averaged over the footprint: the mean of 4 of
+//          its lookups at uv ± k·(dUVdx ± dUVdy), k² the weight's variance, so their spread is the ellipse's.
+//          tf_ewa_hw: one bilinear tap per 2x2 block (blocks anchored to even texels of the level), at the
+//          block's weight centroid, all shifted so that the taps average to uv: a positive-weighted mean of
+//          taps, exact on a linear texture, within the sampler's sub-texel rounding of tf_ewa's weights.
+// Options: alpha (2, as pbrt): the Gaussian's sharpness, clamped to [0, 64]; NaN or negative → 0 (weight 1 − r²/R²).
+//          maxAniso (e.g. 16): the largest major/minor ratio; below 1 or NaN → 1. Larger: sharper at grazing
+//          angles, more reads. s.wrap, s.lodBias, s.lodMin, s.lodMax as every filter; TF_MAGNIFY (common.glsl).
+//          TF_EWA_MAX_TEXELS K, defined before the include (odd, >= 7; default 95): the loop cap below.
+// Needs:   a full MIP chain. tf_ewa: texelFetch only. tf_ewa_hw: the sampler bound with the texture filters
+//          linearly (min and mag; any mipmapMode) with the wrap mode s.wrap, no LOD bias, no LOD clamp
+//          narrower than the levels (the sampler's bias and clamps apply to textureLod too).
+// Cost:    tf_ewa reads each texel of the support once on each of 2 levels: about 30 for an isotropic footprint,
+//          350 at 16:1; at most K² a level whatever the input. tf_ewa_hw: one lookup per 2x2 block that meets the
+//          support, about 0.4 of those reads (its weights are evaluated twice); at most (K/2+1)² a level.
+//          Where λ < 1, 4 lookups of the magnification filter more (bilinear: 16 fetches or 4 taps).
+// Degenerate input: zero gradients → the magnification filter alone on level 0 (with lodMin >= 1: lodMin's
+//          level with M = I); huge gradients → the coarsest level the clamps allow (normally the 1x1 mean);
+//          NaN or ±Inf in a gradient, or a footprint past float range → that level with M = I. Non-finite uv →
+//          vec4(0); huge finite uv is first moved by whole periods (tf_reduce_uv). Where lodMax or lodBias leave
+//          a support wider than K texels, it is shrunk to fit, same shape (it then aliases, like any LOD clamp).
+//          A 1x1 level is read once.
 // Example: vec4 c = tf_ewa(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT), 2.0, 16.0);
-//
-// Math (DESIGN.md section 3). J = [dUV/dx dUV/dy] in level-0 texels; the footprint ellipse J·Jᵀ has
-//   semi-axes major >= minor (J's singular values); minor is raised to major/maxAniso. On level l
-//   (texel coordinates u·w_l) the filter uses M = S·(J·Jᵀ, clamped)·S + I with S = diag(w_l/w_0,
-//   h_l/h_0): the +I is the one-texel reconstruction term that makes zoom-in work. Every texel whose
-//   centre x (relative to uv·w_l) has r² = xᵀM⁻¹x < R² (R² = TF_EWA_SUPPORT = 2) weighs
-//   exp(-alpha r²) - exp(-alpha R²) (computed with exp(), no LUT): continuous, zero at the support's
-//   edge (as pbrt's), so no texel jumps in or out and float and double agree there.
-// Support R² = 2, not pbrt's 1, by measurement (docs/DESIGN.md section 4; texfilter bench --quick, manual
-//   taps, Gaussian-pixel truth): RMSE plane 0.0231 vs 0.0313, tunnel 0.0172 vs 0.0264, slanted
-//   0.0346 vs 0.0412, mesh 0.0381 vs 0.0438, flicker 0.0037 vs 0.0077 (plane); at twice the reads.
-//   At alpha 2 it is a Gaussian about one pixel wide (per-axis variance 0.21 in units of M).
-// Unbiased (issue 10): per level, a weighted least-squares line fit value + g·d over the texels read,
-//   evaluated at uv. A weighted mean of a discrete texel set is centred on its weight centroid, up to
-//   ~0.1 level texels off uv (2^l level-0 texels); the fit reproduces any linear texture exactly,
-//   whichever texels the support catches. Each level's result is clamped to the range of the texels it
-//   read (a line fitted across a step can overshoot it: up to 2 % of the step at alpha 8); linear
-//   textures stay exact, since the 4 texel centres around uv lie inside the support.
-// Level rule: lambda = max(log2(minor), log2(major / ((K-3)/(4R)))) + lodBias (semi-axes after the
-//   eccentricity clamp, level-0 texels), clamped to [lodMin, lodMax] and the existing levels. On the
-//   continuous level lambda the minor axis spans 2 texels (semi-axis 1, as pbrt); the two levels read,
-//   floor(lambda) and floor(lambda)+1, see it span 2..4 and 1..2 texels and are blended by
-//   frac(lambda), so there are no seams. The second term moves to a coarser level only when the major
-//   semi-axis would pass (K-3)/(4R) = 16.3 texels, i.e. never for maxAniso <= 16 at the default K.
-//   An isotropic footprint gets trilinear's lambda. lodBias -1: twice the texels across (4x the reads).
-// Hard cap (every input; a shader never hangs): per level at most K rows of at most K texels
-//   (tf_ewa_hw: K/2+1 rows of K/2+1 2x2 blocks). Where the LOD clamps (lodMax, lodBias) leave a
-//   support whose bounding box is wider than K texels, it is shrunk, same shape, to fit (so it then
-//   aliases, like any LOD clamp). A 1x1 level is read once, whatever the ellipse.
-// Degenerate input (docs/API.md): zero gradients -> λ = −∞: the magnification filter on level 0 (with
-//   lodMin >= 1: lodMin's level with M = I, a one-texel Gaussian around uv); huge (1e30, 3e38) -> the coarsest level the clamps allow (normally
-//   the last, 1x1: the texture's mean); NaN or ±Inf in any component, or a footprint entry
-//   (gradient·size) past float range -> that same level with M = I. Non-finite uv returns vec4(0);
-//   huge finite uv is first moved by whole periods (tf_reduce_uv), in both forms.
-// Hardware taps (tf_ewa_hw): the same weights, read through textureLod(tex, uv, level) on the sampler
-//   bound with the texture, which must filter linearly with the same wrap mode. Texels are paired in
-//   2x2 blocks anchored to even texel indices of the level (a fixed grid; one that followed the
-//   ellipse's bounding box made blotches near the horizon); one bilinear lookup per block, at the
-//   block's weight centroid, weighted by the block's total weight. The taps' weighted mean position is
-//   their weight centroid, not uv, so a first pass sums the weights' moments and the second moves every
-//   tap by the centroid's offset: the taps then average to uv, exact on a linear texture (a bilinear
-//   lookup reproduces it wherever it lands). A positive-weighted mean of bilinear taps, so it cannot
-//   overshoot. It differs from tf_ewa by how each treats the texture's non-linear part (measured, alpha
-//   2, 256² noise: RMS 0.005, max 0.05) and by the sampler's sub-texel rounding (8 bits allowed).
-// Cost (texfilter sample --stats, alpha 2, maxAniso 16, 256² noise): tf_ewa reads each texel inside the
-//   support once on each level: isotropic footprints of 1..64 texels 29 on average (at most 46), 16:1
-//   footprints ~350 (at most ~600); at most K² = 9025 per level whatever the input. tf_ewa_hw: one
-//   lookup per 2x2 block touching the support (its weights are evaluated twice), ~0.35-0.4 of those reads as
-//   lookups (isotropic 12, 16:1 ~120). No early out for isotropic footprints: it is the same formula.
-//   Where λ < 1, the magnification filter adds 4 of its lookups (bilinear: 16 fetches or 4 taps).
-//   Plane scene (docs/FILTERS.md): tf_ewa 79.2 fetches on average, tf_ewa_hw 26.8 lookups (one magnification
-//   lookup: 73.5, 26.0; R² = 1: 36.8, 14.6).
 #ifndef TF_EWA_MAX_TEXELS
 #define TF_EWA_MAX_TEXELS 95
 #endif
@@ -166,9 +116,8 @@ vec2 tfi_ewa_rows(vec3 M, float fy)
     return vec2(ceil(fy - hy - 0.5 - TFI_EWA_SPAN_MARGIN), floor(fy + hy - 0.5 + TFI_EWA_SPAN_MARGIN));
 }
 
-// The 2x2-block walk of the hardware-tap forms (tfi_ewa_level_hw, and stochastic.glsl's one-tap EWA, which
-// picks one block of the same walk): blocks start at even offsets from the level's texel grid (parity), rows of
-// blocks from firstRow, `rows` of them (at most TF_EWA_MAX_TEXELS / 2 + 1: K texels touch at most K/2 + 1 blocks).
+// The 2x2 blocks of the hardware-tap forms (tfi_ewa_blocks_hw): blocks start at even offsets from the level's
+// texel grid (parity), rows of blocks from firstRow, `rows` of them (K texels touch at most K/2 + 1 blocks).
 const int TFI_EWA_MAX_BLOCKS = TF_EWA_MAX_TEXELS / 2 + 1;
 struct tfi_EwaBlocks {
     vec2 parity;
@@ -246,288 +195,66 @@ vec4 tfi_ewa_fit_unclamped(tfi_EwaMoments s)
     return s.pivot + mean - q.x * (s.tx * inv - m.x * mean) - q.y * (s.ty * inv - m.y * mean);
 }
 
-// The fit clamped to the range of the texels read: a line fitted across a step edge can overshoot it
-// (by up to 2 % of the step at alpha 8 on a checker, none measured at alpha <= 2). The clamp keeps linear
-// textures exact: the 4 texel centres around uv lie in the support (the disc of radius 1.41 texels), so
-// uv is inside their hull and a linear texture's value there within their range.
+// The fit clamped to the range of the texels read (a line fitted across a step edge can overshoot it). Linear
+// textures stay exact: the 4 texel centres around uv lie in the support (the disc of radius 1.41 texels), so uv
+// is inside their hull and a linear texture's value there within their range.
 vec4 tfi_ewa_fit(tfi_EwaMoments s)
 {
     return clamp(tfi_ewa_fit_unclamped(s), s.lo, s.hi);
 }
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_ewa(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+vec4 tf_ewa(texture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(texture2D tex, sampler smp, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+vec4 tf_ewa(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+vec4 tf_ewa(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(texture2DArray tex, sampler smp, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+vec4 tf_ewa(isampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(itexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(usampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(utexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+vec4 tf_ewa(sampler2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(texture2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(sampler2DShadow tex, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(texture2D tex, samplerShadow smp, vec2 uv, float dref, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+vec4 tf_ewa(samplerCube tex, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(textureCube tex, sampler smp, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(samplerCube tex, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(textureCube tex, sampler smp, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+vec4 tf_ewa(samplerCubeArray tex, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(samplerCubeArray tex, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+vec4 tf_ewa(sampler2D tex, vec2 uv, tf_LatLong latlong, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+vec4 tf_ewa_hw(sampler2D tex, vec2 uv, tf_LatLong latlong, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+#ifdef TF_SOURCE
+vec4 tf_ewa(TF_SOURCE tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_EWA
-#include "instantiate.glsl"
+#include "detail/instantiate.glsl"
 #undef TFI_FAMILY
 
-#elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_EWA // per resource kind (access.glsl)
-
-#if TFI_OWNS_T
-// Shape and (biased, clamped) LOD of a lookup.
-tfi_EwaShape tfi_ewa_shape(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float maxAniso, out float lambda)
-{
-    tfi_EwaShape shape = tfi_EwaShape(vec3(0.0), 0.0, 0.0, 0.0);
-    vec2 size0 = vec2(TFI_SIZE0);
-    // NaN/±Inf, or a footprint entry (gradient · size) past float range: non-finite, as in every family.
-    if (!tf_finite(dUVdx * size0) || !tf_finite(dUVdy * size0)) {
-        lambda = 1e30; // the coarsest level the clamps allow
-    } else {
-        vec2 g = max(abs(dUVdx), abs(dUVdy));
-        float m = max(g.x, g.y);
-        if (!(m > 1e-30)) {
-            lambda = -1e30; // zero footprint: the finest level allowed
-        } else {
-            vec2 ax = dUVdx / m * size0, ay = dUVdy / m * size0; // columns of J/m, |entries| <= size
-            float xx = ax.x * ax.x + ay.x * ay.x, xy = ax.x * ax.y + ay.x * ay.y, yy = ax.y * ax.y + ay.y * ay.y;
-            float h = 0.5 * (xx - yy);
-            float d = sqrt(h * h + xy * xy);
-            float major2 = 0.5 * (xx + yy) + d; // >= 1: the largest |entry| of J/m is >= 1
-            float cross = ax.x * ay.y - ax.y * ay.x;
-            float minor2 = cross * cross / major2; // det / major2: no cancellation
-            float e = maxAniso >= 1.0 ? maxAniso : 1.0;
-            minor2 = max(minor2, major2 / (e * e));
-            // Clamped covariance = minor2·I + (major2 - minor2)·e1e1ᵀ, e1e1ᵀ the projector on the major axis.
-            vec3 p1 = d > 0.0 ? 0.5 * vec3(1.0 + h / d, xy / d, 1.0 - h / d) : vec3(0.5, 0.0, 0.5);
-            shape = tfi_EwaShape(vec3(minor2, 0.0, minor2) + max(major2 - minor2, 0.0) * p1, major2, minor2, m);
-            // On the LOD's level the support's major semi-axis stays inside the loop cap (see the header).
-            const float majorTexels = 0.25 * float(TF_EWA_MAX_TEXELS - 3) / sqrt(TF_EWA_SUPPORT);
-            lambda = tfi_log2(m) + max(0.5 * log2(max(minor2, 1e-30)), 0.5 * log2(major2) - log2(majorTexels)) +
-                     s.lodBias;
-        }
-    }
-    lambda = tfi_clamp_lod(lambda, s, TFI_A);
-    return shape;
-}
-
-// The magnification filter's spread (tfi_ewa_magnified): its four points are uv ± a and uv ± b, a and b
-// k·(dUVdx ± dUVdy) with k² the weight's variance, so that their covariance k²·J·Jᵀ is the ellipse's own.
-// None unless (|dUVdx| + |dUVdy|)·size is finite: NaN, ±Inf or a footprint past float range (that bounds
-// |a| and |b| too; one test, where four cost 75 SPIR-V instructions).
-void tfi_ewa_spread(TFI_T, vec2 dUVdx, vec2 dUVdy, float alpha, out vec2 a, out vec2 b)
-{
-    a = dUVdx + dUVdy;
-    b = dUVdx - dUVdy;
-    if (!tf_finite((abs(dUVdx) + abs(dUVdy)) * vec2(TFI_SIZE0)))
-        a = b = vec2(0.0);
-    float k = sqrt(tfi_ewa_weight_variance(alpha));
-    a *= k;
-    b *= k;
-}
-
-// The support ellipse on one level: R²·M = R²·(xx, xy, yy) in level texels², its determinant, and the
-// centre uv·size split into an integer texel index `base` and `frac` in [0, 1), so that texel offsets
-// from it are exact in float. For repeat/mirror, base is moved by a multiple of 2·size into
-// [0, 2·size): both modes repeat every 2·size texels, and the parity that anchors tf_ewa_hw's 2x2 grid
-// is kept. uv has been through tf_reduce_uv.
-void tfi_ewa_level_ellipse(TFI_T, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, out vec3 M,
-                          out float det, out vec2 base, out vec2 frac)
-{
-    vec2 size = vec2(tf_level_size(TFI_A, level));
-    vec2 sc = size / vec2(TFI_SIZE0); // 2^-level, except along an axis already at 1 texel
-    vec3 D = vec3(sc.x * sc.x, sc.x * sc.y, sc.y * sc.y) * shape.cov;
-    float k = 0.0;
-    if (shape.m > 0.0) {
-        // Hard cap: the support's bounding box half-extents sqrt(R²·M.xx), sqrt(R²·M.yy) <= halfBox, so
-        // that a row or column holds at most K texels. Shrinking is min(), so it is continuous in the footprint.
-        const float halfBox = 0.5 * float(TF_EWA_MAX_TEXELS - 1) - 1.0 / 64.0;
-        k = min(shape.m, sqrt((halfBox * halfBox / TF_EWA_SUPPORT - 1.0) / max(D.x, D.z)));
-    }
-    float k2 = k * k;
-    M = TF_EWA_SUPPORT * (k2 * D + vec3(1.0, 0.0, 1.0));
-    // det(M_unscaled) = k⁴·det(D) + k²·trace(D) + 1, det(D) = sc.x²·sc.y²·major2·minor2: exact form, >= 1.
-    det = TF_EWA_SUPPORT * TF_EWA_SUPPORT *
-          (k2 * k2 * (sc.x * sc.x * sc.y * sc.y) * shape.major2 * shape.minor2 + k2 * (D.x + D.z) + 1.0);
-    vec2 c = clamp(uv * size, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
-    base = floor(c);
-    frac = c - base;
-    if (wrapMode != TF_WRAP_CLAMP)
-        base -= 2.0 * size * floor(base / (2.0 * size));
-}
-#endif
-
-// The filter on one level: every texel inside the support (texelFetch), fitted (tfi_ewa_fit).
-vec4 tfi_ewa_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha)
-{
-    vec3 M;
-    float det;
-    vec2 base, frac;
-    tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, M, det, base, frac);
-    ivec2 size = tf_level_size(TFI_A, level);
-    vec2 rowSpan = tfi_ewa_rows(M, frac.y);
-    int rows = int(clamp(rowSpan.y - rowSpan.x + 1.0, 0.0, float(TF_EWA_MAX_TEXELS)));
-    // Moments in whitened coordinates y = R·d, RᵀR = (R²M)⁻¹ (Cholesky, R upper triangular): the support
-    // is the unit disc there, so the fit's 2x2 system is well conditioned however thin the ellipse (the
-    // fit's value does not depend on the coordinates).
-    float r11 = sqrt(M.z / det), r12 = -M.y / (det * r11), r22 = inversesqrt(M.z);
-    tfi_EwaMoments s = tfi_EwaMoments(0.0, vec2(0.0), vec3(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0),
-                                    vec4(0.0));
-    for (int k = 0; k < TF_EWA_MAX_TEXELS; ++k) {
-        if (k >= rows)
-            break;
-        float j = rowSpan.x + float(k), dy = j + 0.5 - frac.y, yy = r22 * dy, cx = r12 * dy;
-        vec2 span = tfi_ewa_row_span(M, det, frac.x, dy);
-        int cols = int(clamp(span.y - span.x + 1.0, 0.0, float(TF_EWA_MAX_TEXELS)));
-        int ty = TFI_WRAP(base.y + j, size.y, wrapMode);
-        // One row: y.y is constant, so its sums need only the y.x moments.
-        float rw = 0.0, rwx = 0.0, rwxx = 0.0;
-        vec4 rt = vec4(0.0), rtx = vec4(0.0);
-        for (int n = 0; n < TF_EWA_MAX_TEXELS; ++n) {
-            if (n >= cols)
-                break;
-            float i = span.x + float(n), dx = i + 0.5 - frac.x;
-            float r2 = tfi_ewa_r2(M, det, dx, dy);
-            if (r2 < 1.0) {
-                float w = tfi_ewa_weight(r2, alpha), yx = r11 * dx + cx, wx = w * yx;
-                TF_COUNT_FETCHES(1);
-                vec4 t = TFI_FETCH(ivec2(TFI_WRAP(base.x + i, size.x, wrapMode), ty), level);
-                if (s.w + rw == 0.0) {
-                    s.pivot = t; // the first texel (an earlier one of weight 0 added nothing)
-                    s.lo = t;
-                    s.hi = t;
-                }
-                s.lo = min(s.lo, t);
-                s.hi = max(s.hi, t);
-                t -= s.pivot;
-                rw += w;
-                rwx += wx;
-                rwxx += wx * yx;
-                rt += w * t;
-                rtx += wx * t;
-            }
-        }
-        s.w += rw;
-        s.wd += vec2(rwx, yy * rw);
-        s.wdd += vec3(rwxx, yy * rwx, yy * yy * rw);
-        s.t += rt;
-        s.tx += rtx;
-        s.ty += yy * rt;
-    }
-    return tfi_ewa_fit(s);
-}
-
-// The same filter from hardware bilinear lookups: one per 2x2 block of texels 2b, 2b+1 on each axis,
-// at the block's weight centroid, weighted by the block's total weight. Their weighted mean is centred
-// on the texels' weight centroid, not on the lookup's centre (the fit of tfi_ewa_level needs 3 samples
-// not on a line, which a few merged blocks need not give): a first pass over the weights finds that
-// offset m, the second moves every tap by -m, which centres the taps' mean on uv. Exact on a linear
-// texture (a bilinear lookup reproduces it wherever it lands), the same as the fit where the weights
-// are symmetric.
-vec4 tfi_ewa_level_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha)
-{
-    vec3 M;
-    float det;
-    vec2 base, frac;
-    tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, M, det, base, frac);
-    vec2 size = vec2(tf_level_size(TFI_A, level));
-    tfi_EwaBlocks blocks = tfi_ewa_blocks(M, base, frac);
-    vec4 sum = vec4(0.0);
-    float weights = 0.0;
-    vec2 moment = vec2(0.0), shift = vec2(0.0);
-    for (int pass = 0; pass < 2; ++pass) {
-        for (int k = 0; k < TFI_EWA_MAX_BLOCKS; ++k) {
-            if (k >= blocks.rows)
-                break;
-            float j0 = blocks.firstRow + 2.0 * float(k);
-            float dy0 = j0 + 0.5 - frac.y;
-            float firstCol;
-            int cols = tfi_ewa_block_columns(M, det, frac, blocks.parity.x, dy0, firstCol);
-            for (int n = 0; n < TFI_EWA_MAX_BLOCKS; ++n) {
-                if (n >= cols)
-                    break;
-                float i0 = firstCol + 2.0 * float(n);
-                float dx0 = i0 + 0.5 - frac.x;
-                vec2 ab;
-                float total = tfi_ewa_block(M, det, alpha, dx0, dy0, ab);
-                if (total > 0.0) {
-                    if (pass == 0) {
-                        moment += total * (vec2(dx0, dy0) + ab);
-                        weights += total;
-                    } else {
-                        TF_COUNT_HW_LOOKUPS(1);
-                        sum += total * TFI_LOOKUP((base + vec2(i0, j0) + 0.5 + ab - shift) / size, float(level));
-                    }
-                }
-            }
-        }
-        if (!(weights > 0.0))
-            return vec4(0.0);
-        shift = moment / weights; // the taps' weighted centroid - the centre, level texels
-    }
-    return sum / weights;
-}
-
-// One level: a 1x1 level is its texel whatever the ellipse (saves up to K² reads of it at the horizon).
-vec4 tfi_ewa_on_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape shape, float alpha, bool hardware)
-{
-    vec4 color; // one return (common.glsl): TFI_CAN_FETCH and `hardware` are constants
-    if (tf_level_size(TFI_A, level) == ivec2(1)) {
-        if (!TFI_CAN_FETCH) { // a shadow sampler: its one texel through the sampler (exact at the centre)
-            TF_COUNT_HW_LOOKUPS(1);
-            color = TFI_LOOKUP(vec2(0.5), float(level));
-        } else {
-            TF_COUNT_FETCHES(1);
-            color = TFI_FETCH(ivec2(0), level);
-        }
-    } else {
-        color = hardware ? tfi_ewa_level_hw(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha)
-                         : tfi_ewa_level(TFI_A, uv TFI_XA, level, wrapMode, shape, alpha);
-    }
-    return color;
-}
-
-// The magnification filter integrated over the pixel's footprint: the mean of four of its lookups at
-// uv ± a, uv ± b (tfi_ewa_spread), whose spread has the ellipse's own covariance, so that the kernel is the
-// reconstruction's convolved with the footprint's to second moments: plain bilinear (or the cubic) as the
-// footprint vanishes (zoom), the pixel's blur where it spans about a texel (the plane's near rows, where one
-// bilinear lookup aliased like trilinear's).
-vec4 tfi_ewa_magnified(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, int wrapMode, float alpha, bool hardware)
-{
-    vec2 a, b;
-    tfi_ewa_spread(TFI_A, dUVdx, dUVdy, alpha, a, b);
-    vec4 sum = vec4(0.0);
-    for (int i = 0; i < 4; ++i) // a loop, not 4 calls: the filter's code once (tools/spirv_size.sh)
-        sum += tfi_magnified_level0(TFI_A, uv + (i < 2 ? a : b) * ((i & 1) == 0 ? 1.0 : -1.0) TFI_XA, wrapMode,
-                                    hardware);
-    return 0.25 * sum;
-}
-
-vec4 tfi_ewa_impl(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso,
-                 bool hardware)
-{
-    if (!tf_finite(uv))
-        return vec4(0.0);
-    uv = tf_reduce_uv(uv, s.wrap);
-    float a = alpha >= 0.0 ? min(alpha, 64.0) : 0.0;
-    // Magnification: level 0's share in trilinear (1 − λ, λ trilinear's LOD) is the magnification filter's
-    // (TF_MAGNIFY: bilinear, Vulkan's LINEAR magFilter, unless a cubic is asked for) instead of the ellipse.
-    float magnifyShare = 1.0 - clamp(tf_lod(TFI_A, dUVdx, dUVdy, s), 0.0, 1.0);
-    vec4 magnified = magnifyShare > 0.0 ? tfi_ewa_magnified(TFI_A, uv TFI_XA, dUVdx, dUVdy, s.wrap, a, hardware)
-                                        : vec4(0.0);
-    if (magnifyShare == 1.0)
-        return magnified;
-    float lambda;
-    tfi_EwaShape shape = tfi_ewa_shape(TFI_A, dUVdx, dUVdy, s, maxAniso, lambda);
-    float f;
-    int lo = tfi_split_lod(lambda, f);
-#define TFI_EWA_LEVEL(level) tfi_ewa_on_level(TFI_A, uv TFI_XA, level, s.wrap, shape, a, hardware)
-    vec4 ewa;
-    TFI_BLEND_LEVELS_ONCE(ewa, TFI_EWA_LEVEL, lo, f); // each level's support walked once (lod.glsl)
-#undef TFI_EWA_LEVEL
-    return magnifyShare > 0.0 ? mix(ewa, magnified, magnifyShare) : ewa;
-}
-
-#if TFI_MANUAL
-vec4 tf_ewa(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso)
-{
-    return tfi_ewa_impl(TFI_A, uv TFI_XA, dUVdx, dUVdy, s, alpha, maxAniso, false);
-}
-#endif
-
-#if TFI_HW
-vec4 tf_ewa_hw(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float alpha, float maxAniso)
-{
-    return tfi_ewa_impl(TFI_A, uv TFI_XA, dUVdx, dUVdy, s, alpha, maxAniso, true);
-}
-#endif
-
-#endif
 #endif

@@ -3,17 +3,18 @@
 // Use:     float tf_lod(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s); // biased, clamped: [0, levels−1]
 //          float tf_lod_unclamped(sampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias); // log2(ρ) + lodBias
 //          int   tf_mip_level_nearest(float lod); // mipmapMode NEAREST: ceil(lod + ½) − 1, ties to the finer
-//          tf_lod and tf_lod_unclamped take every resource kind's texture (access.glsl), without the extras
-//          (a layer or comparison does not change the LOD): tf_lod(texture2DArray tex, dUVdx, dUVdy, s).
+//          tf_lod and tf_lod_unclamped have an overload for every resource kind (docs/API.md "Resources") and
+//          a TF_SOURCE texel source (common.glsl), the texture alone replaced: no layer or comparison (they do
+//          not change the LOD), e.g. tf_lod(texture2DArray tex, dUVdx, dUVdy, s). The prototype list below.
 // Math:    ρ = max(|J e_x|, |J e_y|) with J = [dUVdx dUVdy] in level-0 texels, λ = log2(ρ) + s.lodBias,
-//          clamped to [s.lodMin, s.lodMax] (lodMin <= lodMax, as Vulkan's minLod <= maxLod) and then to
-//          [0, levels − 1], levels = textureQueryLevels(tex).
+//          clamped to [s.lodMin, s.lodMax] (needs lodMin <= lodMax, as Vulkan's minLod <= maxLod), then to
+//          [0, levels − 1].
 // Options: s.lodBias, s.lodMin, s.lodMax. No defines.
-// Needs:   tex: only its size and level count are queried.
+// Needs:   only the texture's size and level count are queried.
 // Cost:    no texel fetch (one log2).
 // Degenerate input: zero gradients give the finest level allowed (λ = −∞ before clamping); NaN or ±Inf
-//          gradients, or ρ past float range, the coarsest (+∞): a defined, blurry answer, never undefined.
-//          A NaN λ (a NaN lodBias) counts as +∞ too, a NaN lodMin or lodMax as no bound (docs/API.md).
+//          gradients, or ρ past float range, the coarsest (λ = +∞). A NaN λ (NaN lodBias) counts as +∞, a NaN
+//          lodMin or lodMax as no bound.
 // Example: int level = tf_mip_level_nearest(tf_lod(tex, dFdxFine(uv), dFdyFine(uv), s));
 #ifndef TF_LOD_GLSL
 #define TF_LOD_GLSL
@@ -63,20 +64,15 @@ int tfi_split_lod(float lod, out float f)
     f = lod - lo;
     return int(lo);
 }
-// TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w), a statement: (1 − w)·LEVEL(lo) + w·LEVEL(lo + 1), formed as
-// mix(LEVEL(lo), LEVEL(lo + 1), w), into the vec4 `result`, for a function-like macro LEVEL(l), the filter's
-// value on level l; a level that weighs 0 is not evaluated (λ on a level or clamped to the last one, or
-// outside brilinear's band). SIMD implementations run both sides of a divergent branch (lavapipe runs every
-// side of every `if`: `w == 0 ? L(lo) : w == 1 ? L(lo + 1) : mix(...)` cost four levels' fetches); a loop is
-// the one construct they leave early, once no lane needs another turn. So: the level that counts (lo, or
-// lo + 1 where w is 1) on the first turn, the coarser one on a second turn only where 0 < w < 1; a batch of
-// lanes that all sit outside brilinear's band, on a level or clamped to the last one pays one level's
-// fetches, any other two (never four). The turn test is at the loop's top, not a do-while's bottom: lavapipe
-// (Mesa 22.3.6) can hand a lane that left a loop early a value from the turns its batch still takes, and with
-// the do-while an optimised tf_ewa_hw returned the ellipse's share as 0 on one-turn lanes. The top test
-// measured exact in every compiler mode; it is a workaround, not a cure (docs/API.md, "Optimisation").
+// TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w), a statement: result = mix(LEVEL(lo), LEVEL(lo + 1), w) for a
+// function-like macro LEVEL(l), the filter's value on level l; a level that weighs 0 is not evaluated. A loop,
+// not a branch: SIMD implementations run every side of an `if` (lavapipe: four levels' fetches for a ternary)
+// but leave a loop once no lane needs another turn, so a batch on one level pays one level's fetches, any
+// other two. The turn test is at the loop's top: with a do-while, lavapipe (Mesa 22.3.6) handed lanes that
+// left early a value from their batch's later turns (a workaround; docs/API.md, "Optimisation").
 #define TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w)                                     \
     {                                                                                    \
+        result = vec4(0.0); /* every path assigns it; said once for compilers that check */ \
         int tfi_turns = (w) > 0.0 && (w) < 1.0 ? 2 : 1;                                  \
         int tfi_level = (w) == 1.0 ? (lo) + 1 : (lo);                                    \
         for (int tfi_turn = 0; tfi_turn < tfi_turns; ++tfi_turn) {                       \
@@ -94,32 +90,66 @@ int tf_mip_level_nearest(float lod)
     return int(level) + (lod - level > 0.5 ? 1 : 0);
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+float tf_lod(texture2D tex, sampler smp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(texture2D tex, sampler smp, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+float tf_lod(sampler2DArray tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(sampler2DArray tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+float tf_lod(texture2DArray tex, sampler smp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(texture2DArray tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(texture2DArray tex, sampler smp, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(texture2DArray tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+float tf_lod(isampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(itexture2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(usampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(utexture2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(isampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(itexture2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(usampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(utexture2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+float tf_lod(sampler2DShadow tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(texture2D tex, samplerShadow smp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(sampler2DShadow tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(texture2D tex, samplerShadow smp, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & (TF_RESOURCE_TEXTURE_2D | TF_RESOURCE_SHADOW)) != 0
+float tf_lod(texture2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(texture2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+float tf_lod(samplerCube tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(textureCube tex, sampler smp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(samplerCube tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(textureCube tex, sampler smp, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+float tf_lod(samplerCubeArray tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod(textureCubeArray tex, sampler smp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(samplerCubeArray tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+float tf_lod_unclamped(textureCubeArray tex, sampler smp, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#if (TF_RESOURCES & (TF_RESOURCE_SAMPLER_2D | TF_RESOURCE_SHADOW | TF_RESOURCE_LATLONG)) != 0
+float tf_lod(sampler2D tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(sampler2D tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+#ifdef TF_SOURCE
+float tf_lod(TF_SOURCE tex, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+float tf_lod_unclamped(TF_SOURCE tex, vec2 dUVdx, vec2 dUVdy, float lodBias);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_LOD
-#include "instantiate.glsl"
+#include "detail/instantiate.glsl"
 #undef TFI_FAMILY
 
-#elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_LOD && TFI_OWNS_T // per resource kind (access.glsl)
-
-// Unclamped log2(rho) + bias; +Inf for non-finite gradients, -Inf for zero gradients.
-float tf_lod_unclamped(TFI_T, vec2 dUVdx, vec2 dUVdy, float lodBias)
-{
-    vec2 size0 = vec2(TFI_SIZE0);
-    vec2 ax = dUVdx * size0;
-    vec2 ay = dUVdy * size0;
-    float rho2 = max(dot(ax, ax), dot(ay, ay)); // squared lengths: tfi_log2_rho
-    return tf_finite(dUVdx) && tf_finite(dUVdy) ? tfi_log2_rho(rho2) + lodBias : 1.0 / 0.0;
-}
-
-float tfi_clamp_lod(float lambda, tf_Sampler s, TFI_T)
-{
-    return tfi_clamp_lod_levels(lambda, s, TFI_LEVELS);
-}
-
-float tf_lod(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
-{
-    return tfi_clamp_lod(tf_lod_unclamped(TFI_A, dUVdx, dUVdy, s.lodBias), s, TFI_A);
-}
-
-#endif
 #endif

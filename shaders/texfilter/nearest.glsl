@@ -1,20 +1,17 @@
 // texfilter/nearest.glsl — manual nearest-texel lookups from texelFetch (Vulkan NEAREST filtering).
 //
-// Use:     vec4 tf_nearest(sampler2D tex, vec2 uv, tf_Sampler s);                             // level 0 only
+// Use:     vec4 tf_nearest(sampler2D tex, vec2 uv, tf_Sampler s);                             // level 0
 //          vec4 tf_nearest_mip(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s); // level by LOD
 //          vec4 tf_nearest_level(sampler2D tex, vec2 uv, int level, int wrapMode); // level in [0, levels−1]
-//          Every resource kind (access.glsl, docs/API.md "Resources"): the same call with texture2D,
-//          u/isampler2D or u/itexture2D (integer texels as float), sampler2DArray or texture2DArray plus
-//          `int layer` right after uv, or a depth sampler2D/texture2D plus `tf_Compare cmp` right after uv
-//          (percentage-closer: each texel compared before it is filtered), e.g.
-//          tf_nearest_mip(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s).
-// Math:    texel i = floor(u·w_l). tf_nearest_mip reads level tf_mip_level_nearest(tf_lod(...)) (lod.glsl:
-//          mipmapMode NEAREST, no blend between levels).
-// Options: s.wrap; tf_nearest_mip also s.lodBias, s.lodMin, s.lodMax as in lod.glsl. No defines.
-// Needs:   tex: any sampler2D (texelFetch; tf_nearest_mip uses its MIP chain).
+//          Every resource kind (docs/API.md "Resources": texture2D, u/isampler2D, u/itexture2D, arrays with
+//          `int layer` after uv, depth maps with `tf_Compare cmp` after uv) and a TF_SOURCE texel source
+//          (common.glsl) have the same overloads, the texture parameter replaced: the prototype list below.
+// Math:    texel i = floor(u·w_l); tf_nearest_mip's level is tf_mip_level_nearest(tf_lod(...)) (lod.glsl).
+// Options: s.wrap; tf_nearest_mip also s.lodBias, s.lodMin, s.lodMax (lod.glsl). No defines.
+// Needs:   any sampler2D (texelFetch only); tf_nearest_mip reads its MIP chain.
 // Cost:    1 texel fetch.
-// Degenerate input: non-finite uv gives vec4(0), huge uv is moved by whole periods first (tf_reduce_uv);
-//          NaN/±Inf gradients the coarsest level, zero the finest (docs/API.md, degenerate input).
+// Degenerate input: non-finite uv gives vec4(0); huge uv is moved by whole periods first (tf_reduce_uv);
+//          NaN/±Inf gradients give the coarsest level, zero gradients the finest.
 // Example: vec4 c = tf_nearest_mip(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_CLAMP));
 #ifndef TF_NEAREST_GLSL
 #define TF_NEAREST_GLSL
@@ -22,31 +19,82 @@
 #include "common.glsl"
 #include "lod.glsl"
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_nearest(sampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_nearest_level(sampler2D tex, vec2 uv, int level, int wrapMode);
+vec4 tf_nearest_mip(sampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+vec4 tf_nearest(texture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_nearest_level(texture2D tex, sampler smp, vec2 uv, int level, int wrapMode);
+vec4 tf_nearest_level(texture2D tex, vec2 uv, int level, int wrapMode);
+vec4 tf_nearest_mip(texture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+vec4 tf_nearest(sampler2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_nearest_level(sampler2DArray tex, vec2 uv, int layer, int level, int wrapMode);
+vec4 tf_nearest_mip(sampler2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+vec4 tf_nearest(texture2DArray tex, vec2 uv, int layer, tf_Sampler s);
+vec4 tf_nearest_level(texture2DArray tex, sampler smp, vec2 uv, int layer, int level, int wrapMode);
+vec4 tf_nearest_level(texture2DArray tex, vec2 uv, int layer, int level, int wrapMode);
+vec4 tf_nearest_mip(texture2DArray tex, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_INTEGER) != 0
+vec4 tf_nearest(isampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_nearest(itexture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_nearest(usampler2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_nearest(utexture2D tex, vec2 uv, tf_Sampler s);
+vec4 tf_nearest_level(isampler2D tex, vec2 uv, int level, int wrapMode);
+vec4 tf_nearest_level(itexture2D tex, vec2 uv, int level, int wrapMode);
+vec4 tf_nearest_level(usampler2D tex, vec2 uv, int level, int wrapMode);
+vec4 tf_nearest_level(utexture2D tex, vec2 uv, int level, int wrapMode);
+vec4 tf_nearest_mip(isampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_nearest_mip(itexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_nearest_mip(usampler2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_nearest_mip(utexture2D tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SHADOW) != 0
+vec4 tf_nearest(sampler2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s);
+vec4 tf_nearest(texture2D tex, vec2 uv, tf_Compare cmp, tf_Sampler s);
+vec4 tf_nearest_level(sampler2D tex, vec2 uv, tf_Compare cmp, int level, int wrapMode);
+vec4 tf_nearest_level(texture2D tex, vec2 uv, tf_Compare cmp, int level, int wrapMode);
+vec4 tf_nearest_mip(sampler2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_nearest_mip(texture2D tex, vec2 uv, tf_Compare cmp, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE) != 0
+vec4 tf_nearest(samplerCube tex, vec2 uv, int face, tf_Sampler s);
+vec4 tf_nearest(textureCube tex, sampler smp, vec2 uv, int face, tf_Sampler s);
+vec4 tf_nearest_level(samplerCube tex, vec2 uv, int face, int level, int wrapMode);
+vec4 tf_nearest_level(textureCube tex, sampler smp, vec2 uv, int face, int level, int wrapMode);
+vec4 tf_nearest_mip(samplerCube tex, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_nearest_mip(textureCube tex, sampler smp, vec2 uv, int face, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_CUBE_ARRAY) != 0
+vec4 tf_nearest(samplerCubeArray tex, vec2 uv, int face, int layer, tf_Sampler s);
+vec4 tf_nearest(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, tf_Sampler s);
+vec4 tf_nearest_level(samplerCubeArray tex, vec2 uv, int face, int layer, int level, int wrapMode);
+vec4 tf_nearest_level(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, int level, int wrapMode);
+vec4 tf_nearest_mip(samplerCubeArray tex, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+vec4 tf_nearest_mip(textureCubeArray tex, sampler smp, vec2 uv, int face, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
+vec4 tf_nearest(sampler2D tex, vec2 uv, tf_LatLong latlong, tf_Sampler s);
+vec4 tf_nearest_level(sampler2D tex, vec2 uv, tf_LatLong latlong, int level, int wrapMode);
+vec4 tf_nearest_mip(sampler2D tex, vec2 uv, tf_LatLong latlong, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+#ifdef TF_SOURCE
+vec4 tf_nearest(TF_SOURCE tex, vec2 uv, tf_Sampler s);
+vec4 tf_nearest_level(TF_SOURCE tex, vec2 uv, int level, int wrapMode);
+vec4 tf_nearest_mip(TF_SOURCE tex, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_NEAREST
-#include "instantiate.glsl"
+#include "detail/instantiate.glsl"
 #undef TFI_FAMILY
 
-#elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_NEAREST && TFI_CAN_FETCH // per resource kind (access.glsl)
-
-vec4 tf_nearest_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
-{
-    if (!tf_finite(uv))
-        return vec4(0.0);
-    ivec2 size = tf_level_size(TFI_A, level);
-    vec2 texel = floor(tf_reduce_uv(uv, wrapMode) * vec2(size)); // whole periods first: no overflow
-    TF_COUNT_FETCHES(1);
-    return TFI_FETCH(ivec2(TFI_WRAP(texel.x, size.x, wrapMode), TFI_WRAP(texel.y, size.y, wrapMode)), level);
-}
-
-#if TFI_MANUAL
-vec4 tf_nearest(TFI_T, vec2 uv TFI_X, tf_Sampler s) { return tf_nearest_level(TFI_A, uv TFI_XA, 0, s.wrap); }
-
-vec4 tf_nearest_mip(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
-{
-    return tf_nearest_level(TFI_A, uv TFI_XA, tf_mip_level_nearest(tf_lod(TFI_A, dUVdx, dUVdy, s)), s.wrap);
-}
-#endif
-
-#endif
 #endif

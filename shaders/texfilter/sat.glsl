@@ -5,25 +5,32 @@
 //                      vec4 offset, vec4 scale);                             // one box
 //          vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy,
 //                               tf_Sampler s, vec4 offset, vec4 scale, int boxes); // K boxes along the major axis
-//          Also with the tables as utexture2D, usampler2DArray or utexture2DArray (the arrays with `int layer`
-//          right after uv: one table pair per layer), e.g. tf_sat(utexture2D satLow, utexture2D satHigh, vec2 uv,
-//          vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale).
-// Needs:   satLow:  usampler2D, RGBA32UI, (W+1) x (H+1): bits 0..31 of each channel's table entry;
-//          satHigh: usampler2D, R32UI, same size: bits 32..39 of R, G, B, A as bytes 0..3;
-//          offset, scale: vec4, per channel the value of quantisation level 0 and the span of levels
-//                   0..65535. All four come from tf::build_sat
-//                   (host/texture/sat.h: SatTable::low, ::high, ::offset, ::scale); upload them as is, one level each, with a
-//                   nearest sampler (integer formats are not filterable; only texelFetch reads them). The
-//                   level-0 texture itself is not needed: W x H is the table's size minus one (W, H ≤
-//                   4096; a table smaller than 2 x 2, i.e. none, gives vec4(0)). No MIP chain.
-// Options: s.wrap selects repeat/clamp/mirror; s.lodBias scales the footprint by exp2(lodBias);
-//          s.lodMin/lodMax are ignored (no MIP levels). boxes: 1..16 (clamped), slices of the footprint.
-//          No defines (TF_COUNT_FETCHES counts the texelFetch calls).
-// Example: layout(binding = 4) uniform usampler2D satLow;   // RGBA32UI, SatTable::low
-//          layout(binding = 5) uniform usampler2D satHigh;  // R32UI, SatTable::high
-//          vec4 c = tf_sat(satLow, satHigh, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT),
+//          The same overloads with the tables as utexture2D, usampler2DArray or utexture2DArray (arrays with
+//          `int layer` right after uv: one table pair a layer): the prototype list below. No TF_SOURCE form.
+// Math:    texel space x = u·W, y = v·H, J = [dUVdx dUVdy]·exp2(lodBias) in texels; the box around (x, y) with
+//          half-extents hx = ½(|J00| + |J01|), hy = ½(|J10| + |J11|) (the bounding box of the pixel's
+//          parallelogram uv + J·(a, b), a, b in [−½, ½]); result = ∫∫box f / area, f the box-reconstructed
+//          texture. Extents are clamped to W x H (a wider footprint averages one texture-sized box: with
+//          repeat one period). tf_sat_assembly cuts the parallelogram along its longer column into K slices
+//          and averages their boxes' means with equal weights; K = 1 is tf_sat exactly.
+// Options: s.wrap (repeat/clamp/mirror); s.lodBias scales the footprint by exp2(lodBias); s.lodMin/lodMax
+//          are ignored (no MIP levels). boxes: 1..16 (clamped). No defines.
+// Needs:   satLow RGBA32UI (bits 0..31 of each channel's entry) and satHigh R32UI (bits 32..39 of R, G, B, A
+//          as bytes 0..3), both (W+1) x (H+1), W, H <= 4096, read with texelFetch only; offset and scale per
+//          channel: all four from tf::build_sat (host/texture/sat.h: SatTable::low, ::high, ::offset, ::scale)
+//          or build_sat.glsl, uploaded as is. No MIP chain, no level-0 texture. Accuracy: within
+//          0.5/65535·scale of the exact mean of the float texels, plus float32 rounding (16-bit quantisation
+//          over each channel's own range; sums exact modulo 2^40).
+// Cost:    32 texel fetches (16 table entries, 2 words each) for a box inside the texture, 64 where it
+//          crosses a border on one axis, 128 on both; tf_sat_assembly K times that. Constant in the footprint.
+// Degenerate input: non-finite uv, or a table smaller than 2 x 2 (none bound), gives vec4(0); NaN/±Inf
+//          gradients give the whole texture's mean; zero gradients the texel under uv (nearest) on that axis;
+//          gradient components are clamped to ±2^24 texels, so huge finite ones never overflow.
+// Example: vec4 c = tf_sat(satLow, satHigh, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT),
 //                          satOffset, satScale); // SatTable::offset, ::scale, e.g. push constants
-//
+#ifndef TF_SAT_GLSL
+#define TF_SAT_GLSL
+
 // Footprint (DESIGN.md §3). Texel space x = u·W, y = v·H; J = [dUVdx dUVdy] in level-0 texels,
 // times exp2(lodBias). tf_sat averages the box-reconstructed texture (texel (i, j) constant on
 // [i, i+1) x [j, j+1)) over the bounding box of the pixel's parallelogram uv + J·(a, b), a, b in [−½, ½]:
@@ -84,15 +91,6 @@
 // slices are translates of one another, so their boxes have the same size and equal weights are the
 // area weights (no slice counts more than another; the overlap of neighbouring boxes is counted in each).
 // K = 1 is tf_sat exactly (same float operations).
-//
-// Cost: 16 table entries inside the texture (2 texelFetch each, low and high word: 32 fetches), 32
-// entries (64 fetches) where the box crosses a border on one axis, 64 (128) where it crosses both (a turn
-// of 16 a term: tfi_sat_box); tf_sat_assembly K times that. Constant in the footprint's size. Before
-// issue 16 a border-crossing box read only the entries it needed (24..64), but SIMD devices that run
-// every side of a branch (lavapipe) read all 64 for every box. Plane scene (docs/FILTERS.md): tf_sat 34.2 on average (max 72),
-// tf_sat_assembly with 4 boxes 132.7 (max 288).
-#ifndef TF_SAT_GLSL
-#define TF_SAT_GLSL
 
 #include "common.glsl"
 
@@ -205,117 +203,28 @@ bool tfi_sat_columns(ivec2 size, vec2 dUVdx, vec2 dUVdy, float lodBias, out vec2
     return true;
 }
 
+// BEGIN prototypes (generated: tests/prototypes.py --write; ctest prototypes.current checks it)
+// Every overload below is defined by this file's detail/*_kind.glsl for the kinds its #if names.
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
+vec4 tf_sat(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale);
+vec4 tf_sat_assembly(usampler2D satLow, usampler2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale, int boxes);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D) != 0
+vec4 tf_sat(utexture2D satLow, utexture2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale);
+vec4 tf_sat_assembly(utexture2D satLow, utexture2D satHigh, vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale, int boxes);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D_ARRAY) != 0
+vec4 tf_sat(usampler2DArray satLow, usampler2DArray satHigh, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale);
+vec4 tf_sat_assembly(usampler2DArray satLow, usampler2DArray satHigh, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale, int boxes);
+#endif
+#if (TF_RESOURCES & TF_RESOURCE_TEXTURE_2D_ARRAY) != 0
+vec4 tf_sat(utexture2DArray satLow, utexture2DArray satHigh, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale);
+vec4 tf_sat_assembly(utexture2DArray satLow, utexture2DArray satHigh, vec2 uv, int layer, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale, int boxes);
+#endif
+// END prototypes
+
 #define TFI_FAMILY TFI_FAMILY_SAT
-#include "instantiate.glsl"
+#include "detail/instantiate.glsl"
 #undef TFI_FAMILY
 
-#elif defined(TFI_FAMILY)
-#if TFI_FAMILY == TFI_FAMILY_SAT && TFI_SAT // per resource kind: the tables' types (access.glsl)
-
-tfi_SatInt tfi_sat_entry(TFI_SAT_T, ivec2 t TFI_SAT_X)
-{
-    TF_COUNT_FETCHES(2);
-    uint h = TFI_SAT_HIGH(t).r;
-    return tfi_SatInt(TFI_SAT_LOW(t), uvec4(h, h >> 8, h >> 16, h >> 24) & 0xFFu);
-}
-
-// Mean over the box [lo, hi) in texel units (corners within a few texture sizes of it), in the units of the
-// texture. The 16 corners' extended entries E(x, y) = ax·ay·S(rx, ry) + ax·by·S(rx, n) + bx·ay·S(n, ry) +
-// bx·by·S(n, n) are summed one kind of term a turn, 16 table entries each: the S(rx, ry) turn always, a turn for
-// the terms with by (the box crosses a horizontal border), one with bx, and the S(n, n) turn when it crosses
-// both. A loop because SIMD devices run every side of an `if` (lavapipe read all 64 entries of every box) but
-// leave a loop once no lane needs another turn: a batch of boxes inside the texture reads 16 entries. Sums
-// modulo 2^40 do not depend on their order, so every block sum, and the result, is what it was, bit for bit.
-vec4 tfi_sat_box(TFI_SAT_T, vec2 lo, vec2 hi TFI_SAT_X, ivec2 size, int wrapMode, vec4 offset, vec4 scale)
-{
-    ivec4 px, py;
-    vec3 wx, wy;
-    tfi_sat_edges(lo.x, hi.x, px, wx);
-    tfi_sat_edges(lo.y, hi.y, py, wy);
-    tfi_SatAxis ax[4], ay[4];
-    bool crossesX = false, crossesY = false; // some corner outside [0, n] on that axis: b != 0 somewhere
-    for (int k = 0; k < 4; ++k) {
-        ax[k] = tfi_sat_axis(px[k], size.x, wrapMode);
-        ay[k] = tfi_sat_axis(py[k], size.y, wrapMode);
-        crossesX = crossesX || ax[k].b != 0;
-        crossesY = crossesY || ay[k].b != 0;
-    }
-    int turns = 1 + (crossesX ? 1 : 0) + (crossesY ? 1 : 0) + (crossesX && crossesY ? 1 : 0);
-    tfi_SatInt e[16]; // E at corner (px[k], py[l]): e[4l + k]
-    int turn = 0;
-    do {
-        // The turn's term: 0 S(rx, ry), 1 S(rx, n) (by), 2 S(n, ry) (bx), 3 S(n, n); a box crossing one axis only
-        // takes that axis's term on its second turn.
-        int term = turn == 0 ? 0 : turn == 3 ? 3 : crossesY ? turn : 2;
-        bool fullX = term >= 2, fullY = term == 1 || term == 3;
-        for (int s = 0; s < 16; ++s) {
-            tfi_SatAxis x = ax[s & 3], y = ay[s >> 2];
-            int k = (fullX ? x.b : x.a) * (fullY ? y.b : y.a);
-            tfi_SatInt t = tfi_sat_entry(TFI_SAT_A, ivec2(fullX ? size.x : x.r, fullY ? size.y : y.r) TFI_SAT_XA);
-            t = tfi_sat_mul(t, k);
-            e[s] = turn == 0 ? t : tfi_sat_add(e[s], t);
-        }
-    } while (++turn < turns);
-    vec4 sum = vec4(0.0);
-    tfi_SatInt previous[3]; // x differences E(px[k+1], y) − E(px[k], y) of the previous corner row
-    // Unrolled (common.glsl TFI_UNROLL): e[] and previous[] then live in registers. Rolled, lavapipe indexed them
-    // through memory a lane at a time, a third of tf_sat's time (docs/BENCHMARKS.md); +270 SPIR-V instructions.
-    TFI_UNROLL for (int l = 0; l < 4; ++l) {
-        TFI_UNROLL for (int k = 0; k < 3; ++k) {
-            tfi_SatInt d = tfi_sat_sub(e[4 * l + k + 1], e[4 * l + k]);
-            if (l > 0) // block [px[k], px[k+1]) x [py[l-1], py[l]): exact, then weighted in float
-                sum += (wx[k] * wy[l - 1]) * tfi_sat_to_float(tfi_sat_sub(d, previous[k]));
-            previous[k] = d;
-        }
-    }
-    return offset + sum * (scale / 65535.0);
-}
-
-// Mean over the box of half-extents h (texel units) centred on uv.
-vec4 tfi_sat_centred(TFI_SAT_T, vec2 uv TFI_SAT_X, vec2 h, ivec2 size, int wrapMode, vec4 offset, vec4 scale)
-{
-    vec2 n = vec2(size);
-    h = min(h, 0.5 * n); // at most W x H texels: the bit budget
-    // Clamp: from −1 or 2 outward a box of at most the texture's size sees only edge texels.
-    uv = wrapMode == TF_WRAP_CLAMP ? clamp(uv, -1.0, 2.0) : tfi_sat_period(uv, wrapMode);
-    vec2 c = uv * n;
-    return tfi_sat_box(TFI_SAT_A, c - h, c + h TFI_SAT_XA, size, wrapMode, offset, scale);
-}
-
-vec4 tf_sat(TFI_SAT_T, vec2 uv TFI_SAT_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale)
-{
-    ivec2 size = TFI_SAT_SIZE - 1;
-    if (!tf_finite(uv) || any(lessThan(size, ivec2(1)))) // no table bound: nothing to average
-        return vec4(0.0);
-    vec2 jx, jy;
-    if (!tfi_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
-        return tfi_sat_box(TFI_SAT_A, vec2(0.0), vec2(size) TFI_SAT_XA, size, s.wrap, offset, scale);
-    return tfi_sat_centred(TFI_SAT_A, uv TFI_SAT_XA, 0.5 * (abs(jx) + abs(jy)), size, s.wrap, offset, scale);
-}
-
-vec4 tf_sat_assembly(TFI_SAT_T, vec2 uv TFI_SAT_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, vec4 offset, vec4 scale,
-                     int boxes)
-{
-    ivec2 size = TFI_SAT_SIZE - 1;
-    if (!tf_finite(uv) || any(lessThan(size, ivec2(1)))) // no table bound: nothing to average
-        return vec4(0.0);
-    vec2 jx, jy;
-    if (!tfi_sat_columns(size, dUVdx, dUVdy, s.lodBias, jx, jy))
-        return tfi_sat_box(TFI_SAT_A, vec2(0.0), vec2(size) TFI_SAT_XA, size, s.wrap, offset, scale);
-    int k = clamp(boxes, 1, 16);
-    float n = float(k);
-    bool xMajor = dot(jx, jx) >= dot(jy, jy);
-    vec2 major = xMajor ? jx : jy;
-    vec2 minor = xMajor ? jy : jx;
-    vec2 h = 0.5 * (abs(major) / n + abs(minor)); // every slice's bounding box
-    uv = tfi_sat_period(uv, s.wrap); // before adding offsets: keeps float precision in the slice centres
-    vec4 sum = vec4(0.0);
-    for (int i = 0; i < k; ++i) {
-        float a = (float(i) + 0.5) / n - 0.5; // slice centre along the major column, in (−½, ½)
-        sum += tfi_sat_centred(TFI_SAT_A, uv + major * a / vec2(size) TFI_SAT_XA, h, size, s.wrap, offset, scale);
-    }
-    return sum / n;
-}
-
-#endif
 #endif

@@ -4,25 +4,26 @@
 //
 // Use:     #extension GL_GOOGLE_include_directive : require
 //          #include "texfilter/texfilter.glsl"   // compile with -I<dir holding texfilter/>
-//          Every function of the individual includes; see each file's header and docs/API.md.
+//          Every function of the individual includes: each file's header and prototype list, docs/API.md.
 //          Any stage (fragment, compute, ray tracing; #version 450 or 460, ray tracing 460): only
 //          tf_quad_gradients_* need the fragment stage, tf_compute_quad_gradients TF_COMPUTE_QUADS.
-// Resources: every filter takes the textures a renderer binds (access.glsl; docs/API.md "Resources"):
-//          sampler2D; texture2D (+ sampler for the _hw forms); sampler2DArray, texture2DArray (+ sampler) with
-//          `int layer` right after uv; u/isampler2D, u/itexture2D (integer data filtered as float); depth
-//          maps with `tf_Compare cmp` after uv (percentage-closer filtering, compared before filtering) or, for
-//          _hw, sampler2DShadow / texture2D + samplerShadow with `float dref`; bindless arrays indexed with
-//          nonuniformEXT once TF_NONUNIFORM is defined. tf_sat's tables: usampler2D, utexture2D, and arrays.
-// Options: the individual includes', defined before this include:
-//          TF_COUNT_FETCHES(n), TF_COUNT_HW_LOOKUPS(n), TF_NONUNIFORM, TF_RESOURCES, TF_MAGNIFY (common.glsl),
-//          TF_COMPUTE_QUADS (derivatives.glsl), TF_ANISO_RATIO_SLACK (aniso.glsl), TF_EWA_MAX_TEXELS (ewa.glsl);
-//          per call: tf_Sampler (and tf_Compare for depth maps).
-// Needs:   what each called filter needs: a sampler2D with a full MIP chain for every mip filter (bound
-//          with a linear sampler of the same wrap mode for the _hw forms), the SAT's two usampler2D for
-//          tf_sat / tf_sat_assembly. Nothing is declared here: no bindings, no push constants.
-// Cost:    texel fetches a lookup: nearest 1, bilinear 4, bspline / catmull-rom 16 (_hw: 4 / 9 taps),
-//          trilinear 8 (4 on a level), brilinear 4 or 8, aniso 8 a probe (N <= 16), ewa the texels in the ellipse on 2 levels (capped), sat 32 (<= 128)
-//          (docs/FILTERS.md). Unused functions cost nothing: compilers drop them.
+//          Every filter takes the textures a renderer binds (docs/API.md "Resources"): sampler2D; texture2D
+//          (+ sampler for _hw); sampler2DArray, texture2DArray (+ sampler) with `int layer` after uv;
+//          u/isampler2D, u/itexture2D; depth maps with `tf_Compare cmp` after uv (PCF) or, for _hw,
+//          sampler2DShadow / texture2D + samplerShadow with `float dref`; bindless arrays with TF_NONUNIFORM;
+//          and, for the manual 2D families, your own texel source (TF_SOURCE, common.glsl).
+// Options: the individual includes', defined before this include: TF_COUNT_FETCHES(n), TF_COUNT_HW_LOOKUPS(n),
+//          TF_NONUNIFORM, TF_RESOURCES, TF_SOURCE, TF_MAGNIFY (common.glsl), TF_COMPUTE_QUADS (derivatives.glsl),
+//          TF_ANISO_RATIO_SLACK (aniso.glsl), TF_EWA_MAX_TEXELS (ewa.glsl); per call: tf_Sampler (and
+//          tf_Compare for depth maps).
+// Needs:   what each called filter needs (its header). Nothing is declared here: no bindings, no push constants.
+// Cost:    texel fetches a lookup: nearest 1, bilinear 4, bspline / catmull-rom 16 (_hw: 4 / 9 lookups),
+//          trilinear 8 (4 on a level), brilinear 4 or 8, aniso 8 a probe (N <= 16), ewa the texels in the
+//          ellipse on 2 levels (capped by TF_EWA_MAX_TEXELS), sat 32 (<= 128), stochastic forms 1. Unused
+//          functions cost nothing: compilers drop them.
+// Degenerate input: each family's header; in short, non-finite uv or dir gives vec4(0), NaN/±Inf gradients
+//          the coarsest level, zero gradients the finest, huge uv is moved by whole periods; no input makes a
+//          loop run unbounded.
 // Example: vec4 c = tf_trilinear(tex, uv, dFdxFine(uv), dFdyFine(uv), tf_sampler(TF_WRAP_REPEAT));
 #ifndef TF_TEXFILTER_GLSL
 #define TF_TEXFILTER_GLSL

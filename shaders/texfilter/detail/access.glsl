@@ -1,4 +1,4 @@
-// texfilter/access.glsl — internal: the texture-access layer: what a "texture" is for one resource kind, and how a
+// texfilter/detail/access.glsl — internal: the texture-access layer: what a "texture" is for one resource kind, and how a
 // family reads it. Internal: instantiate.glsl includes it once per kind (no include guard on purpose), and
 // every family body reads textures only through the macros below, so each family's math is written once.
 //
@@ -20,13 +20,16 @@
 //   15 samplerCube tex, 16 textureCube tex, sampler smp, 17 samplerCubeArray tex, 18 textureCubeArray tex,
 //      sampler smp: manual (texels read at their centres through the sampler, which must be NEAREST) + _hw
 //      (taps through the sampler, which must be LINEAR); extras `int face` (+ `int layer`, arrays)
-//   19 sampler2D tex + tfi_LatLong: a lat-long map (the texture is kind 1's; the extra only tells the overloads
+//   19 sampler2D tex + tf_LatLong: a lat-long map (the texture is kind 1's; the extra only tells the overloads
 //      apart): manual + _hw
+//   20 TF_SOURCE tex: the user's texel source (docs/API.md "Texel sources"): tf_source_size, tf_source_levels and
+//      tf_source_fetch, declared by the user before the includes, stand for textureSize, textureQueryLevels and
+//      texelFetch; manual only
 // Macros a body may use (parameter names are fixed: tex, smp, layer, cmp, dref):
 //   TFI_T, TFI_A      the texture parameters in a declaration / a call (`sampler2D tex` / `tex`)
 //   TFI_X, TFI_XA     the extras, with their leading comma (`, int layer` / `, layer`; empty for 2D)
 //   TFI_FETCH(p, l)   texel p (ivec2, in range) of level l as vec4 (decoded, converted or compared)
-//   TFI_SIZE0         level 0's size (ivec2), TFI_LEVELS the level count
+//   TFI_SIZE0         level 0's size (ivec2), TFI_LEVELS the level count, TFI_LEVEL_SIZE(l) level l's size
 //   TFI_LOOKUP(uv, l) a hardware lookup at explicit LOD l (vec4); kinds without a sampler: a stand-in vec4(0)
 //                     that no entry point of theirs reaches (their `hardware` flag is always false)
 //   TFI_MANUAL, TFI_HW   1 where the kind gets the manual / the _hw entry points
@@ -45,19 +48,32 @@
 #error "texfilter/access.glsl is internal: include a family (e.g. texfilter/trilinear.glsl)"
 #endif
 
+// The previous kind's macros (none before the first kind; #undef of an undefined name is legal, but Slang warns).
+#ifdef TFI_T
 #undef TFI_T
+#undef TFI_SLANG_TEXTURE
+#undef TFI_TEXEL_FETCH
+#undef TFI_TEXTURE_SIZE
 #undef TFI_A
 #undef TFI_X
 #undef TFI_XA
 #undef TFI_FETCH
 #undef TFI_SIZE0
 #undef TFI_LEVELS
+#undef TFI_LEVEL_SIZE
 #undef TFI_LOOKUP
 #undef TFI_MANUAL
 #undef TFI_HW
 #undef TFI_CAN_FETCH
 #undef TFI_OWNS_T
 #undef TFI_SAT
+#undef TFI_WRAP
+#undef TFI_WRAP_PAIR
+#undef TFI_ENV
+#undef TFI_CUBE
+#undef TFI_LATLONG
+#endif
+#ifdef TFI_SAT_T
 #undef TFI_SAT_T
 #undef TFI_SAT_A
 #undef TFI_SAT_X
@@ -65,13 +81,22 @@
 #undef TFI_SAT_LOW
 #undef TFI_SAT_HIGH
 #undef TFI_SAT_SIZE
-#undef TFI_WRAP
-#undef TFI_WRAP_PAIR
-#undef TFI_ENV
-#undef TFI_CUBE
-#undef TFI_LATLONG
+#endif
 
-#if TFI_KIND < 1 || TFI_KIND > 19
+// Slang's GLSL mode has no samplerless texelFetch / textureSize / textureQueryLevels and no sampler2D(tex, smp):
+// there the separate-texture kinds (texture2D = Texture2D, sampler = SamplerState: common.glsl) read through
+// common.glsl's tfi_slang_* wrappers of the texture's own methods.
+#if defined(__SLANG__) && (TFI_KIND == 2 || TFI_KIND == 3 || TFI_KIND == 5 || TFI_KIND == 6)
+#define TFI_SLANG_TEXTURE 1
+#define TFI_TEXEL_FETCH tfi_slang_fetch
+#define TFI_TEXTURE_SIZE tfi_slang_size
+#else
+#define TFI_SLANG_TEXTURE 0
+#define TFI_TEXEL_FETCH texelFetch
+#define TFI_TEXTURE_SIZE textureSize
+#endif
+
+#if TFI_KIND < 1 || TFI_KIND > 20
 #error "texfilter/access.glsl: unknown TFI_KIND"
 #endif
 
@@ -108,10 +133,12 @@
 #define TFI_T samplerCubeArray tex
 #elif TFI_KIND == 18
 #define TFI_T textureCubeArray tex, sampler smp
+#elif TFI_KIND == 20
+#define TFI_T TF_SOURCE tex
 #else
 #define TFI_T sampler2D tex
 #endif
-#define TFI_ENV (TFI_KIND >= 15)
+#define TFI_ENV (TFI_KIND >= 15 && TFI_KIND <= 19)
 #define TFI_CUBE (TFI_KIND >= 15 && TFI_KIND <= 18)
 #define TFI_LATLONG (TFI_KIND == 19)
 #if TFI_KIND == 3 || TFI_KIND == 6 || TFI_KIND == 14 || TFI_KIND == 16 || TFI_KIND == 18
@@ -137,20 +164,39 @@
 #define TFI_X , int face, int layer
 #define TFI_XA , face, layer
 #elif TFI_KIND == 19
-#define TFI_X , tfi_LatLong latlong
+#define TFI_X , tf_LatLong latlong
 #define TFI_XA , latlong
 #else
 #define TFI_X
 #define TFI_XA
 #endif
 
+#if TFI_KIND == 20
+#define TFI_SIZE0 tf_source_size(tex, 0)
+#define TFI_LEVELS tf_source_levels(tex)
+#define TFI_LEVEL_SIZE(l) tf_source_size(tex, l)
+#else
+#if TFI_SLANG_TEXTURE
+#define TFI_SIZE0 tfi_slang_size(TF_NONUNIFORM(tex), 0).xy
+#define TFI_LEVELS tfi_slang_levels(TF_NONUNIFORM(tex))
+#else
 #define TFI_SIZE0 textureSize(TF_NONUNIFORM(tex), 0).xy
 #define TFI_LEVELS textureQueryLevels(TF_NONUNIFORM(tex))
+#endif
+// Derived from level 0 on purpose: textureSize() with a level that differs across a SIMD batch returned the
+// wrong lane's size on lavapipe (Mesa 22.3).
+#define TFI_LEVEL_SIZE(l) max(TFI_SIZE0 >> (l), ivec2(1))
+#endif
 
 // A texel. Arrays clamp the layer as Vulkan clamps a sampled array layer (to [0, layers − 1]): texelFetch
 // of a layer outside the image is undefined. No texelFetch on a shadow sampler (13, 14): a stand-in that no
 // entry point of theirs reaches.
-#if TFI_KIND >= 4 && TFI_KIND <= 6
+#if TFI_SLANG_TEXTURE && (TFI_KIND == 5 || TFI_KIND == 6)
+#define TFI_FETCH(p, l) \
+    tfi_slang_fetch(TF_NONUNIFORM(tex), ivec3(p, clamp(layer, 0, tfi_slang_size(TF_NONUNIFORM(tex), 0).z - 1)), l)
+#elif TFI_SLANG_TEXTURE
+#define TFI_FETCH(p, l) tfi_slang_fetch(TF_NONUNIFORM(tex), p, l)
+#elif TFI_KIND >= 4 && TFI_KIND <= 6
 #define TFI_FETCH(p, l) \
     texelFetch(TF_NONUNIFORM(tex), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(tex), 0).z - 1)), l)
 #elif TFI_KIND >= 7 && TFI_KIND <= 10
@@ -163,6 +209,8 @@
 #define TFI_FETCH(p, l) tfi_cube_texel(TFI_A TFI_XA, p, l) // common.glsl: seamless, any p
 #elif TFI_LATLONG
 #define TFI_FETCH(p, l) tfi_latlong_texel(TFI_A, p, l) // common.glsl: across the seam and the poles, any p
+#elif TFI_KIND == 20
+#define TFI_FETCH(p, l) tf_source_fetch(tex, p, l)
 #else
 #define TFI_FETCH(p, l) texelFetch(TF_NONUNIFORM(tex), p, l)
 #endif
@@ -182,10 +230,14 @@
 // entry point of theirs reaches (their `hardware` flag is always false).
 #if TFI_KIND == 1
 #define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), uv, l)
+#elif TFI_KIND == 3 && TFI_SLANG_TEXTURE
+#define TFI_LOOKUP(uv, l) tfi_slang_lookup(TF_NONUNIFORM(tex), smp, uv, l)
 #elif TFI_KIND == 3
 #define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(sampler2D(tex, smp)), uv, l)
 #elif TFI_KIND == 4
 #define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(tex), vec3(uv, float(layer)), l)
+#elif TFI_KIND == 6 && TFI_SLANG_TEXTURE
+#define TFI_LOOKUP(uv, l) tfi_slang_lookup(TF_NONUNIFORM(tex), smp, vec3(uv, float(layer)), l)
 #elif TFI_KIND == 6
 #define TFI_LOOKUP(uv, l) textureLod(TF_NONUNIFORM(sampler2DArray(tex, smp)), vec3(uv, float(layer)), l)
 #elif TFI_KIND == 13
@@ -210,7 +262,7 @@
 // Which entry points a kind gets: the manual forms where texelFetch reads the texture alone, the _hw forms
 // where a sampler comes with it.
 #define TFI_MANUAL (TFI_KIND != 3 && TFI_KIND != 6 && (TFI_KIND < 13 || TFI_KIND >= 15))
-#define TFI_HW (TFI_KIND == 1 || TFI_KIND == 3 || TFI_KIND == 4 || TFI_KIND == 6 || TFI_KIND >= 13)
+#define TFI_HW (TFI_KIND == 1 || TFI_KIND == 3 || TFI_KIND == 4 || TFI_KIND == 6 || (TFI_KIND >= 13 && TFI_KIND <= 19))
 
 // 11 and 12 (and 19) share sampler2D / texture2D with 1 and 2: the functions that take only the texture (size and
 // level queries) are defined once, by whichever of them is instantiated.
@@ -237,18 +289,18 @@
 #define TFI_SAT_T utexture2DArray satLow, utexture2DArray satHigh
 #endif
 #define TFI_SAT_A satLow, satHigh
-#define TFI_SAT_SIZE textureSize(TF_NONUNIFORM(satLow), 0).xy
+#define TFI_SAT_SIZE TFI_TEXTURE_SIZE(TF_NONUNIFORM(satLow), 0).xy
 #if TFI_KIND == 1 || TFI_KIND == 2
 #define TFI_SAT_X
 #define TFI_SAT_XA
-#define TFI_SAT_LOW(p) texelFetch(TF_NONUNIFORM(satLow), p, 0)
-#define TFI_SAT_HIGH(p) texelFetch(TF_NONUNIFORM(satHigh), p, 0)
+#define TFI_SAT_LOW(p) TFI_TEXEL_FETCH(TF_NONUNIFORM(satLow), p, 0)
+#define TFI_SAT_HIGH(p) TFI_TEXEL_FETCH(TF_NONUNIFORM(satHigh), p, 0)
 #else
 #define TFI_SAT_X , int layer
 #define TFI_SAT_XA , layer
 #define TFI_SAT_LOW(p) \
-    texelFetch(TF_NONUNIFORM(satLow), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(satLow), 0).z - 1)), 0)
+    TFI_TEXEL_FETCH(TF_NONUNIFORM(satLow), ivec3(p, clamp(layer, 0, TFI_TEXTURE_SIZE(TF_NONUNIFORM(satLow), 0).z - 1)), 0)
 #define TFI_SAT_HIGH(p) \
-    texelFetch(TF_NONUNIFORM(satHigh), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(satHigh), 0).z - 1)), 0)
+    TFI_TEXEL_FETCH(TF_NONUNIFORM(satHigh), ivec3(p, clamp(layer, 0, TFI_TEXTURE_SIZE(TF_NONUNIFORM(satHigh), 0).z - 1)), 0)
 #endif
 #endif

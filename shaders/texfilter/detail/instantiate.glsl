@@ -1,16 +1,16 @@
-// texfilter/instantiate.glsl — internal: instantiates the family named by TFI_FAMILY once per resource kind
-// that TF_RESOURCES selects (common.glsl): for each, access.glsl defines how that kind is read, then the
-// family's file is included again, and its per-kind part (the `#elif defined(TFI_KIND)` branch after its
-// include guard) is compiled with those macros. No include guard: included once by every family file.
+// texfilter/detail/instantiate.glsl — internal: instantiates the family named by TFI_FAMILY once per resource
+// kind that TF_RESOURCES selects (common.glsl), and once more for the user's texel source when TF_SOURCE is
+// defined: for each, access.glsl defines how that kind is read, then family.glsl includes the family's
+// per-kind part (detail/NAME_kind.glsl), compiled with those macros. No include guard: included once by
+// every family file.
 //
 // Use:     in a family file, after its once-only part:
 //              #define TFI_FAMILY TFI_FAMILY_TRILINEAR
-//              #include "instantiate.glsl"
+//              #include "detail/instantiate.glsl"
 //              #undef TFI_FAMILY
 // Cost:    compile time only (each kind's functions are compiled; compilers drop the ones never called).
-// Options: TF_RESOURCES (common.glsl). Example: see trilinear.glsl.
 #if !defined(TFI_FAMILY) || !defined(TF_RESOURCES)
-#error "texfilter/instantiate.glsl is internal: include a family (e.g. texfilter/trilinear.glsl)"
+#error "texfilter/detail/instantiate.glsl is internal: include a family (e.g. texfilter/trilinear.glsl)"
 #endif
 
 #if (TF_RESOURCES & TF_RESOURCE_SAMPLER_2D) != 0
@@ -141,6 +141,13 @@
 
 #if (TF_RESOURCES & TF_RESOURCE_LATLONG) != 0
 #define TFI_KIND 19
+#include "access.glsl"
+#include "family.glsl"
+#undef TFI_KIND
+#endif
+
+#ifdef TF_SOURCE
+#define TFI_KIND 20
 #include "access.glsl"
 #include "family.glsl"
 #undef TFI_KIND

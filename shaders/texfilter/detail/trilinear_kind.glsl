@@ -1,0 +1,19 @@
+// texfilter/detail/trilinear_kind.glsl — internal: trilinear.glsl's functions for one resource kind. detail/instantiate.glsl
+// includes it once per kind (no include guard on purpose), with detail/access.glsl's macros for that kind.
+#if !defined(TFI_KIND)
+#error "texfilter/detail/trilinear_kind.glsl is internal: include texfilter/trilinear.glsl"
+#endif
+#if TFI_MANUAL
+
+vec4 tf_trilinear(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
+{
+    float f;
+    int lo = tfi_split_lod(tf_lod(TFI_A, dUVdx, dUVdy, s), f);
+#define TFI_TRILINEAR_LEVEL(level) tfi_mip_level(TFI_A, uv TFI_XA, level, s.wrap)
+    vec4 color;
+    TFI_BLEND_LEVELS_ONCE(color, TFI_TRILINEAR_LEVEL, lo, f); // each level's fetches issued once (lod.glsl)
+#undef TFI_TRILINEAR_LEVEL
+    return color;
+}
+
+#endif
