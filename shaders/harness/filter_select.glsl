@@ -97,9 +97,21 @@ layout(set = 0, binding = HARNESS_BINDING_SAT_HIGH) uniform utexture2D u_satHigh
 #define HARNESS_X
 #define HARNESS_TEX_HW u_image, u_sampler
 #define HARNESS_X_HW
+#ifdef __SLANG__ // no sampler2D(texture, sampler) nor samplerless queries there: the texture's own methods
+#define HARNESS_GRAD(uv, dx, dy) u_image.SampleGrad(u_sampler, uv, dx, dy)
+ivec3 harness_image_size0()
+{
+    uint w, h, levels;
+    u_image.GetDimensions(0u, w, h, levels);
+    return ivec3(int(w), int(h), int(levels));
+}
+#define HARNESS_SIZE0 harness_image_size0().xy
+#define HARNESS_LEVELS harness_image_size0().z
+#else
 #define HARNESS_GRAD(uv, dx, dy) textureGrad(sampler2D(u_image, u_sampler), uv, dx, dy)
 #define HARNESS_SIZE0 textureSize(u_image, 0)
 #define HARNESS_LEVELS textureQueryLevels(u_image)
+#endif
 #elif HARNESS_RESOURCE == HARNESS_RESOURCE_ARRAY
 layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform sampler2DArray u_texture;
 layout(set = 0, binding = HARNESS_BINDING_SAT_LOW) uniform usampler2DArray u_satLow;
@@ -122,9 +134,21 @@ layout(set = 0, binding = HARNESS_BINDING_SAT_HIGH) uniform utexture2DArray u_sa
 #define HARNESS_X , pc.layer
 #define HARNESS_TEX_HW u_image, u_sampler
 #define HARNESS_X_HW , pc.layer
+#ifdef __SLANG__ // as the separate kind's
+#define HARNESS_GRAD(uv, dx, dy) u_image.SampleGrad(u_sampler, vec3(uv, float(pc.layer)), dx, dy)
+ivec3 harness_image_size0()
+{
+    uint w, h, layers, levels;
+    u_image.GetDimensions(0u, w, h, layers, levels);
+    return ivec3(int(w), int(h), int(levels));
+}
+#define HARNESS_SIZE0 harness_image_size0().xy
+#define HARNESS_LEVELS harness_image_size0().z
+#else
 #define HARNESS_GRAD(uv, dx, dy) textureGrad(sampler2DArray(u_image, u_sampler), vec3(uv, float(pc.layer)), dx, dy)
 #define HARNESS_SIZE0 textureSize(u_image, 0).xy
 #define HARNESS_LEVELS textureQueryLevels(u_image)
+#endif
 #elif HARNESS_RESOURCE == HARNESS_RESOURCE_BINDLESS
 layout(set = 0, binding = HARNESS_BINDING_TEXTURE) uniform sampler2D u_textures[HARNESS_BINDLESS_COUNT];
 #define HARNESS_INDEX ((uint(pc.layer) + harnessLookupIndex) % uint(HARNESS_BINDLESS_COUNT))
