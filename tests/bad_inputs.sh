@@ -431,8 +431,9 @@ sample_spirv() {
     expect_error "sample --spirv: a directory" "is a directory" out.csv -- "${s[@]}" --spirv . -o out.csv
     expect_error "sample --spirv with the reference backend" "--spirv is the device's lookup shader: it needs --backend vulkan" \
         out.csv -- "${s[@]}" --backend reference --spirv empty.spv -o out.csv
-    expect_error "sample --spirv with --resource separate" "--spirv replaces the combined kind's shader" out.csv -- \
-        "${s[@]}" --resource separate --spirv empty.spv -o out.csv
+    expect_error "sample --spirv with --resource bindless" \
+        "--spirv replaces the shader of --resource combined, separate or separate-array, not bindless" out.csv -- \
+        "${s[@]}" --resource bindless --spirv empty.spv -o out.csv
     expect_error "sample --spirv with an integer format" "--format r16ui is read through the integer build" out.csv -- \
         "${s[@]}" --format r16ui --spirv empty.spv -o out.csv
     # Modules that are valid SPIR-V but not a sample shader.
@@ -445,24 +446,37 @@ layout(push_constant, std430) uniform P { int wrapMode; float lodBias, lodMin, l
         "$interface" >binding7.comp
     printf '#version 450\n#extension GL_EXT_samplerless_texture_functions : require\nlayout(local_size_x = 64) in;\n%s\nlayout(set = 0, binding = 0) uniform texture2D t;\nvoid main() { results[0] = vec4(textureSize(t, 0), 0, 0) + lookups[0]; }\n' \
         "$interface" >sampled.comp
+    printf '#version 450\nlayout(local_size_x = 64) in;\n%s\nlayout(set = 0, binding = 0) uniform sampler2D t;\nvoid main() { results[0] = vec4(textureSize(t, 0), 0, 0) + lookups[0]; }\n' \
+        "$interface" >combined.comp
     printf '#version 450\nlayout(local_size_x = 64) in;\n%s\nvoid main() { uint i = gl_GlobalInvocationID.x; if (i < pc.count) { results[i] = vec4(lookups[6u * i]); stats[i] = uvec2(0u); } }\n' \
         "$interface" >good.comp
-    for shader in frag.frag binding7.comp sampled.comp good.comp; do
+    for shader in frag.frag binding7.comp sampled.comp combined.comp good.comp; do
         glslangValidator -V --target-env vulkan1.2 "$shader" -o "${shader%.*}.spv" >/dev/null ||
             fail "sample --spirv: glslangValidator $shader" "the test's own shader does not compile"
     done
     expect_error "sample --spirv: a fragment shader" "frag.spv: has no GLCompute entry point named 'main'" out.csv -- \
         "${s[@]}" --spirv frag.spv -o out.csv
-    expect_error "sample --spirv: a binding the pass lacks" "binding7.spv: a resource at binding 7, which the sample pass does not bind" out.csv -- \
+    expect_error "sample --spirv: a binding the pass lacks" \
+        "binding7.spv: a resource at binding 7, which the sample pass of --resource combined does not bind" out.csv -- \
         "${s[@]}" --spirv binding7.spv -o out.csv
     expect_error "sample --spirv: a sampled image where the pass binds a combined one" \
-        "sampled.spv: binding 0 is a sampled image; the sample pass binds a combined image sampler there" out.csv -- \
-        "${s[@]}" --spirv sampled.spv -o out.csv
+        "sampled.spv: binding 0 is a sampled image (2D); the sample pass of --resource combined binds a combined image sampler (2D) there" \
+        out.csv -- "${s[@]}" --spirv sampled.spv -o out.csv
+    # A module of one kind given to another's pass: named, with the variant to compile.
+    expect_error "sample --spirv: a combined module for --resource separate" \
+        "combined.spv: binding 0 is a combined image sampler (2D); the sample pass of --resource separate binds a sampled image (2D) there (--resource separate runs shaders/harness/sample.comp.glsl compiled with -DHARNESS_RESOURCE=1)" \
+        out.csv -- "${s[@]}" --resource separate --spirv combined.spv -o out.csv
+    expect_error "sample --spirv: a separate module for --resource separate-array" \
+        "sampled.spv: binding 0 is a sampled image (2D); the sample pass of --resource separate-array binds a sampled image (2D array) there" \
+        out.csv -- "${s[@]}" --resource separate-array --spirv sampled.spv -o out.csv
     if "$TEXFILTER" info >/dev/null 2>&1; then
         expect_success "sample --spirv: a module with the pass's interface runs" ok_spirv.csv -- \
             "${s[@]}" --spirv good.spv -o ok_spirv.csv
+        expect_success "sample --spirv: a module with --resource separate's interface runs" ok_spirv_separate.csv -- \
+            "${s[@]}" --resource separate --spirv sampled.spv -o ok_spirv_separate.csv
     else
         skip "sample --spirv: a module with the pass's interface runs" "no Vulkan device here"
+        skip "sample --spirv: a module with --resource separate's interface runs" "no Vulkan device here"
     fi
 }
 

@@ -47,14 +47,17 @@ std::vector<uint32_t> sample_spirv_from(const Args& args, Backend backend, const
     const std::string path = args.get("--spirv", "");
     if (backend != Backend::vulkan)
         throw Error("--spirv is the device's lookup shader: it needs --backend vulkan");
-    if (resource.resource != Resource::combined)
-        throw Error("--spirv replaces the combined kind's shader: it needs --resource combined, not " +
+    // The kinds whose harness variant Slang's GLSL mode compiles and tests/test_slang.cpp runs (docs/API.md
+    // "Slang"); each is checked against its own pass's bindings.
+    if (resource.resource != Resource::combined && resource.resource != Resource::separate &&
+        resource.resource != Resource::separate_array)
+        throw Error("--spirv replaces the shader of --resource combined, separate or separate-array, not " +
                     to_string(resource.resource));
     if (format_info(source.format).integer)
         throw Error("--spirv replaces the float formats' shader; --format " + to_string(source.format) +
                     " is read through the integer build");
     constexpr uint64_t max_bytes = 64ull << 20; // the harness module is ~0.5 MB
-    return check_sample_spirv(read_text_file(path, max_bytes, "the SPIR-V file"), path);
+    return check_sample_spirv(read_text_file(path, max_bytes, "the SPIR-V file"), path, resource.resource);
 }
 
 } // namespace
@@ -68,9 +71,10 @@ int run_sample(const std::vector<std::string>& argv)
                                          {"--stats", "", "vulkan: add columns fetches,hw_lookups (counted in the "
                                                          "shader) and print their mean, min and max"},
                                          {"--spirv", "FILE.spv",
-                                          "vulkan, --resource combined: run the lookups through FILE.spv instead of "
-                                          "the built-in shader (shaders/harness/sample.comp.glsl compiled by another "
-                                          "compiler, e.g. Slang's; checked first: valid SPIR-V, the sample pass's "
+                                          "vulkan, --resource combined, separate or separate-array: run the lookups "
+                                          "through FILE.spv instead of the built-in shader (shaders/harness/"
+                                          "sample.comp.glsl compiled with -DHARNESS_RESOURCE=<the kind's id> by another "
+                                          "compiler, e.g. Slang's; checked first: valid SPIR-V, the kind's sample pass's "
                                           "bindings)"}},
                                         resource_flags(),
                                         device_flags()});
@@ -107,6 +111,7 @@ int run_sample(const std::vector<std::string>& argv)
     if (with_stats && backend != Backend::vulkan)
         throw Error("--stats counts the shader's fetches: it needs --backend vulkan");
     const std::vector<uint32_t> spirv = sample_spirv_from(args, backend, resource, source);
+    const ShaderCode shader = {spirv.empty() ? nullptr : spirv.data(), spirv.size() * sizeof(uint32_t)};
     std::vector<Lookup> lookups = read_lookups_csv(args.require("--lookups"));
     CommandDevice device = open_command_device(backend, args);
     if (device.gpu)
@@ -135,7 +140,7 @@ int run_sample(const std::vector<std::string>& argv)
     std::vector<glm::dvec4> colors;
     std::vector<LookupStats> stats;
     if (resource.resource != Resource::combined) {
-        colors = sample_resource(gpu, chain, lookups, options, resource, &stats);
+        colors = sample_resource(gpu, chain, lookups, options, resource, &stats, shader);
         if (gpu)
             gpu->finish();
     } else if (!gpu) {
@@ -143,9 +148,8 @@ int run_sample(const std::vector<std::string>& argv)
     } else {
         std::vector<glm::vec4> results = with_texture(gpu->context, chain, needs_sat(options.filter), source.format,
                                                       source.build, [&](auto& t) {
-            if (!spirv.empty())
-                return gpu_sample_with_shader(gpu->context, t, lookups, options,
-                                              {spirv.data(), spirv.size() * sizeof(uint32_t)}, &stats);
+            if (shader.words)
+                return gpu_sample_with_shader(gpu->context, t, lookups, options, shader, &stats);
             return gpu_sample(gpu->context, t, lookups, options, &stats);
         });
         gpu->finish();

@@ -17,11 +17,13 @@ constexpr int kMaxLayers = 64; // distinct layer content (core/resource_textures
 // The lookups on uploaded images, which are destroyed afterwards (also when the pass throws).
 std::vector<glm::dvec4> sample_on_device(const VulkanContext& context, GpuResources images,
                                          const std::vector<Lookup>& lookups, const SamplerOptions& options,
-                                         const ResourceOptions& resource, std::vector<LookupStats>* stats)
+                                         const ResourceOptions& resource, std::vector<LookupStats>* stats,
+                                         ShaderCode shader)
 {
     Cleanup cleanup;
     cleanup.add([&] { destroy_resources(context, images); });
-    const std::vector<glm::vec4> results = gpu_sample_resource(context, images, lookups, options, resource, stats);
+    const std::vector<glm::vec4> results =
+        gpu_sample_resource(context, images, lookups, options, resource, stats, shader);
     return {results.begin(), results.end()};
 }
 
@@ -72,7 +74,7 @@ ResourceOptions resource_options_from(const Args& args)
 
 std::vector<glm::dvec4> sample_resource(GpuSession* gpu, const MipChain& chain, const std::vector<Lookup>& lookups,
                                         const SamplerOptions& options, const ResourceOptions& resource,
-                                        std::vector<LookupStats>* stats)
+                                        std::vector<LookupStats>* stats, ShaderCode shader)
 {
     check_resource_options(options, resource);
     if (gpu)
@@ -85,14 +87,14 @@ std::vector<glm::dvec4> sample_resource(GpuSession* gpu, const MipChain& chain, 
         if (!gpu)
             return reference_sample_source(source, lookups, options);
         return sample_on_device(gpu->context, upload_texel_source(gpu->context, source), lookups, options, resource,
-                                stats);
+                                stats, shader);
     }
     const std::vector<MipChain> chains = make_resource_chains(chain, resource);
     if (!gpu)
         return reference_sample_resource(chains, lookups, options, resource);
     return sample_on_device(gpu->context, upload_resources(gpu->context, chains, resource.resource,
                                                            needs_sat(options.filter)),
-                            lookups, options, resource, stats);
+                            lookups, options, resource, stats, shader);
 }
 
 } // namespace tf

@@ -8,6 +8,7 @@
 #include "core/resource.h"
 #include "flags/args.h"
 #include "flags/cli_common.h"
+#include "vulkan/pipeline.h"
 #include <glm/vec4.hpp>
 #include <vector>
 
@@ -18,9 +19,10 @@ std::vector<FlagSpec> resource_flags();
 ResourceOptions resource_options_from(const Args& args);
 
 // The lookups filtered on the resource made from `chain` (core/resource_textures.h; atlas and virtual:
-// core/texel_sources.h); gpu null: the CPU reference. Stats only on the GPU.
+// core/texel_sources.h); gpu null: the CPU reference. Stats only on the GPU. shader: the GPU's lookup shader
+// instead of the kind's built-in one (`sample --spirv`; null words: the built-in one).
 std::vector<glm::dvec4> sample_resource(GpuSession* gpu, const MipChain& chain, const std::vector<Lookup>& lookups,
                                         const SamplerOptions& options, const ResourceOptions& resource,
-                                        std::vector<LookupStats>* stats);
+                                        std::vector<LookupStats>* stats, ShaderCode shader = {nullptr, 0});
 
 } // namespace tf

@@ -64,7 +64,8 @@ void check_source_device(const VulkanContext& context, Resource kind, int width,
 
 std::vector<glm::vec4> gpu_sample_resource(const VulkanContext& context, const GpuResources& resources,
                                            const std::vector<Lookup>& lookups, const SamplerOptions& options,
-                                           const ResourceOptions& resource, std::vector<LookupStats>* stats)
+                                           const ResourceOptions& resource, std::vector<LookupStats>* stats,
+                                           ShaderCode shader)
 {
     check_resource_options(options, resource);
     check_resource_device(context, options, resource);
@@ -72,7 +73,7 @@ std::vector<glm::vec4> gpu_sample_resource(const VulkanContext& context, const G
         throw Error("gpu_sample_resource: the images were uploaded for --resource " + to_string(resources.resource));
     const HarnessVariant variant = harness_variant(resource.resource, uint32_t(resources.layers));
     return run_sample_pass(
-        context, lookups, options, stats, variant.sample,
+        context, lookups, options, stats, shader.words ? shader : variant.sample,
         [&](const std::vector<PassBuffer>& buffers, Cleanup& cleanup) {
             return create_resource_pass(context, resources, variant, options, resource, VK_SHADER_STAGE_COMPUTE_BIT,
                                         buffers, cleanup);

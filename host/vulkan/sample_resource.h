@@ -5,6 +5,7 @@
 #include "core/lookup.h"
 #include "core/lookup_stats.h"
 #include "core/resource.h"
+#include "vulkan/pipeline.h"
 #include "vulkan/resource_images.h"
 #include <glm/vec4.hpp>
 #include <vector>
@@ -23,8 +24,11 @@ void check_source_device(const VulkanContext& context, Resource kind, int width,
 // Whether the filter makes hardware (sampler) lookups: hw-* modes, or --taps hardware for aniso and ewa.
 bool uses_hardware_lookups(const SamplerOptions& options);
 
+// shader: the lookup shader to run instead of the kind's built-in variant (`sample --spirv`, checked by
+// spirv_module.h against the kind's bindings); none (null words): the built-in one.
 std::vector<glm::vec4> gpu_sample_resource(const VulkanContext& context, const GpuResources& resources,
                                            const std::vector<Lookup>& lookups, const SamplerOptions& options,
-                                           const ResourceOptions& resource, std::vector<LookupStats>* stats = nullptr);
+                                           const ResourceOptions& resource, std::vector<LookupStats>* stats = nullptr,
+                                           ShaderCode shader = {nullptr, 0});
 
 } // namespace tf

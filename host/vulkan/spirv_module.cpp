@@ -1,6 +1,7 @@
 #include "vulkan/spirv_module.h"
 #include "harness/config.h"
 #include "texture/error.h"
+#include "vulkan/harness_variant.h"
 #include <cstring>
 #include <map>
 #include <spirv-tools/libspirv.hpp>
@@ -21,27 +22,22 @@ enum : uint32_t {
     ExecutionModelGLCompute = 5,
 };
 
-// What the combined sample pass binds in set 0 (vulkan/pass.cpp, sample.cpp): the texture and the SAT's two
-// tables as combined image samplers, the lookups, results and stats as storage buffers.
-enum class Descriptor { combined, sampled_image, storage_image, sampler, storage_buffer, uniform_buffer, other };
-const std::map<uint32_t, Descriptor>& sample_bindings()
+// A descriptor as the module declares it: its type, and for an image whether it is a 2D array.
+struct Declared {
+    VkDescriptorType type = VK_DESCRIPTOR_TYPE_MAX_ENUM; // MAX_ENUM: a resource of no kind the pass binds
+    bool layered = false;
+};
+std::string to_string(VkDescriptorType type, bool layered)
 {
-    static const std::map<uint32_t, Descriptor> bindings = {
-        {HARNESS_BINDING_TEXTURE, Descriptor::combined},       {HARNESS_BINDING_SAT_LOW, Descriptor::combined},
-        {HARNESS_BINDING_SAT_HIGH, Descriptor::combined},      {HARNESS_BINDING_LOOKUPS, Descriptor::storage_buffer},
-        {HARNESS_BINDING_RESULTS, Descriptor::storage_buffer}, {HARNESS_BINDING_STATS, Descriptor::storage_buffer}};
-    return bindings;
-}
-const char* to_string(Descriptor d)
-{
-    switch (d) {
-    case Descriptor::combined: return "a combined image sampler";
-    case Descriptor::sampled_image: return "a sampled image";
-    case Descriptor::storage_image: return "a storage image";
-    case Descriptor::sampler: return "a sampler";
-    case Descriptor::storage_buffer: return "a storage buffer";
-    case Descriptor::uniform_buffer: return "a uniform buffer";
-    case Descriptor::other: break;
+    const std::string image = layered ? " (2D array)" : " (2D)";
+    switch (type) {
+    case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: return "a combined image sampler" + image;
+    case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE: return "a sampled image" + image;
+    case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: return "a storage image";
+    case VK_DESCRIPTOR_TYPE_SAMPLER: return "a sampler";
+    case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER: return "a storage buffer";
+    case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER: return "a uniform buffer";
+    default: break;
     }
     return "a resource of another kind";
 }
@@ -64,8 +60,8 @@ std::vector<Instruction> instructions(const std::vector<uint32_t>& words)
     return all;
 }
 
-// The interface the sample pass gives the shader (see the header); throws naming the first mismatch.
-void check_interface(const std::vector<uint32_t>& words, const std::string& name)
+// The interface the sample pass of `resource` gives the shader (see the header); throws naming the first mismatch.
+void check_interface(const std::vector<uint32_t>& words, const std::string& name, Resource resource)
 {
     const std::vector<Instruction> module = instructions(words);
     std::map<uint32_t, uint32_t> binding, set, type_of_pointer, storage_of_pointer;
@@ -95,24 +91,35 @@ void check_interface(const std::vector<uint32_t>& words, const std::string& name
     }
     if (!entry)
         throw Error(name + ": has no GLCompute entry point named 'main' (the sample pass's compute shader)");
-    auto descriptor = [&](uint32_t storage, uint32_t type) {
+    auto declared = [&](uint32_t storage, uint32_t type) -> Declared {
         auto t = types.find(type);
         while (t != types.end() && (t->second.opcode == OpTypeArray || t->second.opcode == OpTypeRuntimeArray))
             t = types.find(t->second.operands[1]);
         const uint32_t op = t == types.end() ? 0 : t->second.opcode;
+        // OpTypeImage's operands: result, sampled type, Dim, Depth, Arrayed (4), MS, Sampled (6: 1 sampled, 2 storage)
+        auto layered = [&](uint32_t image) {
+            auto i = types.find(image);
+            return i != types.end() && i->second.opcode == OpTypeImage && i->second.count > 4 && i->second.operands[4] == 1;
+        };
         if (storage == StorageUniformConstant && op == OpTypeSampledImage)
-            return Descriptor::combined;
-        if (storage == StorageUniformConstant && op == OpTypeImage) // operand 7: Sampled (1 sampled, 2 storage)
-            return t->second.count > 6 && t->second.operands[6] == 2 ? Descriptor::storage_image
-                                                                     : Descriptor::sampled_image;
+            return {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, layered(t->second.operands[1])};
+        if (storage == StorageUniformConstant && op == OpTypeImage)
+            return {t->second.count > 6 && t->second.operands[6] == 2 ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
+                                                                       : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
+                    layered(t->first)};
         if (storage == StorageUniformConstant && op == OpTypeSampler)
-            return Descriptor::sampler;
+            return {VK_DESCRIPTOR_TYPE_SAMPLER};
         if (op == OpTypeStruct && storage == StorageStorageBuffer)
-            return Descriptor::storage_buffer;
+            return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
         if (op == OpTypeStruct && storage == StorageUniform)
-            return buffer_block[t->first] ? Descriptor::storage_buffer : Descriptor::uniform_buffer;
-        return Descriptor::other;
+            return {buffer_block[t->first] ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
+        return {};
     };
+    const std::map<uint32_t, PassBinding> expected_bindings = sample_pass_bindings(resource);
+    const std::string pass = "the sample pass of --resource " + to_string(resource);
+    const std::string build = " (--resource " + to_string(resource) +
+                              " runs shaders/harness/sample.comp.glsl compiled with -DHARNESS_RESOURCE=" +
+                              std::to_string(int(resource)) + ")";
     for (const Instruction& in : module) {
         if (in.opcode != OpVariable || in.count < 3)
             continue;
@@ -125,21 +132,22 @@ void check_interface(const std::vector<uint32_t>& words, const std::string& name
             continue;
         const std::string where = "binding " + std::to_string(binding[id]);
         if (set[id] != 0)
-            throw Error(name + ": a resource in descriptor set " + std::to_string(set[id]) +
-                        "; the sample pass binds set 0 only");
-        const auto expected = sample_bindings().find(binding[id]);
-        if (expected == sample_bindings().end())
-            throw Error(name + ": a resource at " + where + ", which the sample pass does not bind");
-        const Descriptor found = descriptor(storage, pointee);
-        if (found != expected->second)
-            throw Error(name + ": " + where + " is " + to_string(found) + "; the sample pass binds " +
-                        to_string(expected->second) + " there");
+            throw Error(name + ": a resource in descriptor set " + std::to_string(set[id]) + "; " + pass +
+                        " binds set 0 only");
+        const auto expected = expected_bindings.find(binding[id]);
+        if (expected == expected_bindings.end())
+            throw Error(name + ": a resource at " + where + ", which " + pass + " does not bind" + build);
+        const Declared found = declared(storage, pointee);
+        const PassBinding& want = expected->second;
+        if (found.type != want.type || found.layered != want.layered)
+            throw Error(name + ": " + where + " is " + to_string(found.type, found.layered) + "; " + pass +
+                        " binds " + to_string(want.type, want.layered) + " there" + build);
     }
 }
 
 } // namespace
 
-std::vector<uint32_t> check_sample_spirv(const std::string& bytes, const std::string& name)
+std::vector<uint32_t> check_sample_spirv(const std::string& bytes, const std::string& name, Resource resource)
 {
     if (bytes.empty())
         throw Error(name + ": empty (expected a SPIR-V module)");
@@ -161,7 +169,7 @@ std::vector<uint32_t> check_sample_spirv(const std::string& bytes, const std::st
     if (!tools.Validate(words))
         throw Error(name + ": not valid SPIR-V for Vulkan 1.2 (" + (first.empty() ? "the validator says no more" : first) +
                     ")");
-    check_interface(words, name);
+    check_interface(words, name, resource);
     return words;
 }
 
