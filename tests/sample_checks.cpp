@@ -22,7 +22,10 @@
 //   plus one more step as tests/test_hw_vs_manual.cpp allows: 3 2^-s adjacent), a tap's float texel
 //   position (2 2^-14 adjacent, as test_ewa), and for aniso's trilinear probes at an explicit LOD the level
 //   blend quantised to mipmapPrecisionBits (2^-m times the largest difference between two levels' values,
-//   <= 1 for [0, 1] data). adjacent = the largest difference of neighbouring texels on any level.
+//   <= 1 for [0, 1] data). adjacent = the largest difference of neighbouring texels on any level. The cubics'
+//   hardware taps (bilinear taps at merged positions, tests/test_bicubic.cpp derives it): each tap's fraction
+//   rounds to a step s = 2^-subTexelPrecisionBits an axis, 2 s times the 4x4 block's range (<= level 0's) times
+//   each axis's sum of |tap weights| at the lookup's fraction (B-spline 1, Catmull-Rom up to 1.25).
 #include "sample_checks.h"
 
 #include "core/procedural.h"
@@ -68,6 +71,21 @@ double adjacent_difference(const std::vector<MipChain>& chains, Wrap wrap)
     return d;
 }
 
+// Largest difference between two texels of level 0 of any chain, any channel.
+double level0_range(const std::vector<MipChain>& chains)
+{
+    double range = 0;
+    for (const MipChain& chain : chains) {
+        glm::dvec4 lo(1e300), hi(-1e300);
+        const Image& img = chain.levels.at(0);
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x)
+                lo = glm::min(lo, glm::dvec4(img.at(x, y))), hi = glm::max(hi, glm::dvec4(img.at(x, y)));
+        range = std::max(range, max_channel_diff(hi, lo));
+    }
+    return range;
+}
+
 struct Outcome {
     std::vector<glm::dvec4> reference;
     std::vector<double> bound;
@@ -96,6 +114,16 @@ Outcome reference_and_bounds(const Case& c, const std::vector<MipChain>& chains,
     }
     const bool float_taps = ewa || c.options.filter == Filter::aniso;
     const bool cubic = c.options.filter == Filter::bspline || c.options.filter == Filter::catmull_rom;
+    const Reconstruction kernel =
+        c.options.filter == Filter::bspline ? Reconstruction::bspline : Reconstruction::catmull_rom;
+    auto tap_weight_sum = [&](double x) { // one axis's sum of |tap weights| at texel coordinate x
+        const double t = x - std::floor(x);
+        double sum = 0;
+        for (int i = -1; i <= 2; ++i)
+            sum += std::abs(cubic_kernel(t - i, kernel));
+        return sum;
+    };
+    const double cubic_range = cubic && hardware_taps ? level0_range(chains) : 0.0;
     const double adjacent = float_taps ? adjacent_difference(chains, c.options.wrap) : 0.0;
     for (size_t i = 0; i < ls.size(); ++i) {
         const double n = gpu.stats[i].texel_fetches + gpu.stats[i].hardware_lookups;
@@ -103,7 +131,11 @@ Outcome reference_and_bounds(const Case& c, const std::vector<MipChain>& chains,
         double position = float_taps ? 4 * kUlp * (uv + 1) * kSize * adjacent : 0.0;
         if (cubic) // texel coordinate x = u w - 1/2: 2 roundings, times sum |k'| <= 4, texels in [0, 1]
             position = 8 * kUlp * (uv * kSize + 1);
-        o.bound.push_back(spread[i] + (16 + 2 * n + weights) * kUlp + position + sampler);
+        double taps = sampler;
+        if (cubic && hardware_taps)
+            taps = 2 * sub_texel_step() * cubic_range * tap_weight_sum(double(ls[i].u) * kSize - 0.5) *
+                   tap_weight_sum(double(ls[i].v) * kSize - 0.5);
+        o.bound.push_back(spread[i] + (16 + 2 * n + weights) * kUlp + position + taps);
     }
     return o;
 }
@@ -111,7 +143,7 @@ Outcome reference_and_bounds(const Case& c, const std::vector<MipChain>& chains,
 std::string filter_flags(const SamplerOptions& o)
 {
     std::string f = "--filter " + to_string(o.filter);
-    if (o.filter == Filter::aniso || o.filter == Filter::ewa)
+    if (takes_taps(o.filter))
         f += " --taps " + to_string(o.taps);
     return f;
 }

@@ -6,13 +6,19 @@ usage: slang_check.py --list
 Groups:
   sample_spirv   shaders/harness/sample.comp.glsl (the combined kind, filter_select.glsl) compiled by
                  `slangc -allow-glsl -target spirv -O0` to OUT_DIR/sample.spv, then spirv-val --target-env
-                 vulkan1.2. The fixture of slang.interface and slang.sample.* (tests/test_slang.cpp runs
+                 vulkan1.2. A fixture of slang.interface and slang.sample.* (tests/test_slang.cpp runs
                  `texfilter sample --spirv OUT_DIR/sample.spv`).
-  interface      that module and glslang's of the same source agree with shaders/harness/config.h: each
-                 push-constant member at its HARNESS_PUSH_* offset (the member's name in upper case with
-                 underscores), each specialization constant NAME_ID at HARNESS_SPEC_NAME, the workgroup size
-                 HARNESS_SAMPLE_LOCAL_SIZE; every resource slangc keeps at the (set, binding) where glslang puts
-                 it, as the same kind (storage class and type). Without slangc here, glslang's module alone.
+  sample_spirv_separate, sample_spirv_separate_array
+                 the same with -DHARNESS_RESOURCE=HARNESS_RESOURCE_SEPARATE (texture2D + sampler: Slang's
+                 Texture2D + SamplerState, read through the includes' tfi_slang_* wrappers) and _SEPARATE_ARRAY,
+                 to OUT_DIR/sample_separate.spv, sample_separate_array.spv: the fixtures of
+                 slang.sample_separate.* and slang.sample_separate_array.* (`sample --resource K --spirv`).
+  interface      each of those modules and glslang's of the same source and kind agree with
+                 shaders/harness/config.h: each push-constant member at its HARNESS_PUSH_* offset (the member's
+                 name in upper case with underscores), each specialization constant NAME_ID at
+                 HARNESS_SPEC_NAME, the workgroup size HARNESS_SAMPLE_LOCAL_SIZE; every resource slangc keeps at
+                 the (set, binding) where glslang puts it, as the same kind (storage class and type; an image's
+                 Dim, Arrayed, MS and Sampled operands). Without slangc here, glslang's modules alone.
   target.TARGET  tests/slang/uses_texfilter.slang (a Slang shader that #includes texfilter/texfilter.glsl and
                  calls every 2D family on a Sampler2D, a Texture2D and a TF_SOURCE) compiles to TARGET,
                  and the output is validated where a tool for it is here: SPIR-V by spirv-val, GLSL by
@@ -45,7 +51,14 @@ TARGETS = {
     "metal": ("metal", SOURCE_ONLY, "metal", None),  # no Metal compiler off macOS
     "wgsl": ("wgsl", SOURCE_ONLY, "wgsl", "naga"),  # naga (wgpu's validator) where installed
 }
-GROUPS = ["sample_spirv", "interface"] + [f"target.{t}" for t in TARGETS]
+# The harness variants slangc compiles: group suffix -> (HARNESS_RESOURCE_* name in config.h, module file,
+# the bindings besides the lookups, results and stats buffers every module must keep).
+VARIANTS = {
+    "": ("HARNESS_RESOURCE_COMBINED", "sample.spv", ["TEXTURE"]),
+    "_separate": ("HARNESS_RESOURCE_SEPARATE", "sample_separate.spv", ["TEXTURE", "SAMPLER"]),
+    "_separate_array": ("HARNESS_RESOURCE_SEPARATE_ARRAY", "sample_separate_array.spv", ["TEXTURE", "SAMPLER"]),
+}
+GROUPS = [f"sample_spirv{v}" for v in VARIANTS] + ["interface"] + [f"target.{t}" for t in TARGETS]
 OP_SOURCE = 3
 SLANG_LANGUAGE = 11
 
@@ -106,23 +119,25 @@ def validate(spirv_val, spv):
     run([spirv_val, "--target-env", "vulkan1.2", spv], f"spirv-val of {spv}")
 
 
-def sample_spirv(source_dir, out_dir, spirv_val):
+def sample_spirv(source_dir, out_dir, spirv_val, variant):
+    kind, module, _ = VARIANTS[variant]
+    resource = config_defines(source_dir)[kind]
     shaders = os.path.join(source_dir, "shaders")
-    raw = os.path.join(out_dir, "sample.slangc.spv")
-    out = os.path.join(out_dir, "sample.spv")
+    out = os.path.join(out_dir, module)
+    raw = out + ".slangc"
     for stale in (raw, out, skip_marker(out_dir)):  # a failed run leaves no module for the checks to run
         if os.path.exists(stale):
             os.remove(stale)
     version = run(slangc(source_dir) + ["-v"], "slangc -v", out_dir).strip()
     run(slangc(source_dir) + ["-allow-glsl", "-target", "spirv", "-O0", "-stage", "compute", "-entry", "main",
-                              "-I", shaders, "-I", os.path.join(shaders, "harness"),
+                              f"-DHARNESS_RESOURCE={resource}", "-I", shaders, "-I", os.path.join(shaders, "harness"),
                               os.path.join(shaders, "harness", "sample.comp.glsl"), "-o", raw],
-        "slangc of sample.comp.glsl")
+        f"slangc -DHARNESS_RESOURCE={resource} ({kind}) of sample.comp.glsl")
     rewritten = source_language_unknown(raw, raw + ".tmp")
     validate(spirv_val, raw + ".tmp")
     os.replace(raw + ".tmp", out)
-    print(f"slangc {version}: {out} ({os.path.getsize(out)} bytes), {rewritten} OpSource operand(s) 11 -> 0, "
-          "spirv-val vulkan1.2 passed")
+    print(f"slangc {version}, {kind}: {out} ({os.path.getsize(out)} bytes), {rewritten} OpSource operand(s) "
+          "11 -> 0, spirv-val vulkan1.2 passed")
 
 
 def config_defines(source_dir):
@@ -161,7 +176,17 @@ def module_facts(spirv_dis, spv):
     local = re.search(r"OpExecutionMode %\d+ LocalSize (\d+) (\d+) (\d+)", text)
     sets = {m.group(1): int(m.group(2)) for m in re.finditer(r"OpDecorate %(\d+) DescriptorSet (\d+)", text)}
     types = dict(re.findall(r"%(\d+) = (OpType\w+)", text))
-    variables = {m.group(1): (m.group(3), types.get(pointers.get(m.group(2), ("", ""))[1], "?"))
+    # An image's Dim, Arrayed, MS and Sampled operands (not Depth: slangc says 2, "unknown", glslang 0, "not a
+    # depth image"; the same to Vulkan for a non-comparison image), a sampled image's image's.
+    images = {m.group(1): "Dim {} Arrayed {} MS {} Sampled {}".format(*(m.group(2).split()[i] for i in (1, 3, 4, 5)))
+              for m in re.finditer(r"%(\d+) = OpTypeImage ([^\n]*)", text)}
+    images.update({m.group(1): images.get(m.group(2), "?")
+                   for m in re.finditer(r"%(\d+) = OpTypeSampledImage %(\d+)", text)})
+
+    def kind(type_id):
+        return " ".join(filter(None, [types.get(type_id, "?"), images.get(type_id)]))
+
+    variables = {m.group(1): (m.group(3), kind(pointers.get(m.group(2), ("", ""))[1]))
                  for m in re.finditer(r"%(\d+) = OpVariable %(\d+) (\w+)", text)}
     # (set, binding): (storage class, pointee type) -- names differ (glslang leaves a nameless block's empty)
     resources = {(sets.get(i), int(b)): variables.get(i) for i, b in re.findall(r"OpDecorate %(\d+) Binding (\d+)", text)}
@@ -169,51 +194,61 @@ def module_facts(spirv_dis, spv):
 
 
 def interface(source_dir, out_dir, glslang, spirv_dis):
-    slang_spv = os.path.join(out_dir, "sample.spv")
-    no_slangc = os.path.exists(skip_marker(out_dir))  # then glslang's module is checked alone
+    no_slangc = os.path.exists(skip_marker(out_dir))  # then glslang's modules are checked alone
+    config = config_defines(source_dir)
+    problems = []
+    for variant, (kind, module, kept) in VARIANTS.items():
+        problems += interface_of(source_dir, out_dir, glslang, spirv_dis, config, kind, module, kept, no_slangc)
+    if no_slangc:
+        print("slangc: not checked, " + open(skip_marker(out_dir), encoding="utf-8").read().strip())
+    if problems:
+        fail("\n  ".join(["the sample shader's interface:"] + problems))
+
+
+def interface_of(source_dir, out_dir, glslang, spirv_dis, config, kind, module, kept, no_slangc):
+    """The problems of one variant's modules (see the top)."""
+    slang_spv = os.path.join(out_dir, module)
     if not no_slangc and not os.path.exists(slang_spv):
-        fail(f"{slang_spv} missing: slang.sample_spirv (the fixture) failed or did not run")
-    glslang_spv = os.path.join(out_dir, "sample.glslang.spv")
+        fail(f"{slang_spv} missing: its fixture slang.sample_spirv* failed or did not run")
+    glslang_spv = os.path.join(out_dir, module.replace(".spv", ".glslang.spv"))
     shaders = os.path.join(source_dir, "shaders")
     run([glslang, "-V", "--target-env", "vulkan1.2", f"-I{shaders}", f"-I{os.path.join(shaders, 'harness')}",
-         "-S", "comp", os.path.join(shaders, "harness", "sample.comp.glsl"), "-o", glslang_spv],
-        "glslangValidator of sample.comp.glsl")
-    config = config_defines(source_dir)
+         f"-DHARNESS_RESOURCE={config[kind]}", "-S", "comp", os.path.join(shaders, "harness", "sample.comp.glsl"),
+         "-o", glslang_spv],
+        f"glslangValidator -DHARNESS_RESOURCE={config[kind]} ({kind}) of sample.comp.glsl")
     problems = []
     facts = {}
     modules = [("glslang", glslang_spv)] + ([] if no_slangc else [("slangc", slang_spv)])
     for compiler, spv in modules:
         push, spec, local, resources = module_facts(spirv_dis, spv)
         facts[compiler] = resources
+        who = f"{kind} {compiler}"
         if not push:
-            problems.append(f"{compiler}: no push-constant block")
+            problems.append(f"{who}: no push-constant block")
         for member, offset in push.items():
             expected = config.get("HARNESS_PUSH_" + upper_snake(member))
             if expected != offset:
-                problems.append(f"{compiler}: push constant {member} at {offset}, config.h says {expected}")
+                problems.append(f"{who}: push constant {member} at {offset}, config.h says {expected}")
         for name, spec_id in spec.items():
             expected = config.get("HARNESS_SPEC_" + re.sub(r"_ID$", "", name))
             if expected != spec_id:
-                problems.append(f"{compiler}: specialization constant {name} has id {spec_id}, config.h says {expected}")
+                problems.append(f"{who}: specialization constant {name} has id {spec_id}, config.h says {expected}")
         if "FILTER_ID" not in spec:
-            problems.append(f"{compiler}: no specialization constant FILTER_ID")
+            problems.append(f"{who}: no specialization constant FILTER_ID")
         if local != (config["HARNESS_SAMPLE_LOCAL_SIZE"], 1, 1):
-            problems.append(f"{compiler}: local size {local}")
-        print(f"{compiler}: {len(push)} push-constant members, spec ids {spec}, local size {local}, "
+            problems.append(f"{who}: local size {local}")
+        print(f"{who}: {len(push)} push-constant members, spec ids {spec}, local size {local}, "
               f"resources {dict(sorted(resources.items()))}")
-    # slangc drops resources the shader never reads (the SAT's tables in this kind); what it keeps must sit
-    # where glslang puts it, as the same kind of resource, and the lookups, results, stats and texture be there.
-    if no_slangc:
-        print("slangc: not checked, " + open(skip_marker(out_dir), encoding="utf-8").read().strip())
-    else:
-        for where, kind in facts["slangc"].items():
-            if facts["glslang"].get(where) != kind:
-                problems.append(f"(set, binding) {where}: slangc {kind}, glslang {facts['glslang'].get(where)}")
-        for binding in ("LOOKUPS", "RESULTS", "STATS", "TEXTURE"):
+    # slangc may drop a resource the shader never reads; what it keeps must
+    # sit where glslang puts it, as the same kind of resource, and the buffers and the kind's texture be there.
+    if not no_slangc:
+        for where, what in facts["slangc"].items():
+            if facts["glslang"].get(where) != what:
+                problems.append(f"{kind} (set, binding) {where}: slangc {what}, glslang {facts['glslang'].get(where)}")
+        for binding in ["LOOKUPS", "RESULTS", "STATS"] + kept:
             if (0, config["HARNESS_BINDING_" + binding]) not in facts["slangc"]:
-                problems.append(f"slangc: nothing at set 0, HARNESS_BINDING_{binding}")
-    if problems:
-        fail("\n  ".join(["the sample shader's interface:"] + problems))
+                problems.append(f"{kind} slangc: nothing at set 0, HARNESS_BINDING_{binding}")
+    return problems
 
 
 def target(source_dir, out_dir, glslang, spirv_val, name):
@@ -255,8 +290,8 @@ def main(argv):
         sys.exit(__doc__)
     source_dir, out_dir, glslang, spirv_val, spirv_dis, group = argv[1:]
     os.makedirs(out_dir, exist_ok=True)
-    if group == "sample_spirv":
-        sample_spirv(source_dir, out_dir, spirv_val)
+    if group.startswith("sample_spirv"):
+        sample_spirv(source_dir, out_dir, spirv_val, group[len("sample_spirv"):])
     elif group == "interface":
         interface(source_dir, out_dir, glslang, spirv_dis)
     else:
