@@ -89,46 +89,23 @@
 #define sampler SamplerState
 #define utexture2D Texture2D<uint4>
 #define utexture2DArray Texture2DArray<uint4>
-vec4 tfi_slang_fetch(Texture2D t, ivec2 p, int level) { return t.Load(ivec3(p, level)); }
-vec4 tfi_slang_fetch(Texture2DArray t, ivec3 p, int level) { return t.Load(ivec4(p, level)); }
-ivec3 tfi_slang_size(Texture2D t, int level)
+// Generic over the texel type: float4 images and the SAT's uint4 tables.
+T tfi_slang_fetch<T : ITexelElement>(Texture2D<T> t, ivec2 p, int level) { return t.Load(ivec3(p, level)); }
+T tfi_slang_fetch<T : ITexelElement>(Texture2DArray<T> t, ivec3 p, int level) { return t.Load(ivec4(p, level)); }
+ivec4 tfi_slang_dimensions<T : ITexelElement>(Texture2D<T> t, int level) // (w, h, layers, levels)
 {
     uint w, h, levels;
     t.GetDimensions(uint(level), w, h, levels);
-    return ivec3(int(w), int(h), 1);
+    return ivec4(int(w), int(h), 1, int(levels));
 }
-ivec3 tfi_slang_size(Texture2DArray t, int level)
+ivec4 tfi_slang_dimensions<T : ITexelElement>(Texture2DArray<T> t, int level)
 {
     uint w, h, layers, levels;
     t.GetDimensions(uint(level), w, h, layers, levels);
-    return ivec3(int(w), int(h), int(layers));
+    return ivec4(int(w), int(h), int(layers), int(levels));
 }
-int tfi_slang_levels(Texture2D t)
-{
-    uint w, h, levels;
-    t.GetDimensions(0u, w, h, levels);
-    return int(levels);
-}
-int tfi_slang_levels(Texture2DArray t)
-{
-    uint w, h, layers, levels;
-    t.GetDimensions(0u, w, h, layers, levels);
-    return int(levels);
-}
-uvec4 tfi_slang_fetch(Texture2D<uint4> t, ivec2 p, int level) { return t.Load(ivec3(p, level)); }
-uvec4 tfi_slang_fetch(Texture2DArray<uint4> t, ivec3 p, int level) { return t.Load(ivec4(p, level)); }
-ivec3 tfi_slang_size(Texture2D<uint4> t, int level)
-{
-    uint w, h, levels;
-    t.GetDimensions(uint(level), w, h, levels);
-    return ivec3(int(w), int(h), 1);
-}
-ivec3 tfi_slang_size(Texture2DArray<uint4> t, int level)
-{
-    uint w, h, layers, levels;
-    t.GetDimensions(uint(level), w, h, layers, levels);
-    return ivec3(int(w), int(h), int(layers));
-}
+#define tfi_slang_size(t, level) tfi_slang_dimensions(t, level).xyz
+#define tfi_slang_levels(t) tfi_slang_dimensions(t, 0).w
 vec4 tfi_slang_lookup(Texture2D t, SamplerState s, vec2 uv, float lod) { return t.SampleLevel(s, uv, lod); }
 vec4 tfi_slang_lookup(Texture2DArray t, SamplerState s, vec3 uvLayer, float lod) { return t.SampleLevel(s, uvLayer, lod); }
 #endif
