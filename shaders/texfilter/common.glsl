@@ -23,7 +23,9 @@
 //          TF_COUNT_HW_LOOKUPS(n)  invoked with each number of hardware filtered lookups (default: nothing);
 //          TF_NONUNIFORM           bindless: `#define TF_NONUNIFORM nonuniformEXT` (and enable
 //                                  GL_EXT_nonuniform_qualifier) when the texture is indexed divergently,
-//                                  e.g. tf_trilinear(texs[nonuniformEXT(i)], ...); default: nothing.
+//                                  e.g. tf_trilinear(texs[nonuniformEXT(i)], ...); default: nothing. Under
+//                                  Slang leave it undefined (its nonuniformEXT takes the index, and slangc
+//                                  then marks the loads itself).
 //          TF_MAGNIFY              how trilinear, aniso and ewa reconstruct level 0 (bicubic.glsl):
 //                                  TF_RECONSTRUCT_BILINEAR (default), _BSPLINE or _CATMULL_ROM; an int
 //                                  expression (e.g. a specialization constant) chooses at run time.

@@ -45,7 +45,7 @@
 // Cost:    none by itself. Example: see common.glsl.
 
 #if !defined(TFI_KIND) || !defined(TF_RESOURCES)
-#error "texfilter/access.glsl is internal: include a family (e.g. texfilter/trilinear.glsl)"
+#error "texfilter/detail/access.glsl is internal: include a family (e.g. texfilter/trilinear.glsl)"
 #endif
 
 // The previous kind's macros (none before the first kind; #undef of an undefined name is legal, but Slang warns).
@@ -97,7 +97,7 @@
 #endif
 
 #if TFI_KIND < 1 || TFI_KIND > 20
-#error "texfilter/access.glsl: unknown TFI_KIND"
+#error "texfilter/detail/access.glsl: unknown TFI_KIND"
 #endif
 
 // The texture parameters, and the kinds with a sampler beside the texture.
