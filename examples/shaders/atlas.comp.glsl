@@ -2,7 +2,7 @@
 // TF_SOURCE makes every manual filter read a tile's texels through three functions you write: the tile's
 // size and level count, and a fetch of one texel, which the filter hands you already wrapped into the tile
 // by the sampler's wrap mode. So repeat, clamp and mirror act on the tile, and no footprint reaches a
-// neighbour (the hardware sampler at the tile's uv would blend them: docs/images/atlas-bleeding.png).
+// neighbour (the hardware sampler at the tile's uv would blend them: docs/images/api/atlas-bleeding.png).
 // The atlas holds each tile's own levels: level l of a tile is at origin >> l in the atlas's level l.
 // Every tile is one constant colour (resources.cpp), so each lookup must return its tile's colour.
 #version 450
