@@ -64,11 +64,21 @@ int tfi_split_lod(float lod, out float f)
     f = lod - lo;
     return int(lo);
 }
+// TFI_BLEND_LEVELS(result, LEVEL, lo, w), a statement: the value TFI_BLEND_LEVELS_ONCE gives (the same operations,
+// so the same bits) without its loop: the level the weight picks (w == 1: lo + 1, else lo), then, under an `if`
+// only where 0 < w < 1, the coarser one mixed in. A SIMD batch with no lane between levels skips the `if`, so
+// a lookup on a level reads one level. For levels of a few fetches (trilinear, brilinear) this is the cheaper
+// form: the loop cost more than the fetches it saves (docs/BENCHMARKS.md, "Level blends").
+#define TFI_BLEND_LEVELS(result, LEVEL, lo, w)                                                         \
+    {                                                                                                 \
+        result = LEVEL((w) == 1.0 ? (lo) + 1 : (lo));                                                 \
+        if ((w) > 0.0 && (w) < 1.0)                                                                   \
+            result = mix(result, LEVEL((lo) + 1), (w));                                               \
+    }
 // TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w), a statement: result = mix(LEVEL(lo), LEVEL(lo + 1), w) for a
-// function-like macro LEVEL(l), the filter's value on level l; a level that weighs 0 is not evaluated. A loop,
-// not a branch: SIMD implementations run every side of an `if` (lavapipe: four levels' fetches for a ternary)
-// but leave a loop once no lane needs another turn, so a batch on one level pays one level's fetches, any
-// other two. The turn test is at the loop's top: with a do-while, lavapipe (Mesa 22.3.6) handed lanes that
+// function-like macro LEVEL(l), the filter's value on level l; a level that weighs 0 is not evaluated. The form
+// aniso's probes and ewa use (for trilinear's cheap levels TFI_BLEND_LEVELS above is faster): a loop, left once
+// no lane needs another turn, so a batch on one level pays one level's cost, any other two. The turn test is at the loop's top: with a do-while, lavapipe (Mesa 22.3.6) handed lanes that
 // left early a value from their batch's later turns (a workaround; docs/API.md, "Optimisation").
 #define TFI_BLEND_LEVELS_ONCE(result, LEVEL, lo, w)                                     \
     {                                                                                    \

@@ -12,7 +12,7 @@ vec4 tf_brilinear(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, fl
     float w = tf_brilinear_weight(f, band); // 0 or 1 outside the band: one level, 4 fetches
 #define TFI_BRILINEAR_LEVEL(level) tf_bilinear_level(TFI_A, uv TFI_XA, level, s.wrap)
     vec4 color;
-    TFI_BLEND_LEVELS_ONCE(color, TFI_BRILINEAR_LEVEL, lo, w); // outside the band: one level (lod.glsl)
+    TFI_BLEND_LEVELS(color, TFI_BRILINEAR_LEVEL, lo, w); // outside the band: one level (lod.glsl)
 #undef TFI_BRILINEAR_LEVEL
     return color;
 }

@@ -11,7 +11,7 @@ vec4 tf_trilinear(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
     int lo = tfi_split_lod(tf_lod(TFI_A, dUVdx, dUVdy, s), f);
 #define TFI_TRILINEAR_LEVEL(level) tfi_mip_level(TFI_A, uv TFI_XA, level, s.wrap)
     vec4 color;
-    TFI_BLEND_LEVELS_ONCE(color, TFI_TRILINEAR_LEVEL, lo, f); // each level's fetches issued once (lod.glsl)
+    TFI_BLEND_LEVELS(color, TFI_TRILINEAR_LEVEL, lo, f); // on a level, one level's fetches (lod.glsl)
 #undef TFI_TRILINEAR_LEVEL
     return color;
 }
