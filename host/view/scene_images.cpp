@@ -20,7 +20,8 @@ void start_over(HalfImage& half)
 
 GpuRenderer& renderer_for(SceneImages& images, HalfImage& half, const SceneParams& scene, bool* created = nullptr)
 {
-    auto key = std::make_pair(int(scene.kind_size.y), int(scene.kind_size.z));
+    // By kind and size: a renderer's pipeline casts one scene kind (HARNESS_SPEC_SCENE).
+    auto key = std::make_tuple(int(scene.kind_size.x), int(scene.kind_size.y), int(scene.kind_size.z));
     auto found = half.renderers.find(key);
     if (created)
         *created = found == half.renderers.end();

@@ -17,13 +17,14 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <tuple>
 
 namespace tf {
 
 struct HalfImage {
     SamplerOptions options;
     RenderOptions render;
-    std::map<std::pair<int, int>, std::unique_ptr<GpuRenderer>> renderers; // by size: full and previews
+    std::map<std::tuple<int, int, int>, std::unique_ptr<GpuRenderer>> renderers; // by kind and size: full, previews
     Image image;             // what the half shows now
     bool complete = false;   // full size, every ground-truth sample in
     int samples_done = 0;    // ground truth: samples accumulated into `sum`

@@ -101,6 +101,7 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
     r.kind = RenderKind::fragment;
     r.width = uint32_t(scene.kind_size.y);
     r.height = uint32_t(scene.kind_size.z);
+    r.scene_kind = scene.kind_size.x; // render_frame draws this kind only (the shader's own cast: no constant)
     r.push = make_push_constants(options, 0, glm::vec4(0.0f), glm::vec4(0.0f));
     r.uniforms = create_host_buffer(context, sizeof(SceneParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     cleanup.add([&context, &r] { destroy_buffer(context, r.uniforms); });
@@ -133,7 +134,7 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
         {HARNESS_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, r.uniforms.buffer, sizeof(SceneParams)}};
     r.pass = create_pass_with_images(context, images, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                                      VK_SHADER_STAGE_FRAGMENT_BIT, buffers, cleanup);
-    const FilterVariant variant = render_variant(options, render); // views are refused above
+    const FilterVariant variant = render_variant(options, render, -1); // views are refused above; no 2D cast
     if (cache)
         for (const EnvironmentPipelineCache::Entry& e : cache->entries)
             if (e.map == environment.map && e.filter == variant && e.width == r.width && e.height == r.height) {

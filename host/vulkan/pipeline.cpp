@@ -10,13 +10,13 @@ namespace {
 // The variant's spec_constants as a VkSpecializationInfo (shaders that declare only some ignore the others);
 // info points into the struct, so keep it alive until the pipeline is made.
 struct FilterSpecialization {
-    std::array<int32_t, 6> values;
-    std::array<VkSpecializationMapEntry, 6> entries;
+    std::array<int32_t, 7> values;
+    std::array<VkSpecializationMapEntry, 7> entries;
     VkSpecializationInfo info;
 
     explicit FilterSpecialization(FilterVariant variant)
     {
-        const std::array<SpecConstant, 6> constants = spec_constants(variant);
+        const std::array<SpecConstant, 7> constants = spec_constants(variant);
         for (size_t k = 0; k < constants.size(); ++k) {
             values[k] = constants[k].value;
             entries[k] = {constants[k].id, uint32_t(k * sizeof(int32_t)), sizeof(int32_t)};

@@ -1,8 +1,8 @@
 #pragma once
 // Pipelines from embedded SPIR-V, each specialised to one filter (the harness shaders' specialization
 // constants HARNESS_SPEC_FILTER, HARNESS_SPEC_MAGNIFY and HARNESS_SPEC_STOCHASTIC) and, for render, to one
-// debug view, one gradient form and a number of lookups a pixel (HARNESS_SPEC_VIEW, HARNESS_SPEC_GRADIENTS,
-// HARNESS_SPEC_LOOKUPS), so that a pipeline holds the
+// debug view, one gradient form, a number of lookups a pixel and one scene kind (HARNESS_SPEC_VIEW,
+// HARNESS_SPEC_GRADIENTS, HARNESS_SPEC_LOOKUPS, HARNESS_SPEC_SCENE), so that a pipeline holds the
 // code of one filter only and a frame runs only what it shows.
 #include "core/filter.h"
 #include "harness/config.h"
@@ -24,6 +24,7 @@ struct FilterVariant {
     int view = HARNESS_VIEW_COLOR;           // render --view: HARNESS_VIEW_* (tf::DebugView)
     int gradients = HARNESS_GRADIENTS_FINE;  // render --derivatives: HARNESS_GRADIENTS_* (tf::Gradients)
     int lookups = 1;                         // lookups a pixel (bench --lookups-per-pixel)
+    int scene = -1;                          // render: the ray-cast scene's kind (HARNESS_SCENE_*); -1: any
     FilterVariant(Filter f) : filter(f) {} // NOLINT: implicit, most pipelines vary by filter alone
     FilterVariant(Filter f, Reconstruction m, bool s = false) : filter(f), magnify(m), stochastic(s) {}
     bool operator==(const FilterVariant&) const = default;
@@ -39,14 +40,15 @@ struct SpecConstant {
     uint32_t id;
     int32_t value;
 };
-inline std::array<SpecConstant, 6> spec_constants(FilterVariant v)
+inline std::array<SpecConstant, 7> spec_constants(FilterVariant v)
 {
     return {{{HARNESS_SPEC_FILTER, int32_t(v.filter)},
              {HARNESS_SPEC_MAGNIFY, int32_t(v.magnify)},
              {HARNESS_SPEC_STOCHASTIC, v.stochastic ? 1 : 0},
              {HARNESS_SPEC_VIEW, v.view},
              {HARNESS_SPEC_GRADIENTS, v.gradients},
-             {HARNESS_SPEC_LOOKUPS, v.lookups}}};
+             {HARNESS_SPEC_LOOKUPS, v.lookups},
+             {HARNESS_SPEC_SCENE, v.scene}}};
 }
 
 struct ShaderCode {

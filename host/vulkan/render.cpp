@@ -24,9 +24,10 @@ RenderKind render_kind(const SamplerOptions& options, const RenderOptions& rende
 
 } // namespace
 
-FilterVariant render_variant(const SamplerOptions& options, const RenderOptions& render)
+FilterVariant render_variant(const SamplerOptions& options, const RenderOptions& render, int scene_kind)
 {
     FilterVariant variant = filter_variant(options);
+    variant.scene = scene_kind;
     variant.view = int(render.view); // shader_interface.h checks the values
     variant.gradients = int(render.gradients);
     variant.lookups = render.lookups;
@@ -71,7 +72,8 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
         r.vertices = create_mesh_vertices(context, scene, cleanup);
     }
     r.pass = create_pass(context, texture, options, stages, push_stages, buffers, cleanup);
-    const FilterVariant variant = render_variant(options, render);
+    r.scene_kind = scene.kind_size.x;
+    const FilterVariant variant = render_variant(options, render, r.scene_kind);
     r.pipeline = cache ? cached_render_pipeline(context, *cache, r.kind, r.pass.pipeline_layout, variant, r.width,
                                                 r.height, texture.format)
                        : create_render_pipeline(context, r.kind, r.pass.pipeline_layout, variant, r.width, r.height,
@@ -83,6 +85,8 @@ Image render_frame(GpuRenderer& r, const SceneParams& scene)
 {
     if (uint32_t(scene.kind_size.y) != r.width || uint32_t(scene.kind_size.z) != r.height)
         throw Error("render_frame: the scene's size changed since the renderer was made");
+    if (scene.kind_size.x != r.scene_kind)
+        throw Error("render_frame: the scene's kind changed since the renderer was made (its pipeline casts one kind)");
     std::memcpy(r.uniforms.mapped, &scene, sizeof(SceneParams)); // no frame in flight: submits wait
     submit_and_wait(*r.context, [&](VkCommandBuffer cb) {
         record_frame(r, cb, VK_NULL_HANDLE, 0);

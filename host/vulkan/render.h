@@ -24,12 +24,14 @@ struct GpuRenderer {
     RenderTargets targets; // fragment and mesh
     PushConstants push{};
     VkClearColorValue background{};
+    int scene_kind = -1; // the pipeline's HARNESS_SPEC_SCENE: render_frame draws scenes of this kind only
     Cleanup cleanup; // last member, so it runs first: destroys everything above in reverse order of creation
 };
 
 // The pipeline variant of a render: the sampler options' filter_variant with the render's debug view and
-// gradient form (tf::DebugView and tf::Gradients take the HARNESS_VIEW_* and HARNESS_GRADIENTS_* values).
-FilterVariant render_variant(const SamplerOptions& options, const RenderOptions& render);
+// gradient form (tf::DebugView and tf::Gradients take the HARNESS_VIEW_* and HARNESS_GRADIENTS_* values) and
+// the ray-cast scene's kind (scene_kind, HARNESS_SCENE_*; -1 for shaders that cast no 2D scene).
+FilterVariant render_variant(const SamplerOptions& options, const RenderOptions& render, int scene_kind);
 
 // cache: reuse a pipeline made earlier for the same kind, filter and size (null: the renderer's own).
 std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const GpuTexture& texture,

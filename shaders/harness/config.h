@@ -200,6 +200,7 @@
 #define HARNESS_SPEC_VIEW 3 // specialization constant id of render's debug view (HARNESS_VIEW_*)
 #define HARNESS_SPEC_GRADIENTS 4 // specialization constant id of render's gradients (HARNESS_GRADIENTS_*)
 #define HARNESS_SPEC_LOOKUPS 5 // specialization constant id of render's lookups a pixel (bench --lookups-per-pixel)
+#define HARNESS_SPEC_SCENE 6 // specialization constant id of render's scene kind (HARNESS_SCENE_*; -1: the scene block's)
 
 // --stochastic: the random numbers of the one-texel forms (tf::Noise; shaders/harness/stochastic_noise.glsl,
 // host/core/stochastic_noise.h): white (an integer hash) or blue (a Cranley-Patterson rotated R3 sequence).

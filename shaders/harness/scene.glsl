@@ -112,12 +112,18 @@ Hit hit_triangles(SceneParams scene, vec3 o, vec3 d)
     return triangle_hit(scene, best, bestB, true);
 }
 
+// The scene's kind as a constant where the pipeline is specialised to it (render: the host sets it from the scene),
+// so that a frame holds one ray cast: with the kind read from the block, the no-texture frame of the plane took
+// twice as long (lavapipe, compute, 512²: 3.2 ms against 1.6-1.7 ms), the other casts' code in it.
+layout(constant_id = HARNESS_SPEC_SCENE) const int SCENE_ID = -1;
+
 Hit scene_hit(SceneParams scene, vec2 pixelCentre)
 {
     vec3 d = camera_ray(scene, pixelCentre);
-    if (scene.kindSize.x == HARNESS_SCENE_CYLINDER)
+    int kind = SCENE_ID >= 0 ? SCENE_ID : scene.kindSize.x;
+    if (kind == HARNESS_SCENE_CYLINDER)
         return hit_cylinder(scene, scene.origin.xyz, d);
-    if (scene.kindSize.x == HARNESS_SCENE_TRIANGLES)
+    if (kind == HARNESS_SCENE_TRIANGLES)
         return hit_triangles(scene, scene.origin.xyz, d);
     return hit_plane(scene, scene.origin.xyz, d);
 }
