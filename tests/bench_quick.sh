@@ -43,7 +43,7 @@ elif [[ $status -ne 0 ]]; then
 fi
 "$python" "$root/tools/bench_report.py" "$work/bench"
 "$python" "$root/tools/bench_check.py" --require-flip "$work/bench"
-for page in index.html quality_vs_cost.png quality_vs_cost_box.png; do
+for page in index.html quality_vs_cost.png quality_vs_cost_box.png quality_vs_reads.png; do
     [[ -s $work/bench/$page ]] || { echo "bench_quick: tools/bench_report.py wrote no $page" >&2; exit 1; }
 done
 echo "bench_quick: complete"

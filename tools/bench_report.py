@@ -12,6 +12,8 @@ then writes:
     DIR/heatmaps/<scene>/<label>.png      FLIP error map vs the gaussian truth, magma, 0..1
     DIR/quality_vs_cost.png               FLIP vs gaussian truth against time / hw-trilinear
     DIR/quality_vs_cost_box.png           the same against the box truth
+    DIR/quality_vs_reads.png              PSNR vs gaussian truth against texel fetches + hardware lookups a
+                                          pixel, with each scene's frontier (no other filter both better and cheaper)
     DIR/index.html                        self-contained report linking all of the above
 Exits 1 with a message naming the file when an input is missing or malformed.
 """
@@ -282,6 +284,68 @@ def scatter(out_dir, bench, kind, file_name):
     plt.close(fig)
 
 
+def reads_per_pixel(result):
+    """Texel fetches plus hardware lookups a pixel (the shader's counts), or None where the bench has none."""
+    fetches, lookups = result.get("fetches_per_pixel"), result.get("hw_lookups_per_pixel")
+    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in (fetches, lookups)):
+        return None
+    return fetches + lookups
+
+
+def frontier_points(pts):
+    """The points no other point beats in both: fewer or equal reads and a higher PSNR (x ascending)."""
+    best, out = -math.inf, []
+    for x, y, label in sorted(pts, key=lambda p: (p[0], -p[1])):
+        if y > best:
+            out.append((x, y, label))
+            best = y
+    return out
+
+
+def frontier(out_dir, bench, file_name):
+    """One subplot per scene: PSNR vs the gaussian truth against reads a pixel, and the quality-vs-reads frontier."""
+    scenes = bench["config"]["scenes"]
+    cols = min(len(scenes), 3) or 1
+    rows = max(1, math.ceil(len(scenes) / cols))
+    fig, axes = plt.subplots(rows, cols, figsize=(5.5 * cols, 4.5 * rows), squeeze=False)
+    for ax in axes.flat[len(scenes):]:
+        ax.axis("off")
+    for ax, scene in zip(axes.flat, scenes):
+        pts = []
+        for r in bench["results"]:
+            reads, psnr = reads_per_pixel(r), number(r, lambda r: r["error"]["gaussian"]["psnr"])
+            if r["scene"] == scene and reads is not None and psnr is not None:
+                pts.append((max(reads, 0.5), psnr, r["label"]))  # log axis: the no-read filters at 0.5
+        for hardware, marker, colour, name in ((False, "o", "tab:blue", "shader filter"),
+                                               (True, "s", "tab:orange", "hardware filter")):
+            mine = [p for p in pts if any(bool(r.get("hardware")) == hardware for r in bench["results"]
+                                          if r["scene"] == scene and r["label"] == p[2])]
+            if mine:
+                ax.scatter([p[0] for p in mine], [p[1] for p in mine], marker=marker, c=colour, label=name)
+        edge = frontier_points(pts)
+        if edge:
+            ax.step([p[0] for p in edge], [p[1] for p in edge], where="post", color="tab:green", lw=1,
+                    label="frontier")
+        for x, y, label in pts:
+            ax.annotate(label, (x, y), textcoords="offset points", xytext=(4, 3), fontsize=6)
+        ax.set_xscale("log")
+        ax.set_title(scene)
+        ax.set_xlabel("texel fetches + hardware lookups a pixel (log scale)")
+        ax.set_ylabel("PSNR vs gaussian truth, dB (higher is better)")
+        ax.grid(True, which="both", alpha=0.3)
+    handles, names = [], []
+    for ax in axes.flat[:len(scenes)]:
+        for h, n in zip(*ax.get_legend_handles_labels()):
+            if n not in names:
+                handles.append(h)
+                names.append(n)
+    fig.legend(handles, names, loc="upper right", fontsize=8)
+    fig.suptitle(f"quality vs reads on {bench.get('device', '?')}: PSNR vs gaussian truth")
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
+    fig.savefig(os.path.join(out_dir, file_name), dpi=110)
+    plt.close(fig)
+
+
 def log_ticks(ax):
     """Plain "0.5×" labels instead of 5×10^-1; over wide ranges label only minor ticks 2 and 5."""
     lo, hi = ax.get_xlim()
@@ -352,7 +416,8 @@ def header_html(bench):
         "FLIP is LDR-FLIP at 67 pixels per degree, heat maps show it against the gaussian truth "
         "(magma, black 0 to white 1).</p>",
         '<p>quality vs cost: <a href="quality_vs_cost.png">vs gaussian truth</a>, '
-        '<a href="quality_vs_cost_box.png">vs box truth</a></p>',
+        '<a href="quality_vs_cost_box.png">vs box truth</a>; quality vs reads a pixel: '
+        '<a href="quality_vs_reads.png">the frontier</a></p>',
         '<a href="quality_vs_cost.png"><img src="quality_vs_cost.png" style="max-width:100%"></a>',
     ]
     return "\n".join(lines)
@@ -445,6 +510,7 @@ def main(argv):
         return 1
     scatter(out_dir, bench, "gaussian", "quality_vs_cost.png")
     scatter(out_dir, bench, "box", "quality_vs_cost_box.png")
+    frontier(out_dir, bench, "quality_vs_reads.png")
     write_html(out_dir, bench, per_scene)
     print(f"bench_report: wrote {os.path.join(out_dir, 'index.html')} ({time.monotonic() - start:.1f} s)")
     return 0
