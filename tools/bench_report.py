@@ -245,14 +245,35 @@ def process_scene(out_dir, bench, scene):
     return results
 
 
+def scene_panels(count):
+    """A figure with one panel a scene, three a row; the unused panels hidden."""
+    cols = min(count, 3) or 1
+    rows = max(1, math.ceil(count / cols))
+    fig, axes = plt.subplots(rows, cols, figsize=(5.5 * cols, 4.5 * rows), squeeze=False)
+    for ax in axes.flat[count:]:
+        ax.axis("off")
+    return fig, axes
+
+
+def finish_panels(fig, axes, count, title, path):
+    """One legend for every panel's entries (a scene may lack a kind), the title, and the PNG at `path`."""
+    handles, names = [], []
+    for ax in axes.flat[:count]:
+        for h, n in zip(*ax.get_legend_handles_labels()):
+            if n not in names:
+                handles.append(h)
+                names.append(n)
+    fig.legend(handles, names, loc="upper right", fontsize=8)
+    fig.suptitle(title)
+    fig.tight_layout(rect=(0, 0, 1, 0.95))  # leave room for the title and legend
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def scatter(out_dir, bench, kind, file_name):
     """One subplot per scene: FLIP vs `kind` truth against time relative to hw-trilinear."""
     scenes = bench["config"]["scenes"]
-    cols = min(len(scenes), 3) or 1
-    rows = max(1, math.ceil(len(scenes) / cols))
-    fig, axes = plt.subplots(rows, cols, figsize=(5.5 * cols, 4.5 * rows), squeeze=False)
-    for ax in axes.flat[len(scenes):]:
-        ax.axis("off")
+    fig, axes = scene_panels(len(scenes))
     for ax, scene in zip(axes.flat, scenes):
         for hardware, marker, colour, name in ((False, "o", "tab:blue", "shader filter"),
                                                (True, "s", "tab:orange", "hardware filter")):
@@ -271,17 +292,8 @@ def scatter(out_dir, bench, kind, file_name):
         ax.set_xlabel("time / hw-trilinear (median, log scale)")
         ax.set_ylabel(f"FLIP vs {kind} truth (lower is better)")
         ax.grid(True, which="both", alpha=0.3)
-    handles, names = axes.flat[0].get_legend_handles_labels()
-    for ax in axes.flat[1:len(scenes)]:  # a scene may lack one kind; collect both for the legend
-        for h, n in zip(*ax.get_legend_handles_labels()):
-            if n not in names:
-                handles.append(h)
-                names.append(n)
-    fig.legend(handles, names, loc="upper right", fontsize=8)
-    fig.suptitle(f"quality vs cost on {bench.get('device', '?')}: FLIP vs {kind} truth")
-    fig.tight_layout(rect=(0, 0, 1, 0.95))  # leave room for the title and legend
-    fig.savefig(os.path.join(out_dir, file_name), dpi=110)
-    plt.close(fig)
+    finish_panels(fig, axes, len(scenes), f"quality vs cost on {bench.get('device', '?')}: FLIP vs {kind} truth",
+                  os.path.join(out_dir, file_name))
 
 
 def reads_per_pixel(result):
@@ -305,11 +317,7 @@ def frontier_points(pts):
 def frontier(out_dir, bench, file_name):
     """One subplot per scene: PSNR vs the gaussian truth against reads a pixel, and the quality-vs-reads frontier."""
     scenes = bench["config"]["scenes"]
-    cols = min(len(scenes), 3) or 1
-    rows = max(1, math.ceil(len(scenes) / cols))
-    fig, axes = plt.subplots(rows, cols, figsize=(5.5 * cols, 4.5 * rows), squeeze=False)
-    for ax in axes.flat[len(scenes):]:
-        ax.axis("off")
+    fig, axes = scene_panels(len(scenes))
     for ax, scene in zip(axes.flat, scenes):
         pts = []
         for r in bench["results"]:
@@ -333,17 +341,8 @@ def frontier(out_dir, bench, file_name):
         ax.set_xlabel("texel fetches + hardware lookups a pixel (log scale)")
         ax.set_ylabel("PSNR vs gaussian truth, dB (higher is better)")
         ax.grid(True, which="both", alpha=0.3)
-    handles, names = [], []
-    for ax in axes.flat[:len(scenes)]:
-        for h, n in zip(*ax.get_legend_handles_labels()):
-            if n not in names:
-                handles.append(h)
-                names.append(n)
-    fig.legend(handles, names, loc="upper right", fontsize=8)
-    fig.suptitle(f"quality vs reads on {bench.get('device', '?')}: PSNR vs gaussian truth")
-    fig.tight_layout(rect=(0, 0, 1, 0.95))
-    fig.savefig(os.path.join(out_dir, file_name), dpi=110)
-    plt.close(fig)
+    finish_panels(fig, axes, len(scenes), f"quality vs reads on {bench.get('device', '?')}: PSNR vs gaussian truth",
+                  os.path.join(out_dir, file_name))
 
 
 def log_ticks(ax):
