@@ -54,6 +54,7 @@
 #undef TFI_SLANG_TEXTURE
 #undef TFI_TEXEL_FETCH
 #undef TFI_TEXTURE_SIZE
+#undef TFI_TEXTURE_LEVELS
 #undef TFI_A
 #undef TFI_X
 #undef TFI_XA
@@ -90,10 +91,12 @@
 #define TFI_SLANG_TEXTURE 1
 #define TFI_TEXEL_FETCH tfi_slang_fetch
 #define TFI_TEXTURE_SIZE tfi_slang_size
+#define TFI_TEXTURE_LEVELS tfi_slang_levels
 #else
 #define TFI_SLANG_TEXTURE 0
 #define TFI_TEXEL_FETCH texelFetch
 #define TFI_TEXTURE_SIZE textureSize
+#define TFI_TEXTURE_LEVELS textureQueryLevels
 #endif
 
 #if TFI_KIND < 1 || TFI_KIND > 20
@@ -176,13 +179,8 @@
 #define TFI_LEVELS tf_source_levels(tex)
 #define TFI_LEVEL_SIZE(l) tf_source_size(tex, l)
 #else
-#if TFI_SLANG_TEXTURE
-#define TFI_SIZE0 tfi_slang_size(TF_NONUNIFORM(tex), 0).xy
-#define TFI_LEVELS tfi_slang_levels(TF_NONUNIFORM(tex))
-#else
-#define TFI_SIZE0 textureSize(TF_NONUNIFORM(tex), 0).xy
-#define TFI_LEVELS textureQueryLevels(TF_NONUNIFORM(tex))
-#endif
+#define TFI_SIZE0 TFI_TEXTURE_SIZE(TF_NONUNIFORM(tex), 0).xy
+#define TFI_LEVELS TFI_TEXTURE_LEVELS(TF_NONUNIFORM(tex))
 // Derived from level 0 on purpose: textureSize() with a level that differs across a SIMD batch returned the
 // wrong lane's size on lavapipe (Mesa 22.3).
 #define TFI_LEVEL_SIZE(l) max(TFI_SIZE0 >> (l), ivec2(1))
@@ -191,14 +189,9 @@
 // A texel. Arrays clamp the layer as Vulkan clamps a sampled array layer (to [0, layers − 1]): texelFetch
 // of a layer outside the image is undefined. No texelFetch on a shadow sampler (13, 14): a stand-in that no
 // entry point of theirs reaches.
-#if TFI_SLANG_TEXTURE && (TFI_KIND == 5 || TFI_KIND == 6)
+#if TFI_KIND >= 4 && TFI_KIND <= 6
 #define TFI_FETCH(p, l) \
-    tfi_slang_fetch(TF_NONUNIFORM(tex), ivec3(p, clamp(layer, 0, tfi_slang_size(TF_NONUNIFORM(tex), 0).z - 1)), l)
-#elif TFI_SLANG_TEXTURE
-#define TFI_FETCH(p, l) tfi_slang_fetch(TF_NONUNIFORM(tex), p, l)
-#elif TFI_KIND >= 4 && TFI_KIND <= 6
-#define TFI_FETCH(p, l) \
-    texelFetch(TF_NONUNIFORM(tex), ivec3(p, clamp(layer, 0, textureSize(TF_NONUNIFORM(tex), 0).z - 1)), l)
+    TFI_TEXEL_FETCH(TF_NONUNIFORM(tex), ivec3(p, clamp(layer, 0, TFI_TEXTURE_SIZE(TF_NONUNIFORM(tex), 0).z - 1)), l)
 #elif TFI_KIND >= 7 && TFI_KIND <= 10
 #define TFI_FETCH(p, l) vec4(texelFetch(TF_NONUNIFORM(tex), p, l))
 #elif TFI_KIND == 11 || TFI_KIND == 12
@@ -212,7 +205,7 @@
 #elif TFI_KIND == 20
 #define TFI_FETCH(p, l) tf_source_fetch(tex, p, l)
 #else
-#define TFI_FETCH(p, l) texelFetch(TF_NONUNIFORM(tex), p, l)
+#define TFI_FETCH(p, l) TFI_TEXEL_FETCH(TF_NONUNIFORM(tex), p, l)
 #endif
 #define TFI_CAN_FETCH (TFI_KIND < 13 || TFI_KIND >= 15)
 
