@@ -68,7 +68,7 @@ EOF
 
 if [[ $what == pictures || $what == all ]]; then
     out=docs/images/filters
-    rm -rf "$out" && mkdir -p "$out" # no picture of an earlier run left beside these
+    mkdir -p "$out" # each picture written by name: nothing else in the folder is touched
     strip() { # strip OUT NAME...: the crops ($crop) of $work/NAME.png, 2x, in a 2-column mosaic
         local name=$1 size=${crop%%+*} inputs=()
         shift
