@@ -401,6 +401,38 @@ void report_hw_vs_manual(const std::string& name, const MipChain& chain, Wrap wr
                 rms_error(gpu_hw, gpu_manual), max_error(gpu_hw, gpu_manual));
 }
 
+// Hardware vs manual taps where they differed most: texels that alternate at the read level's Nyquist rate
+// (a checker 512 with 64-texel cells seen at 64-256 texels a pixel reads levels 5-7, where a cell is 1-4
+// texels; a zone plate at 2-8 texels) under rotated, near-isotropic footprints (anisotropy 1-4). One bilinear
+// tap gives a 2x2 block separable weights, misweighing the block's checkerboard part by 4|w00 w11 - w10 w01| /
+// total, the same sign in every block of a rotated ellipse, so the errors add up (RMS 0.013 on the checker and
+// 0.004 on the zone plate here before such blocks got two taps). Blocks twisted by more than 0.005 of the level's
+// weight are now two exact taps; the bound is what one block at that limit can misweigh on these [0, 1] textures
+// (checkerboard part at most 0.5): 0.005 x 0.5 = 0.0025.
+void check_twisted_blocks(const char* texture, int size, double major_lo, double major_hi, Wrap wrap) {
+    const MipChain chain = make_procedural(texture, size);
+    std::mt19937 rng(47);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Lookup> lookups;
+    for (int i = 0; i < 512; ++i) {
+        const double major = major_lo * std::pow(major_hi / major_lo, unit(rng)) / size;
+        const double minor = major / std::exp2(2 * unit(rng)), a = std::numbers::pi * unit(rng);
+        lookups.push_back(as_float({unit(rng), unit(rng), major * std::cos(a), major * std::sin(a), -minor * std::sin(a),
+                                    minor * std::cos(a)}));
+    }
+    const double bound = 0.005 * 0.5;
+    const std::string what = std::string(texture) + " at " + std::to_string(int(major_lo)) + "-" +
+                             std::to_string(int(major_hi)) + " texels";
+    CHECK_LE("twisted blocks: RMS |hardware - manual|, reference, " + what,
+             rms_error(reference(chain, lookups, ewa_options(wrap, Taps::hardware)),
+                       reference(chain, lookups, ewa_options(wrap, Taps::manual))),
+             bound);
+    CHECK_LE("twisted blocks: RMS |hardware - manual|, GPU, " + what,
+             rms_error(g_gpu->sample(chain, lookups, ewa_options(wrap, Taps::hardware)),
+                       g_gpu->sample(chain, lookups, ewa_options(wrap, Taps::manual))),
+             bound);
+}
+
 // Texel fetches and hardware lookups per lookup (the shader's TF_COUNT_* hooks): manual never more
 // than K² per level; hardware about a quarter of manual's fetches, as lookups.
 void check_counts() {
@@ -853,6 +885,8 @@ TEST_CASE("hw-vs-manual-zoneplate")
     GpuCase c;
     report_hw_vs_manual("zoneplate", make_procedural("zoneplate", 256), Wrap::mirror);
 }
+TEST_CASE("twisted-blocks-checker") { GpuCase c; check_twisted_blocks("checker", 512, 64.0, 256.0, Wrap::repeat); }
+TEST_CASE("twisted-blocks-zoneplate") { GpuCase c; check_twisted_blocks("zoneplate", 256, 2.0, 8.0, Wrap::repeat); }
 TEST_CASE("overshoot") { GpuCase c; check_overshoot(); }
 TEST_CASE("counts") { GpuCase c; check_counts(); }
 TEST_CASE("non-finite") { command_case(); check_non_finite(); }

@@ -13,7 +13,10 @@
 //   overshoot it): it reproduces a linear texture exactly, whichever texels the support catches.
 //   Hardware taps: texels in 2x2 blocks at even indices, one exact bilinear lookup per block at its
 //   weight centroid less the taps' common centroid offset (so that their weighted mean position is the
-//   centre), weighted by the block's total weight: exact on a linear texture too.
+//   centre), weighted by the block's total weight: exact on a linear texture too. One bilinear lookup
+//   weighs a block's texels by the product of its row and column shares; where that misweighs the block's
+//   alternating part (t00 - t10 - t01 + t11) by more than kTwistLimit of the level's weight, the block is
+//   two lookups instead, one for each pair of texels along the ellipse's longer extent, each exact.
 #include "texture/error.h"
 #include "reference/reference.h"
 
@@ -35,6 +38,7 @@ constexpr double kHalfBox = 0.5 * (kMaxTexels - 1) - 1.0 / 64.0; // largest boun
 // Largest major semi-axis (M's, without R) on the LOD's level: the support then fits the cap there.
 const double kMajorTexels = (kMaxTexels - 3) / (4.0 * std::sqrt(kSupport));
 constexpr double kMaxAlpha = 64.0;
+constexpr double kTwistLimit = 0.005; // a block's 4|w00 w11 - w10 w01| / w over the level's weight
 constexpr double kMaxTexel = 4503599627370496.0; // 2^52: beyond it doubles have no fraction
 
 struct Sym { // symmetric 2x2 matrix
@@ -188,24 +192,43 @@ glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, cons
                                                             wrap_texel(j, img.height, wrap))));
                 }
     } else {
+        struct Block {
+            long long i, j;          // its first texel
+            double w00, w10, w01, w11, w;
+        };
         struct Tap {
             double w, x, y; // weight; position in level texels (texel index + 1/2 + fraction)
         };
-        std::vector<Tap> taps;
+        std::vector<Block> blocks;
         double w_sum = 0, x_sum = 0, y_sum = 0;
         for (long long bj = floor_div2(j0); bj <= floor_div2(j1); ++bj)
             for (long long bi = floor_div2(i0); bi <= floor_div2(i1); ++bi) {
                 const long long i = 2 * bi, j = 2 * bj;
-                const double w00 = weight(e, i, j, alpha), w10 = weight(e, i + 1, j, alpha);
-                const double w01 = weight(e, i, j + 1, alpha), w11 = weight(e, i + 1, j + 1, alpha);
-                const double w = w00 + w10 + w01 + w11;
-                if (w <= 0.0) continue;
-                // Texel coordinate 2b + 1/2 + a puts bilinear's i0 at 2b with fraction a: the block's weight centroid.
-                const Tap t{w, double(i) + 0.5 + (w10 + w11) / w, double(j) + 0.5 + (w01 + w11) / w};
-                taps.push_back(t);
-                w_sum += t.w, x_sum += t.w * t.x, y_sum += t.w * t.y;
+                Block b{i, j, weight(e, i, j, alpha), weight(e, i + 1, j, alpha), weight(e, i, j + 1, alpha),
+                        weight(e, i + 1, j + 1, alpha), 0.0};
+                b.w = b.w00 + b.w10 + b.w01 + b.w11;
+                if (b.w <= 0.0) continue;
+                blocks.push_back(b);
+                // The block's weight centroid (one tap there, or its two pairs' taps, average to it).
+                w_sum += b.w, x_sum += b.w10 + b.w11, y_sum += b.w01 + b.w11;
+                x_sum += b.w * (double(i) + 0.5), y_sum += b.w * (double(j) + 0.5);
             }
         if (!(w_sum > 0.0)) throw Error("ewa: no texel weighs anything (cannot happen: the nearest has r² <= 1/2)");
+        const bool columns = e.m.yy > e.m.xx; // pairs along the longer extent
+        std::vector<Tap> taps;
+        for (const Block& b : blocks) {
+            const double x = double(b.i) + 0.5, y = double(b.j) + 0.5;
+            if (4.0 * std::abs(b.w00 * b.w11 - b.w10 * b.w01) / b.w <= kTwistLimit * w_sum) {
+                // Texel coordinate 2b + 1/2 + a puts bilinear's i0 at 2b with fraction a: the weight centroid.
+                taps.push_back({b.w, x + (b.w10 + b.w11) / b.w, y + (b.w01 + b.w11) / b.w});
+            } else if (columns) {
+                if (const double t = b.w00 + b.w01; t > 0.0) taps.push_back({t, x, y + b.w01 / t});
+                if (const double t = b.w10 + b.w11; t > 0.0) taps.push_back({t, x + 1.0, y + b.w11 / t});
+            } else {
+                if (const double t = b.w00 + b.w10; t > 0.0) taps.push_back({t, x + b.w10 / t, y});
+                if (const double t = b.w01 + b.w11; t > 0.0) taps.push_back({t, x + b.w11 / t, y + 1.0});
+            }
+        }
         // Every tap moved by the same offset, so that their weighted mean position is the lookup's centre.
         const double sx = x_sum / w_sum - (double(e.bx) + e.fx), sy = y_sum / w_sum - (double(e.by) + e.fy);
         glm::dvec4 sum(0.0);

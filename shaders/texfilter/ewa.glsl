@@ -19,7 +19,8 @@
 //          its lookups at uv ± k·(dUVdx ± dUVdy), k² the weight's variance, so their spread is the ellipse's.
 //          tf_ewa_hw: one bilinear tap per 2x2 block (blocks anchored to even texels of the level), at the
 //          block's weight centroid, all shifted so that the taps average to uv: a positive-weighted mean of
-//          taps, exact on a linear texture, within the sampler's sub-texel rounding of tf_ewa's weights.
+//          taps, exact on a linear texture. One tap gives a block separable weights; a block twisted more than
+//          that allows (tfi_ewa_block_twisted) gets two, one a texel pair, which give its weights exactly.
 // Options: alpha (2, as pbrt): the Gaussian's sharpness, clamped to [0, 64]; NaN or negative → 0 (weight 1 − r²/R²).
 //          maxAniso (e.g. 16): the largest major/minor ratio; below 1 or NaN → 1. Larger: sharper at grazing
 //          angles, more reads. s.wrap, s.lodBias, s.lodMin, s.lodMax as every filter; TF_MAGNIFY (common.glsl).
@@ -29,7 +30,8 @@
 //          narrower than the levels (the sampler's bias and clamps apply to textureLod too).
 // Cost:    tf_ewa reads each texel of the support once on each of 2 levels: about 30 for an isotropic footprint,
 //          350 at 16:1; at most K² a level whatever the input. tf_ewa_hw: one lookup per 2x2 block that meets the
-//          support, about 0.4 of those reads (its weights are evaluated twice); at most (K/2+1)² a level.
+//          support, two for a twisted one: about 0.45 of those reads (its weights are evaluated twice); at most
+//          2(K/2+1)² a level.
 //          Where λ < 1, 4 lookups of the magnification filter more (bilinear: 16 fetches or 4 taps).
 // Degenerate input: zero gradients → the magnification filter alone on level 0 (with lodMin >= 1: lodMin's
 //          level with M = I); huge gradients → the coarsest level the clamps allow (normally the 1x1 mean);
@@ -146,21 +148,35 @@ int tfi_ewa_block_columns(vec3 M, float det, vec2 frac, float parityX, float dy0
     return lo > hi ? 0 : cols;
 }
 
-// The block whose first texel is at offset (dx0, dy0) from the centre: its total weight, and in ab the
-// bilinear fraction that reproduces its four weights ((1-a)(1-b), a(1-b), (1-a)b, ab = w/total when separable;
-// a lookup at texel coordinate 2b + ½ + a reads the block's first texel at 2b with fraction a). ab means
-// nothing where total is 0 (callers skip those blocks).
-float tfi_ewa_block(vec3 M, float det, float alpha, float dx0, float dy0, out vec2 ab)
+// The block whose first texel is at offset (dx0, dy0) from the centre: its total weight, its four weights w
+// (w00, w10, w01, w11), and in ab the bilinear fraction that reproduces them ((1-a)(1-b), a(1-b), (1-a)b, ab =
+// w/total when separable; a lookup at texel coordinate 2b + ½ + a reads the block's first texel at 2b with
+// fraction a). ab means nothing where total is 0 (callers skip those blocks).
+float tfi_ewa_block(vec3 M, float det, float alpha, float dx0, float dy0, out vec2 ab, out vec4 w)
 {
     float dx1 = dx0 + 1.0, dy1 = dy0 + 1.0;
     vec4 r2 = vec4(tfi_ewa_r2(M, det, dx0, dy0), tfi_ewa_r2(M, det, dx1, dy0), tfi_ewa_r2(M, det, dx0, dy1),
                    tfi_ewa_r2(M, det, dx1, dy1));
-    vec4 w = vec4(tfi_ewa_weight(r2.x, alpha), tfi_ewa_weight(r2.y, alpha), tfi_ewa_weight(r2.z, alpha),
-                  tfi_ewa_weight(r2.w, alpha));
-    w = mix(vec4(0.0), w, lessThan(r2, vec4(1.0))); // w00, w10, w01, w11
+    w = vec4(tfi_ewa_weight(r2.x, alpha), tfi_ewa_weight(r2.y, alpha), tfi_ewa_weight(r2.z, alpha),
+             tfi_ewa_weight(r2.w, alpha));
+    w = mix(vec4(0.0), w, lessThan(r2, vec4(1.0)));
     float total = w.x + w.y + w.z + w.w;
     ab = vec2(w.y + w.w, w.z + w.w) / total;
     return total;
+}
+
+// One bilinear tap gives a block separable weights: its row and column sums are exact, but the part of the
+// block's value that alternates like a checkerboard, (t00 − t10 − t01 + t11)/4, is weighed 4·(w00·w11 −
+// w10·w01)/total wrong. A rotated ellipse twists every block the same way, so on texels that alternate at
+// the level's Nyquist rate (a checker seen from afar, a zone plate) the errors add up: up to 0.011 RMS off
+// the manual form at 64-256 texels. Blocks twisted by more than this share of the level's whole weight
+// are read as two exact taps, one a texel pair; the rest keep one. At this limit the hardware-tap form is
+// within 0.0006 RMS of the manual one on such textures, at about 1.15x the lookups (docs/BENCHMARKS.md, EWA).
+const float TFI_EWA_TWIST_LIMIT = 0.005;
+
+bool tfi_ewa_block_twisted(vec4 w, float total, float levelTotal)
+{
+    return 4.0 * abs(w.x * w.w - w.y * w.z) / total > TFI_EWA_TWIST_LIMIT * levelTotal;
 }
 
 // Weighted moments of one level's texels about the lookup's centre, d = texel centre - centre (in

@@ -179,7 +179,8 @@ vec4 tfi_ewa_blocks_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaSha
                 float i0 = firstCol + 2.0 * float(n);
                 float dx0 = i0 + 0.5 - frac.x;
                 vec2 ab;
-                float total = tfi_ewa_block(M, det, alpha, dx0, dy0, ab);
+                vec4 w;
+                float total = tfi_ewa_block(M, det, alpha, dx0, dy0, ab, w);
                 if (!(total > 0.0))
                     continue;
                 if (pass == 0) {
@@ -193,8 +194,20 @@ vec4 tfi_ewa_blocks_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaSha
                     }
                     below += total;
                 } else {
-                    TF_COUNT_HW_LOOKUPS(1);
-                    sum += total * TFI_LOOKUP((base + vec2(i0, j0) + 0.5 + ab - shift) / size, float(level));
+                    // One tap at the block's weight centroid; a twisted block two, each one texel pair (b or a
+                    // exactly 0: its two weights exact), the pairs along the ellipse's longer extent, where fewer
+                    // are cut by its edge. One lookup in the code either way (tools/spirv_size.sh).
+                    bool twisted = tfi_ewa_block_twisted(w, total, weights), columns = M.z > M.x;
+                    for (int t = 0; t < (twisted ? 2 : 1); ++t) {
+                        vec2 pair = columns ? (t == 0 ? w.xz : w.yw) : (t == 0 ? w.xy : w.zw);
+                        float tapWeight = twisted ? pair.x + pair.y : total;
+                        vec2 at = !twisted ? ab : columns ? vec2(float(t), pair.y / tapWeight)
+                                                          : vec2(pair.y / tapWeight, float(t));
+                        if (tapWeight > 0.0) {
+                            TF_COUNT_HW_LOOKUPS(1);
+                            sum += tapWeight * TFI_LOOKUP((base + vec2(i0, j0) + 0.5 + at - shift) / size, float(level));
+                        }
+                    }
                 }
             }
         }
