@@ -761,12 +761,17 @@ unwritable_outputs() {
 
 # kill_when_temporary_appears SIGNAL COMMAND...: starts the command, sends SIGNAL once a *.tmp-* exists.
 kill_when_temporary_appears() {
-    local signal=$1
-    shift
+    kill_when_seen leftover_temporaries "$@"
+}
+
+# kill_when_seen LISTER SIGNAL COMMAND...: as kill_when_temporary_appears, once LISTER (a function) prints anything.
+kill_when_seen() {
+    local lister=$1 signal=$2
+    shift 2
     "$@" >stdout 2>stderr &
     local pid=$! seen=0
     for _ in $(seq 1 3000); do
-        if [[ -n $(leftover_temporaries) ]]; then
+        if [[ -n $("$lister") ]]; then
             seen=1
             break
         fi
@@ -840,6 +845,10 @@ oiio_peer_refusals() {
         -o out.csv
 }
 
+oiio_texture_directories() {
+    find . -maxdepth 1 -name 'texfilter-oiio.tmp-*' -print
+}
+
 # Nothing of the TextureSystem's texture file outlives a run, finished or ended by a signal.
 oiio_peer_temporaries() {
     expect_success "oiio: trilinear sample" oiio.csv -- "${OIIO_SAMPLE[@]}" --filter trilinear -o oiio.csv
@@ -854,20 +863,8 @@ random.seed(3)
 print("u,v,dudx,dvdx,dudy,dvdy")
 for _ in range(200000): print("%.6f,%.6f,0.01,0,0,0.003" % (random.random(), random.random()))' >many.csv
     # The output's temporary comes first: wait for the texture's directory itself.
-    env TMPDIR="$WORK" "$TEXFILTER" sample --texture noise --texture-size 4096 --backend oiio --filter aniso \
-        --lookups many.csv -o killed.csv >stdout 2>stderr &
-    local pid=$! signalled=0
-    for _ in $(seq 1 3000); do
-        if compgen -G 'texfilter-oiio.tmp-*' >/dev/null; then
-            signalled=1
-            break
-        fi
-        kill -0 "$pid" 2>/dev/null || break
-        sleep 0.01
-    done
-    kill -TERM "$pid" 2>/dev/null || true
-    rc=0
-    wait "$pid" || rc=$?
+    kill_when_seen oiio_texture_directories TERM env TMPDIR="$WORK" "$TEXFILTER" sample --texture noise \
+        --texture-size 4096 --backend oiio --filter aniso --lookups many.csv -o killed.csv
     if [[ $signalled -ne 1 ]]; then
         skip "oiio: SIGTERM while the texture file exists" "its directory never appeared (exit $rc)"
     elif [[ -n $(leftover_temporaries) || -e killed.csv || $rc -ne 143 ]]; then
