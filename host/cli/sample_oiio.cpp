@@ -50,8 +50,12 @@ int run_sample_oiio(const Args& args, const SamplerOptions& options)
     const std::vector<Lookup> lookups = read_lookups_csv(args.require("--lookups"));
     TextureUse use;
     use.level0_only = true; // OIIO builds its own levels from level 0 (maketx)
-    use.other_bytes = uint64_t(lookups.size()) * sample_lookup_bytes(true);
-    use.other_what = std::to_string(lookups.size()) + " lookups";
+    // Beside level 0 OIIO holds make_texture's float copy of it and of the levels it builds (16 bytes a texel,
+    // a third more for the levels); its ImageCache then reads tiles of that file within its own limit.
+    const TextureSize size = check_texture(source, {});
+    const uint64_t oiio_copy = uint64_t(size.width) * uint64_t(size.height) * 16 * 4 / 3;
+    use.other_bytes = uint64_t(lookups.size()) * sample_lookup_bytes(true) + oiio_copy;
+    use.other_what = std::to_string(lookups.size()) + " lookups and OpenImageIO's MIP-mapped copy";
     const MipChain chain = load_texture(source, use);
     const std::vector<glm::vec4> results = oiio_texture_lookups(chain.levels[0], lookups, options.wrap, mode);
     write_colors_csv(out, std::vector<glm::dvec4>(results.begin(), results.end()));
