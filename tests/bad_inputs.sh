@@ -761,12 +761,17 @@ unwritable_outputs() {
 
 # kill_when_temporary_appears SIGNAL COMMAND...: starts the command, sends SIGNAL once a *.tmp-* exists.
 kill_when_temporary_appears() {
-    local signal=$1
-    shift
+    kill_when_seen leftover_temporaries "$@"
+}
+
+# kill_when_seen LISTER SIGNAL COMMAND...: as kill_when_temporary_appears, once LISTER (a function) prints anything.
+kill_when_seen() {
+    local lister=$1 signal=$2
+    shift 2
     "$@" >stdout 2>stderr &
     local pid=$! seen=0
     for _ in $(seq 1 3000); do
-        if [[ -n $(leftover_temporaries) ]]; then
+        if [[ -n $("$lister") ]]; then
             seen=1
             break
         fi
@@ -804,6 +809,71 @@ signals_remove_temporaries() {
     long=$(printf 'n%.0s' $(seq 1 $(($(getconf NAME_MAX .) - 4)))).png
     expect_success "render -o a name of NAME_MAX bytes" "$long" -- "${RENDER[@]}" -o "$long"
     rm -f "$long"
+}
+
+# sample --backend oiio (OpenImageIO's TextureSystem, host/io/oiio_texture.h): what it cannot run is refused before
+# any work, in one line. Its private texture directory goes to $TMPDIR, here the work directory, where
+# leftover_temporaries sees it.
+OIIO_SAMPLE=(env TMPDIR="$WORK" "$TEXFILTER" sample --texture checker --backend oiio --lookups good.csv)
+oiio_peer_refusals() {
+    EXPECT_ONE_LINE=1 expect_error "oiio: --filter ewa" "whose modes are --filter trilinear and aniso, not --filter ewa" \
+        out.csv -- "${OIIO_SAMPLE[@]}" --filter ewa -o out.csv
+    local flag
+    for flag in "--probes 4" "--lod-bias 1" "--format rgba8" "--build gpu" "--stats" "--resource separate" \
+        "--device 0" "--stochastic white"; do
+        # shellcheck disable=SC2086 # the flag and its value, two words
+        EXPECT_ONE_LINE=1 expect_error "oiio: $flag" "${flag%% *} is not read by --backend oiio" out.csv -- \
+            "${OIIO_SAMPLE[@]}" --filter aniso $flag -o out.csv
+    done
+    EXPECT_ONE_LINE=1 expect_error "oiio: --oiio-interp cubic" \
+        "bad value for --oiio-interp: unknown OpenImageIO interpolation 'cubic'" out.csv -- \
+        "${OIIO_SAMPLE[@]}" --filter aniso --oiio-interp cubic -o out.csv
+    EXPECT_ONE_LINE=1 expect_error "--oiio-interp without --backend oiio" \
+        "--oiio-interp is not read by --backend reference" out.csv -- \
+        "${SAMPLE[@]}" --oiio-interp bicubic --lookups good.csv -o out.csv
+    EXPECT_ONE_LINE=1 expect_error "render --backend oiio" "bad value for --backend: 'oiio' (expected vulkan or reference)" \
+        out.png -- "$TEXFILTER" render --scene zoom --texture checker --filter aniso --backend oiio -o out.png
+    EXPECT_ONE_LINE=1 expect_error "oiio: no temporary directory" "no temporary directory: TMPDIR=$WORK/missing" \
+        out.csv -- env TMPDIR="$WORK/missing" "$TEXFILTER" sample --texture checker --backend oiio --filter aniso \
+        --lookups good.csv -o out.csv
+    [[ ! -e missing ]] || fail "oiio: no temporary directory" "$WORK/missing was created"
+    EXPECT_ONE_LINE=1 expect_error "oiio: missing texture file" missing.png out.csv -- \
+        env TMPDIR="$WORK" "$TEXFILTER" sample --texture missing.png --backend oiio --filter aniso --lookups good.csv \
+        -o out.csv
+    EXPECT_ONE_LINE=1 expect_error "oiio: missing lookups file" none.csv out.csv -- \
+        env TMPDIR="$WORK" "$TEXFILTER" sample --texture checker --backend oiio --filter aniso --lookups none.csv \
+        -o out.csv
+}
+
+oiio_texture_directories() {
+    find . -maxdepth 1 -name 'texfilter-oiio.tmp-*' -print
+}
+
+# Nothing of the TextureSystem's texture file outlives a run, finished or ended by a signal.
+oiio_peer_temporaries() {
+    expect_success "oiio: trilinear sample" oiio.csv -- "${OIIO_SAMPLE[@]}" --filter trilinear -o oiio.csv
+    if [[ -n $(leftover_temporaries) || $(wc -l <oiio.csv) -ne 2 ]]; then
+        fail "oiio: a finished run leaves nothing" "left: $(leftover_temporaries); $(wc -l <oiio.csv) rows"
+    else
+        pass "oiio: a finished run leaves nothing"
+    fi
+    # A 4096² texture takes OIIO a second or more to MIP-map: the signal lands while its directory exists.
+    python3 -c 'import random
+random.seed(3)
+print("u,v,dudx,dvdx,dudy,dvdy")
+for _ in range(200000): print("%.6f,%.6f,0.01,0,0,0.003" % (random.random(), random.random()))' >many.csv
+    # The output's temporary comes first: wait for the texture's directory itself.
+    kill_when_seen oiio_texture_directories TERM env TMPDIR="$WORK" "$TEXFILTER" sample --texture noise \
+        --texture-size 4096 --backend oiio --filter aniso --lookups many.csv -o killed.csv
+    if [[ $signalled -ne 1 ]]; then
+        skip "oiio: SIGTERM while the texture file exists" "its directory never appeared (exit $rc)"
+    elif [[ -n $(leftover_temporaries) || -e killed.csv || $rc -ne 143 ]]; then
+        fail "oiio: SIGTERM while the texture file exists" \
+            "exit $rc (expected 143); left: $(leftover_temporaries) $(ls killed.csv 2>/dev/null)"
+    else
+        pass "oiio: SIGTERM while the texture file exists"
+    fi
+    rm -f stdout stderr many.csv
 }
 
 # Temporaries are created exclusively under random names: whatever sits at the old predictable names
@@ -1481,6 +1551,8 @@ CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_re
     bounded_text_inputs
     flag_rules
     texture_values_and_budgets
+    oiio_peer_refusals
+    oiio_peer_temporaries
 )
 if [[ ${#SELECTED[@]} -eq 0 ]]; then
     SELECTED=("${CASE_GROUPS[@]}")

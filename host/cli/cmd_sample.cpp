@@ -1,5 +1,6 @@
 #include "flags/cli_common.h"
 #include "cli/commands.h"
+#include "cli/sample_oiio.h"
 #include "cli/sample_resource.h"
 #include "core/texel_sources.h"
 #include "vulkan/backend.h"
@@ -75,13 +76,15 @@ int run_sample(const std::vector<std::string>& argv)
                                           "through FILE.spv instead of the built-in shader (shaders/harness/"
                                           "sample.comp.glsl compiled with -DHARNESS_RESOURCE=<the kind's id> by another "
                                           "compiler, e.g. Slang's; checked first: valid SPIR-V, the kind's sample pass's "
-                                          "bindings)"}},
+                                          "bindings)"},
+                                         oiio_interp_flag()},
                                         resource_flags(),
                                         device_flags()});
     Args args = parse_args("sample", argv, specs, 0);
     if (args.has("--help")) {
         std::fputs(format_help("texfilter sample --texture T|PATH --filter F --lookups IN.csv "
-                               "[--resource K] [--stochastic white|blue [--accumulate N]] [--backend vulkan|reference] [--stats] [--spirv FILE.spv] "
+                               "[--resource K] [--stochastic white|blue [--accumulate N]] [--backend vulkan|reference|oiio] [--stats] "
+                               "[--spirv FILE.spv] [--oiio-interp I] "
                                "-o OUT.csv",
                                specs)
                        .c_str(),
@@ -93,9 +96,12 @@ int run_sample(const std::vector<std::string>& argv)
     if (options.filter == Filter::ground_truth)
         throw Error("bad value for --filter: ground-truth integrates over a scene's pixels, not around a lookup "
                     "(use render)");
+    Backend backend = backend_from(args, true);
+    if (backend == Backend::oiio)
+        return run_sample_oiio(args, options);
+    check_oiio_interp_unused(args);
     const ResourceOptions resource = resource_options_from(args);
     check_resource_options(options, resource); // what the kind cannot run, before any work
-    Backend backend = backend_from(args);
     TextureSource source = texture_source_from(args);
     check_format_filter(source.format, options); // integer data and hardware filtering, before any work
     // The other resource kinds upload their images as RGBA32F (layers, bindless elements) or D32_SFLOAT

@@ -68,7 +68,9 @@ std::vector<FlagSpec> sampler_flags(SamplerFlags which)
     flags.insert(flags.end(), {{"--lod-bias", "B", "added to the LOD (default 0)"},
                                {"--lod-min", "L", "lowest LOD used (default 0)"},
                                {"--lod-max", "L", "highest LOD used (default: the last level)"},
-                               {"--backend", "B", "vulkan (default) or reference (the CPU reference)"}});
+                               {"--backend", "B", scenes ? "vulkan (default) or reference (the CPU reference)"
+                                                         : "vulkan (default), reference (the CPU reference) or oiio "
+                                                           "(OpenImageIO's TextureSystem: --filter trilinear or aniso)"}});
     return flags;
 }
 
@@ -275,14 +277,16 @@ ContextOptions context_options_from(const Args& args)
     return options;
 }
 
-Backend backend_from(const Args& args)
+Backend backend_from(const Args& args, bool peer)
 {
     std::string name = args.get("--backend", "vulkan");
     if (name == "vulkan")
         return Backend::vulkan;
     if (name == "reference")
         return Backend::reference;
-    throw Error("bad value for --backend: '" + name + "' (expected vulkan or reference)");
+    if (name == "oiio" && peer)
+        return Backend::oiio;
+    throw Error("bad value for --backend: '" + name + "' (expected vulkan" + (peer ? ", reference or oiio)" : " or reference)"));
 }
 
 CommandDevice open_command_device(Backend backend, const Args& args)

@@ -11,7 +11,8 @@
 
 namespace tf {
 
-enum class Backend { vulkan, reference };
+// oiio: OpenImageIO's TextureSystem as a peer (io/oiio_texture.h), `sample` only.
+enum class Backend { vulkan, reference, oiio };
 
 // The texture flags; `default_build` is what --build's help names as the command's default (only `build`
 // defaults to the device's).
@@ -59,7 +60,8 @@ ContextOptions context_options_from(const Args& args);
 // --env is read on the environment scenes only: throws naming `where` ("--scene plane") when none of `scenes`
 // is one.
 void check_env_flag(const Args& args, const std::vector<SceneKind>& scenes, const std::string& where);
-Backend backend_from(const Args& args);
+// --backend; oiio only where `peer` (sample), else refused as an unknown value.
+Backend backend_from(const Args& args, bool peer = false);
 
 // parse(value of flag), with the flag's name put in front of any error ("bad value for --filter: ...").
 template <typename Parse>

@@ -10,8 +10,6 @@
 
 #include <cctype>
 #include <filesystem>
-#include <functional>
-#include <new>
 #include <string>
 #include <system_error>
 
@@ -24,41 +22,11 @@ static_assert(int(ColorSpace::automatic) == TF_OIIO_AUTOMATIC && int(ColorSpace:
               int(ColorSpace::linear) == TF_OIIO_LINEAR);
 static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
 
-// One call into the module: its error message, and where decoded texels go.
-struct Call {
-    std::string message;        // the module's (or the destination's) tf::Error text
-    std::function<glm::vec4*(int width, int height)> destination; // throws tf::Error to refuse
-    tf_oiio_call c{this, &Call::fail, &Call::texels};
-
-    Call() = default;
-    Call(const Call&) = delete; // c points at this object
-    Call& operator=(const Call&) = delete;
-
-    static void fail(void* self, const char* message) { static_cast<Call*>(self)->message = message; }
-
-    // No exception may cross into the module: a refusal or an allocation failure is kept here, null returned.
-    static float* texels(void* self, int width, int height) {
-        Call& call = *static_cast<Call*>(self);
-        try {
-            return reinterpret_cast<float*>(call.destination(width, height));
-        } catch (const std::bad_alloc&) {
-            call.message = "out of memory for " + std::to_string(width) + "x" + std::to_string(height) + " pixels";
-        } catch (const std::exception& e) {
-            call.message = e.what();
-        }
-        return nullptr;
-    }
-
-    void check(int ok) const {
-        if (!ok) throw Error(message.empty() ? std::string("image I/O module failed without a message") : message);
-    }
-};
-
 // read_rgba into a new Image.
 Image read_rgba_image(const std::string& path, int max_dimension, bool raw, ColorSpace space) {
     const tf_oiio_api& api = image_io_module();
     Image image;
-    Call call;
+    ModuleCall call;
     call.destination = [&](int width, int height) {
         image = make_image(width, height);
         return image.texels.data();
@@ -82,7 +50,7 @@ void load_image_io() { image_io_module(); }
 ImageHeader read_image_header(const std::string& path, int max_dimension) {
     if (is_pfm_file(path)) return read_pfm_image_header(path, max_dimension); // built in: io/pfm_image.h
     const tf_oiio_api& api = image_io_module();
-    Call call;
+    ModuleCall call;
     tf_oiio_header header{};
     call.check(api.read_header(path.c_str(), max_dimension, &header, &call.c));
     return {header.width, header.height, header.channels};
@@ -97,7 +65,7 @@ void read_image_into(const std::string& path, ColorSpace space, int max_dimensio
                      glm::vec4* texels) {
     if (is_pfm_file(path)) return read_pfm_image_into(path, max_dimension, width, height, texels);
     const tf_oiio_api& api = image_io_module();
-    Call call;
+    ModuleCall call;
     call.destination = [&](int w, int h) {
         if (w != width || h != height) // the file changed since its header was read
             throw Error(path + ": now " + std::to_string(w) + "x" + std::to_string(h) + ", was " +
@@ -125,7 +93,7 @@ void write_image(const std::string& path, const Image& image) {
     const tf_oiio_api& api = image_io_module();
 
     write_output(path, [&](int fd) {
-        Call call;
+        ModuleCall call;
         call.check(api.write_rgba(path.c_str(), fd, png, image.width, image.height,
                                   reinterpret_cast<const float*>(image.texels.data()), &call.c));
     });
