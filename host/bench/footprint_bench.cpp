@@ -123,6 +123,8 @@ std::vector<FootprintRow> pooled_rows(const std::vector<TextureRows>& photos)
         for (const TextureRows& t : photos) {
             error.add(t.errors[r]);
             floor.add(t.floors[r]);
+            if (t.rows[r].lookups == 0) // its work is NaN: no lookup to count
+                continue;
             lookups += t.rows[r].lookups;
             fetches += t.rows[r].fetches * t.rows[r].lookups;
             hw += t.rows[r].hw_lookups * t.rows[r].lookups;
@@ -163,8 +165,8 @@ std::vector<FootprintLookup> footprint_lookups(int width, int height, const Foot
         const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
         const double j00 = ct * l.major * cp + st * minor * sp, j01 = ct * l.major * sp - st * minor * cp;
         const double j10 = st * l.major * cp - ct * minor * sp, j11 = st * l.major * sp + ct * minor * cp;
-        l.lookup = {as_float(draw(k, 0)),     as_float(draw(k, 1)),      as_float(j00 / width),
-                    as_float(j10 / height),   as_float(j01 / width),     as_float(j11 / height)};
+        l.lookup = {as_float(draw(k, 0)),  as_float(draw(k, 1)),  as_float(j00 / width),
+                    as_float(j10 / height), as_float(j01 / width), as_float(j11 / height)};
         l.truth_side = std::clamp(int(std::ceil(4.0 * l.major)), sampling.min_side, sampling.max_side);
     }
     return lookups;
