@@ -89,12 +89,14 @@ def figure(bench, axis, path):
             ax.set_xticklabels(buckets, fontsize=8)
             ax.grid(True, alpha=0.3)
     for ci in range(len(truths)):
-        axes[-1][ci].set_xlabel("major axis (level-0 texels)" if axis == "major" else "anisotropy")
+        axes[-1][ci].set_xlabel(AXIS_TITLES[axis])
     handles, names = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, names, loc="upper right", fontsize=8)
+    height = 3.6 * len(textures)
+    top = 1.0 - 1.1 / height  # the title and a legend of two rows above the panels, whatever the figure's height
+    fig.legend(handles, names, loc="upper center", bbox_to_anchor=(0.5, 1.0 - 0.35 / height), ncol=5, fontsize=8)
     fig.suptitle(f"texfilter bench --footprints: PSNR by {AXIS_TITLES[axis]}"
-                 f" ({bench.get('device', '')}, {bench.get('date', '')})")
-    fig.tight_layout(rect=(0, 0, 0.86, 0.97))
+                 f" ({bench.get('device', '')}, {bench.get('date', '')})", y=1.0 - 0.08 / height)
+    fig.tight_layout(rect=(0, 0, 1, top))
     fig.savefig(path, dpi=100)
     plt.close(fig)
 
