@@ -3,6 +3,7 @@
 #include "bench/ewa_sweep.h"
 #include "bench/stochastic_bench.h"
 #include "core/analytic_texture.h"
+#include "core/diff.h"
 #include "vulkan/render_pipeline.h"
 #include "texture/error.h"
 #include "vulkan/render.h"
@@ -177,13 +178,51 @@ std::vector<BenchFilter> bench_filters()
 
 namespace {
 
-// The frame times of a scene's baseline (result 0) and of each filter (result i + 1), taken in turn. All of them
+void print_yardsticks(const BenchRun& run, SceneKind kind)
+{
+    if (!run.minimal.count(kind))
+        return;
+    const double lean = run.minimal.at(kind).median;
+    std::printf("%-9s no-texture frame %8.3f ms  x%5.2f the minimal pass (%.3f ms)", to_string(kind).c_str(),
+                run.baseline.at(kind).median, run.baseline.at(kind).median / lean, lean);
+    if (run.minimal_trilinear.count(kind))
+        std::printf("  minimal trilinear %.3f ms", run.minimal_trilinear.at(kind).median);
+    std::printf("\n");
+}
+
+// The yardsticks a run times beside its baseline: in the compute stage the minimal pass, and with a float texture
+// that is square and a power of two (what its mask repeat assumes) the minimal trilinear pass too.
+std::vector<MinimalPass> minimal_passes(const BenchConfig& config, const GpuTexture& texture, int texture_width,
+                                        int texture_height)
+{
+    if (config.stage != Stage::compute)
+        return {};
+    const bool power_of_two = texture_width == texture_height && (texture_width & (texture_width - 1)) == 0;
+    if (format_info(texture.format).integer || !power_of_two)
+        return {MinimalPass::no_texture};
+    return {MinimalPass::no_texture, MinimalPass::trilinear};
+}
+
+double minimal_trilinear_difference(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
+                                    const RenderOptions& render, RenderPipelineCache& pipelines, const Image& trilinear)
+{
+    RenderOptions lean = render;
+    lean.minimal = MinimalPass::trilinear;
+    SamplerOptions none;
+    none.filter = Filter::none;
+    const Image frame = render_frame(*create_renderer(context, texture, scene, none, lean, &pipelines), scene);
+    return diff_images(frame, trilinear, DiffThresholds{}).max_error;
+}
+
+// The frame times of a scene's baseline (result 0), of each filter (result i + 1) and of each minimal pass
+// (result filters + 1 + k), taken in turn. All of them
 // alive at once would hold every renderer's targets (~32 bytes a pixel each: at 4096x4096, 0.5 GiB a filter), so
 // at most 1 GiB of them is: a large image times the filters in groups, each group in turn with the baseline,
 // whose times from every group are pooled.
 std::vector<std::vector<double>> time_scene_filters(const VulkanContext& context, const GpuTexture& texture,
                                                     const SceneParams& scene, const RenderOptions& render,
-                                                    const BenchConfig& config, RenderPipelineCache& pipelines)
+                                                    const BenchConfig& config, RenderPipelineCache& pipelines,
+                                                    const std::vector<MinimalPass>& minimal)
 {
     const size_t filters = config.filters.size();
     const size_t per_renderer = size_t(config.width) * size_t(config.height) * 32;
@@ -191,21 +230,36 @@ std::vector<std::vector<double>> time_scene_filters(const VulkanContext& context
     SamplerOptions none;
     none.filter = Filter::none;
     const std::unique_ptr<GpuRenderer> baseline = create_renderer(context, texture, scene, none, render, &pipelines);
-    std::vector<std::vector<double>> times(filters + 1);
-    for (size_t begin = 0; begin < filters; begin += group) {
+    std::vector<std::unique_ptr<GpuRenderer>> yardsticks;
+    for (MinimalPass pass : minimal) {
+        RenderOptions lean = render;
+        lean.minimal = pass;
+        yardsticks.push_back(create_renderer(context, texture, scene, none, lean, &pipelines));
+    }
+    std::vector<std::vector<double>> times(filters + 1 + minimal.size());
+    // The yardsticks are timed with each group, as the baseline, and their times pooled the same way.
+    auto time_group = [&](size_t begin, size_t end) {
         std::vector<std::unique_ptr<GpuRenderer>> renderers;
         std::vector<GpuRenderer*> timed = {baseline.get()};
-        for (size_t i = begin; i < std::min(begin + group, filters); ++i) {
+        for (size_t i = begin; i < end; ++i) {
             renderers.push_back(create_renderer(context, texture, scene, config.filters[i].options, render, &pipelines));
             timed.push_back(renderers.back().get());
         }
+        for (const auto& y : yardsticks)
+            timed.push_back(y.get());
         const std::vector<std::vector<double>> t = time_frames_interleaved(timed, config.warmup, config.frames, config.timer);
         times[0].insert(times[0].end(), t[0].begin(), t[0].end());
-        for (size_t k = 1; k < t.size(); ++k)
+        for (size_t k = 1; k <= end - begin; ++k)
             times[begin + k] = t[k];
-    }
+        for (size_t k = 0; k < yardsticks.size(); ++k) {
+            const std::vector<double>& y = t[1 + end - begin + k];
+            times[filters + 1 + k].insert(times[filters + 1 + k].end(), y.begin(), y.end());
+        }
+    };
+    for (size_t begin = 0; begin < filters; begin += group)
+        time_group(begin, std::min(begin + group, filters));
     if (filters == 0)
-        times[0] = time_frames(*baseline, config.warmup, config.frames, config.timer);
+        time_group(0, 0);
     return times;
 }
 
@@ -248,8 +302,15 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
             RenderPipelineCache pipelines;
             RenderOptions timed = render;
             timed.lookups = config.lookups_per_pixel;
-            const std::vector<std::vector<double>> times = time_scene_filters(context, texture, scene, timed, config, pipelines);
+            const std::vector<MinimalPass> minimal =
+                minimal_passes(config, texture, run.texture_width, run.texture_height);
+            const std::vector<std::vector<double>> times =
+                time_scene_filters(context, texture, scene, timed, config, pipelines, minimal);
             run.baseline[kind] = summarize_times(times[0]);
+            for (size_t k = 0; k < minimal.size(); ++k)
+                (minimal[k] == MinimalPass::no_texture ? run.minimal : run.minimal_trilinear)[kind] =
+                    summarize_times(times[config.filters.size() + 1 + k]);
+            print_yardsticks(run, kind);
 
             std::vector<Lookup> lookups;
             for (const PixelLookup& p : reference_lookups(scene, Gradients::fine, render.rasterize))
@@ -275,6 +336,9 @@ BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, cons
                     r.rmse_analytic = display_rmse(frames[0], truths.analytic[0]);
                     r.flicker_analytic = display_flicker(frames, truths.analytic);
                 }
+                if (filter.label == "trilinear" && run.minimal_trilinear.count(kind))
+                    run.minimal_trilinear_difference[kind] =
+                        minimal_trilinear_difference(context, texture, scene, render, pipelines, frames[0]);
                 r.image = image_path(kind, filter.label);
                 write_pfm((fs::path(directory) / r.image).string(), frames[0]);
                 count_fetches(context, texture, lookups, filter.options, r);

@@ -96,6 +96,13 @@ struct BenchRun {
     BenchConfig config;
     int texture_width = 0, texture_height = 0; // level 0 of the texture benchmarked (procedural or file)
     std::map<SceneKind, TimeSummary> baseline;
+    // The compute stage's yardsticks, timed in turn with the baseline (shaders/harness/minimal.glsl): the
+    // minimal pass, and it with a minimal manual trilinear lookup (float formats, square power-of-two textures).
+    std::map<SceneKind, TimeSummary> minimal, minimal_trilinear;
+    // Where trilinear ran too: the largest channel difference between its frame and the minimal trilinear
+    // pass's (the yardstick reads the same texels with the same weights, so this is float rounding, except at a
+    // periodic scene's seam, where the minimal pass's one gradient pass jumps).
+    std::map<SceneKind, double> minimal_trilinear_difference;
     std::map<SceneKind, std::string> truth_box, truth_gaussian; // frame-0 images, relative paths
     std::map<SceneKind, std::string> truth_analytic; // the 2D scenes, when the texture has an analytic definition
     std::vector<BenchResult> results;

@@ -87,6 +87,14 @@ std::string bench_json(const BenchRun& run)
          goals = Json::array();
     for (const auto& [scene, t] : run.baseline)
         baseline[to_string(scene)] = times(t);
+    Json minimal = Json::object(), minimal_trilinear = Json::object();
+    for (const auto& [scene, t] : run.minimal)
+        minimal[to_string(scene)] = times(t);
+    for (const auto& [scene, t] : run.minimal_trilinear)
+        minimal_trilinear[to_string(scene)] = times(t);
+    Json minimal_difference = Json::object();
+    for (const auto& [scene, d] : run.minimal_trilinear_difference)
+        minimal_difference[to_string(scene)] = d;
     for (SceneKind scene : run.config.scenes)
         if (run.truth_box.count(scene)) {
             truth[to_string(scene)] = {{"box", Json::array({run.truth_box.at(scene)})},
@@ -123,6 +131,9 @@ std::string bench_json(const BenchRun& run)
                 {"date", run.date},
                 {"config", config_json(run)},
                 {"baseline_ms", baseline},
+                {"minimal_ms", minimal},
+                {"minimal_trilinear_ms", minimal_trilinear},
+                {"minimal_trilinear_vs_trilinear", minimal_difference},
                 {"truth", truth},
                 {"results", results},
                 {"sat_sweep", sweep},

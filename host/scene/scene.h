@@ -54,12 +54,17 @@ std::string to_string(DebugView view);
 // tf::Error naming the pair.
 void check_view(Filter filter, DebugView view);
 
+// The bench's yardstick (shaders/harness/minimal.glsl): the scene's ray cast, its gradients and one store, with
+// nothing else (no_texture) or with the least a manual trilinear lookup needs (trilinear).
+enum class MinimalPass { none, no_texture, trilinear };
+
 struct RenderOptions {
     Stage stage = Stage::fragment;
     Gradients gradients = Gradients::fine;
     bool rasterize = false; // the mesh scene: triangles through the raster pipeline
     DebugView view = DebugView::color;
     int lookups = 1; // lookups a pixel, their mean shown (bench --lookups-per-pixel: timing only)
+    MinimalPass minimal = MinimalPass::none; // bench, compute only: its minimal pass instead of the harness
 };
 
 // The render options a scene allows: mesh is rasterized (fragment stage, quad derivatives only);

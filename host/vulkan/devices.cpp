@@ -108,7 +108,9 @@ std::vector<DeviceInfo> list_devices(VkInstance instance)
         d.subgroup_size = subgroup.subgroupSize;
         bool quad = (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_QUAD_BIT) != 0;
         d.quad_ops_fragment = quad && (subgroup.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT);
-        d.quad_ops_compute = quad && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
+        // The compute render also votes (subgroupAny: whether a subgroup's quads must share a missed lane's uv).
+        const bool vote = (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_VOTE_BIT) != 0;
+        d.quad_ops_compute = quad && vote && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
         d.sampler_anisotropy = features.samplerAnisotropy == VK_TRUE;
         d.shader_float64 = features.shaderFloat64 == VK_TRUE;
         d.storage_image_extended_formats = features.shaderStorageImageExtendedFormats == VK_TRUE;

@@ -2,6 +2,8 @@
 
 #include "mesh_frag.h"
 #include "mesh_vert.h"
+#include "minimal_comp.h"
+#include "minimal_trilinear_comp.h"
 #include "render_comp.h"
 #include "render_frag.h"
 #include "render_vert.h"
@@ -20,6 +22,8 @@ ShaderCode harness_shader(HarnessShader shader, TextureFormat format)
     case HarnessShader::mesh_vert: return {mesh_vert, sizeof(mesh_vert)};
     case HarnessShader::mesh_frag: return {mesh_frag, sizeof(mesh_frag)};
     case HarnessShader::sample_comp: return {sample_comp, sizeof(sample_comp)};
+    case HarnessShader::minimal_comp: return {minimal_comp, sizeof(minimal_comp)};
+    case HarnessShader::minimal_trilinear_comp: return {minimal_trilinear_comp, sizeof(minimal_trilinear_comp)};
     }
     return {sample_comp, sizeof(sample_comp)};
 }

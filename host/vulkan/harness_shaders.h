@@ -7,7 +7,8 @@
 
 namespace tf {
 
-enum class HarnessShader { render_vert, render_frag, render_comp, mesh_vert, mesh_frag, sample_comp };
+enum class HarnessShader { render_vert, render_frag, render_comp, mesh_vert, mesh_frag, sample_comp,
+                           minimal_comp, minimal_trilinear_comp }; // the last two: the bench's minimal pass
 
 ShaderCode harness_shader(HarnessShader shader, TextureFormat format);
 

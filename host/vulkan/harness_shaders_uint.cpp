@@ -1,6 +1,7 @@
 // The HARNESS_RESOURCE_UINT build of the harness shaders (generated/harness_uint/, on this object
 // library's include path only).
 #include "vulkan/harness_shaders.h"
+#include "texture/error.h"
 
 #include "mesh_frag.h"
 #include "render_comp.h"
@@ -18,6 +19,10 @@ ShaderCode harness_shader_uint(HarnessShader shader)
     case HarnessShader::sample_comp: return {sample_comp, sizeof(sample_comp)};
     case HarnessShader::render_vert: // the vertex stages read no texture: one build serves every binding
     case HarnessShader::mesh_vert:
+    case HarnessShader::minimal_comp:
+        break;
+    case HarnessShader::minimal_trilinear_comp: // reads a float sampler2D: the bench runs it on float formats only
+        throw Error("the minimal trilinear pass reads a float texture, not an integer one");
         break;
     }
     return harness_shader(shader, TextureFormat::rgba32f);

@@ -6,6 +6,7 @@
 // code of one filter only and a frame runs only what it shows.
 #include "core/filter.h"
 #include "harness/config.h"
+#include "scene/scene.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
 #include <array>
@@ -25,6 +26,7 @@ struct FilterVariant {
     int gradients = HARNESS_GRADIENTS_FINE;  // render --derivatives: HARNESS_GRADIENTS_* (tf::Gradients)
     int lookups = 1;                         // lookups a pixel (bench --lookups-per-pixel)
     int scene = -1;                          // render: the ray-cast scene's kind (HARNESS_SCENE_*); -1: any
+    MinimalPass minimal = MinimalPass::none; // compute render: the bench's minimal pass instead (scene/scene.h)
     FilterVariant(Filter f) : filter(f) {} // NOLINT: implicit, most pipelines vary by filter alone
     FilterVariant(Filter f, Reconstruction m, bool s = false) : filter(f), magnify(m), stochastic(s) {}
     bool operator==(const FilterVariant&) const = default;

@@ -31,6 +31,7 @@ FilterVariant render_variant(const SamplerOptions& options, const RenderOptions&
     variant.view = int(render.view); // shader_interface.h checks the values
     variant.gradients = int(render.gradients);
     variant.lookups = render.lookups;
+    variant.minimal = render.minimal;
     return variant;
 }
 

@@ -25,9 +25,14 @@ VkPipeline create_render_pipeline(const VulkanContext& context, RenderKind kind,
                                   FilterVariant filter, uint32_t width, uint32_t height, Cleanup& cleanup,
                                   TextureFormat format)
 {
-    if (kind == RenderKind::compute)
-        return create_compute_pipeline(context, harness_shader(HarnessShader::render_comp, format), layout, filter,
-                                       cleanup);
+    if (filter.minimal != MinimalPass::none && kind != RenderKind::compute)
+        throw Error("the bench's minimal pass is a compute shader: it needs --stage compute");
+    if (kind == RenderKind::compute) {
+        const HarnessShader shader = filter.minimal == MinimalPass::no_texture  ? HarnessShader::minimal_comp
+                                     : filter.minimal == MinimalPass::trilinear ? HarnessShader::minimal_trilinear_comp
+                                                                                : HarnessShader::render_comp;
+        return create_compute_pipeline(context, harness_shader(shader, format), layout, filter, cleanup);
+    }
 
     GraphicsPipelineDesc desc;
     desc.color_format = render_color_format;

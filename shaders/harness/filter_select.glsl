@@ -224,6 +224,13 @@ vec4 harness_filter_stochastic(vec2 uv, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, bo
     }
 }
 
+// The frame's lookups go through the hardware sampler (hw-*, or a filter's --taps hardware): uniform.
+bool harness_hardware_lookups()
+{
+    return (FILTER_ID >= HARNESS_FILTER_HW_NEAREST && FILTER_ID <= HARNESS_FILTER_HW_ANISO) ||
+           (FILTER_ID != HARNESS_FILTER_NONE && pc.taps == TF_TAPS_HARDWARE);
+}
+
 vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
 {
     tf_Sampler s = tf_Sampler(pc.wrapMode, pc.lodBias, pc.lodMin, pc.lodMax);

@@ -22,7 +22,9 @@ tf_Gradients cone_gradients(SceneParams scene, vec2 pixelCentre, Hit h)
 
 // The uv axes that wrap with period 1, from the scene description: the tunnel's u (p0.z whole turns of the
 // texture around the axis). Quad differences there take Tarini's seam-free form.
-bvec2 scene_periodic_axes(SceneParams scene) { return bvec2(scene.kindSize.x == HARNESS_SCENE_CYLINDER, false); }
+// A constant where the pipeline is specialised to the scene (scene_kind): then a plane's frame holds no second
+// gradient pass, its result unused.
+bvec2 scene_periodic_axes(SceneParams scene) { return bvec2(scene_kind(scene) == HARNESS_SCENE_CYLINDER, false); }
 
 // The second quantity Tarini's selection differences: uv shifted by half a period, then wrapped.
 vec2 half_period_shift(vec2 uv) { return fract(uv + 0.5); }

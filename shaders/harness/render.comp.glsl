@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_KHR_shader_subgroup_quad : require
+#extension GL_KHR_shader_subgroup_vote : require
 // Harness: the fragment render in a compute shader. Invocations form 2x2 quads through subgroup quad
 // operations (texfilter/derivatives.glsl), so the quad derivatives are the fragment stage's.
 #define TF_COMPUTE_QUADS
@@ -34,8 +35,12 @@ void main()
                      : GRADIENTS_ID == HARNESS_GRADIENTS_CONE ? cone_gradients(scene, centre, h)
                                                               : quad;
     vec3 q = uv_or_none(h);
-    [[unroll]] for (int step = 0; step < 2; ++step)
-        q = adopt_uv(q, subgroupQuadSwapHorizontal(q), subgroupQuadSwapVertical(q));
+    // Only the hardware sampler needs a missed lane's uv from a neighbour (gradients.glsl): a manual filter's
+    // missed lane reads uv 0.5 at the coarsest level. The test is uniform in the subgroup, so whole quads swap;
+    // where every lane hit, none is needed. The no-texture frame (the bench's baseline) adopts nothing.
+    if (harness_hardware_lookups() && subgroupAny(!h.hit))
+        [[unroll]] for (int step = 0; step < 2; ++step)
+            q = adopt_uv(q, subgroupQuadSwapHorizontal(q), subgroupQuadSwapVertical(q));
     PixelLookup l = pixel_lookup(h, g, q);
     harnessPixel = pixel;
     vec4 color = harness_shade(l.uv, l.dUVdx, l.dUVdy);

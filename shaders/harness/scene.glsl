@@ -117,10 +117,12 @@ Hit hit_triangles(SceneParams scene, vec3 o, vec3 d)
 // twice as long (lavapipe, compute, 512²: 3.2 ms against 1.6-1.7 ms), the other casts' code in it.
 layout(constant_id = HARNESS_SPEC_SCENE) const int SCENE_ID = -1;
 
+int scene_kind(SceneParams scene) { return SCENE_ID >= 0 ? SCENE_ID : scene.kindSize.x; }
+
 Hit scene_hit(SceneParams scene, vec2 pixelCentre)
 {
     vec3 d = camera_ray(scene, pixelCentre);
-    int kind = SCENE_ID >= 0 ? SCENE_ID : scene.kindSize.x;
+    int kind = scene_kind(scene);
     if (kind == HARNESS_SCENE_CYLINDER)
         return hit_cylinder(scene, scene.origin.xyz, d);
     if (kind == HARNESS_SCENE_TRIANGLES)
