@@ -574,6 +574,10 @@ footprint_bench_errors() {
     echo P3 >photo.ppm && printf '2 2\n255\n0 0 0 0 0 0 0 0 0 0 0 0\n' >>photo.ppm
     expect_error "bench --footprints --texture-size with files only" "--texture-size is not read by --textures" fp-out -- \
         "${fp[@]}" --textures photo.ppm --texture-size 64 --out fp-out
+    expect_error "bench --footprints --format bogus" "unknown texture format 'bogus'" fp-out -- \
+        "${fp[@]}" --format bogus --out fp-out
+    expect_error "bench --footprints --format r32ui with hw-trilinear" "--format r32ui holds integer data" fp-out -- \
+        "${fp[@]}" --format r32ui --filters ewa,hw-trilinear --out fp-out
     expect_error "bench --footprints --texture" "bench --footprints does not take --texture" fp-out -- \
         "${fp[@]}" --texture checker --out fp-out
     expect_error "bench --footprints --scenes" "bench --footprints does not take --scenes" fp-out -- \

@@ -188,7 +188,7 @@ glm::dvec4 footprint_truth(const Image& level0, const Lookup& lookup, PixelFilte
 
 std::vector<FootprintAnswers> run_footprint_filters(const VulkanContext* context, const std::string& name,
                                                     const MipChain& chain, const std::vector<FootprintFilter>& filters,
-                                                    const std::vector<Lookup>& lookups)
+                                                    const std::vector<Lookup>& lookups, TextureFormat format)
 {
     const bool device = std::any_of(filters.begin(), filters.end(), [](const FootprintFilter& f) { return f.device; });
     const bool sat = std::any_of(filters.begin(), filters.end(), [](const FootprintFilter& f) { return f.sat; });
@@ -209,7 +209,7 @@ std::vector<FootprintAnswers> run_footprint_filters(const VulkanContext* context
         return run(nullptr);
     if (!context)
         throw Error("bench --footprints: a device filter was chosen but no device is open");
-    return with_texture(*context, chain, sat, [&](const GpuTexture& gpu) { return run(&gpu); });
+    return with_texture(*context, chain, sat, format, [&](const GpuTexture& gpu) { return run(&gpu); });
 }
 
 TextureSource footprint_source(const FootprintConfig& config, const std::string& name)
@@ -217,6 +217,7 @@ TextureSource footprint_source(const FootprintConfig& config, const std::string&
     TextureSource source;
     source.name_or_path = name;
     source.procedural_size = config.texture_size;
+    source.format = config.format;
     return source;
 }
 
@@ -273,7 +274,7 @@ FootprintRun run_footprint_bench(const VulkanContext* context, const FootprintCo
         });
         const double truth_seconds = seconds_since(start);
         start = Clock::now();
-        const std::vector<FootprintAnswers> answers = run_footprint_filters(context, name, chain, config.filters, plain);
+        const std::vector<FootprintAnswers> answers = run_footprint_filters(context, name, chain, config.filters, plain, config.format);
         const double filter_seconds = seconds_since(start);
         run.truth_seconds += truth_seconds;
         run.filter_seconds += filter_seconds;
@@ -329,6 +330,7 @@ std::string footprint_json(const FootprintRun& run)
                   {"truth_min_side", s.min_side},
                   {"truth_max_side", s.max_side},
                   {"texture_size", run.config.texture_size},
+                  {"format", to_string(run.config.format)},
                   {"textures", textures},
                   {"labels", labels},
                   {"buckets", buckets}}},

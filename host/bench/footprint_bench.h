@@ -48,6 +48,7 @@ struct FootprintFilter {
     bool device = false; // runs on the Vulkan device (the texture is uploaded for it)
     bool sat = false;    // reads the summed-area table (the upload builds it)
     EvaluateLookups evaluate;
+    SamplerOptions options; // device filters: what the sample pass runs (checked against the texture's format)
 };
 
 // Every filter bench --footprints knows: the scene bench's labels on the device (bench_filters()), and host
@@ -81,11 +82,12 @@ glm::dvec4 footprint_truth(const Image& level0, const Lookup& lookup, PixelFilte
                            uint32_t stream, Wrap wrap);
 
 // Every filter on one texture (uploaded to the device first, with its summed-area table where a filter reads it,
-// when a filter runs there): one answer a filter, each checked to answer every lookup. context: null when none
+// when a filter runs there, as `format`: the chain as load_texture rounded it): one answer a filter, each checked to answer every lookup. context: null when none
 // of the filters runs on the device.
 std::vector<FootprintAnswers> run_footprint_filters(const VulkanContext* context, const std::string& name,
                                                     const MipChain& chain, const std::vector<FootprintFilter>& filters,
-                                                    const std::vector<Lookup>& lookups);
+                                                    const std::vector<Lookup>& lookups,
+                                                    TextureFormat format = TextureFormat::rgba32f);
 
 // Buckets: by major axis (<1, 1-2, ..., 128-256 texels), by anisotropy (1-2, ..., 8-16, >16), and by major axis
 // among the near-isotropic footprints alone (anisotropy below 2: "major-isotropic").
@@ -101,6 +103,7 @@ struct FootprintConfig {
     bool quick = false;
     std::vector<std::string> textures; // procedural names or image paths
     int texture_size = 512;            // procedural textures' side
+    TextureFormat format = TextureFormat::rgba32f; // what the textures are uploaded as (and rounded to, for the truths)
     FootprintSampling sampling;
     std::vector<FootprintFilter> filters;
 };

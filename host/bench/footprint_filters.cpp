@@ -24,7 +24,8 @@ FootprintFilter on_device(const std::string& label, const SamplerOptions& option
                     gpu_sample(*texture.context, *texture.gpu, lookups, options, &answers.stats);
                 answers.colors.assign(colors.begin(), colors.end());
                 return answers;
-            }};
+            },
+            options};
 }
 
 // A host filter of one lookup, run on every core (no work counted).

@@ -107,8 +107,8 @@ std::string new_out_directory(const Args& args)
 int run_footprints(const Args& args, const std::vector<std::string>& argv)
 {
     check_mode_flags(args, "--footprints",
-                     {"--out", "--quick", "--textures", "--filters", "--texture-size", "--lookups", "--device",
-                      "--validate"});
+                     {"--out", "--quick", "--textures", "--filters", "--texture-size", "--lookups", "--format",
+                      "--device", "--validate"});
     FootprintConfig config;
     config.quick = args.has("--quick");
     config.textures = list_flag(args, "--textures", "checker,zoneplate", "procedural names or image paths");
@@ -126,6 +126,10 @@ int run_footprints(const Args& args, const std::vector<std::string>& argv)
                                                 ? list_flag(args, "--filters", "", "filter labels")
                                                 : default_footprint_labels();
     config.filters = select_footprint_filters(labels);
+    config.format = parse_flag(args, "--format", "rgba32f", parse_texture_format);
+    for (const FootprintFilter& f : config.filters) // integer data and hardware filtering, before any work
+        if (f.device)
+            check_format_filter(config.format, f.options);
     const bool device = std::any_of(config.filters.begin(), config.filters.end(),
                                     [](const FootprintFilter& f) { return f.device; });
     const fs::path out = new_out_directory(args);
@@ -133,6 +137,9 @@ int run_footprints(const Args& args, const std::vector<std::string>& argv)
     std::unique_ptr<GpuSession> gpu;
     if (device)
         gpu = std::make_unique<GpuSession>(context_options_from(args));
+    for (const FootprintFilter& f : config.filters)
+        if (gpu && f.device)
+            check_format_support(gpu->context, config.format, f.options);
     const DeviceLimits limits = gpu ? device_limits(gpu->context.info) : DeviceLimits{};
     for (const std::string& name : config.textures) // sizes against the SAT's, the device's and memory limits
         check_texture(footprint_source(config, name), footprint_use(config, gpu ? &limits : nullptr));
