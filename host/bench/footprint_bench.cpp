@@ -321,7 +321,7 @@ std::string footprint_json(const FootprintRun& run)
                 {"kind", "footprints"},
                 {"device", run.device.name},
                 {"device_type", run.device.type},
-                {"driver", run.device.driver_name + " " + run.device.driver_info},
+                {"driver", run.device.name.empty() ? "" : run.device.driver_name + " " + run.device.driver_info},
                 {"date", run.date},
                 {"command", run.command},
                 {"config",

@@ -124,7 +124,7 @@ struct FootprintTextureInfo {
 };
 
 struct FootprintRun {
-    DeviceInfo device; // empty name when no device was opened
+    DeviceInfo device; // empty name when no device was opened (host filters alone)
     std::string date;
     std::string command;
     FootprintConfig config;
