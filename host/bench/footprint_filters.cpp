@@ -3,6 +3,7 @@
 // on_host(function of one lookup) or its own EvaluateLookups (a peer that takes the whole batch at once).
 #include "bench/bench.h"
 #include "bench/footprint_bench.h"
+#include "io/oiio_texture.h"
 #include "reference/reference.h"
 #include "texture/error.h"
 #include "texture/threads.h"
@@ -40,6 +41,19 @@ FootprintFilter on_host(const std::string& label, HostLookup filter)
             }};
 }
 
+// A peer: OpenImageIO's TextureSystem on the texture's level 0 (io/oiio_texture.h; it builds its own levels).
+FootprintFilter oiio_filter(const OiioTextureMode& mode)
+{
+    return {"oiio-" + to_string(mode), false, false,
+            [mode](const FootprintTexture& texture, const std::vector<Lookup>& lookups) {
+                FootprintAnswers answers;
+                const std::vector<glm::vec4> colors =
+                    oiio_texture_lookups(texture.chain->levels[0], lookups, Wrap::repeat, mode);
+                answers.colors.assign(colors.begin(), colors.end());
+                return answers;
+            }};
+}
+
 FootprintFilter reference_filter(const std::string& label, Filter filter)
 {
     SamplerOptions options;
@@ -58,12 +72,20 @@ std::vector<FootprintFilter> footprint_filters()
         filters.push_back(on_device(f.label, f.options));
     // Host filters and peers: one line each.
     filters.push_back(reference_filter("ref-ewa", Filter::ewa)); // the CPU reference's EWA, in double
+    if (oiio_texture_available()) // the lean build has no peer: its labels are then unknown
+        for (const OiioTextureMode& mode : all_oiio_texture_modes())
+            filters.push_back(oiio_filter(mode));
     return filters;
 }
 
 std::vector<std::string> default_footprint_labels()
 {
-    return {"ewa", "ewa-hw", "hw-aniso16", "hw-trilinear", "trilinear", "aniso16", "aniso16-hw", "sat-assembly"};
+    std::vector<std::string> labels = {"ewa",       "ewa-hw",     "hw-aniso16", "hw-trilinear",
+                                       "trilinear", "aniso16",    "aniso16-hw", "sat-assembly"};
+    if (oiio_texture_available()) // OpenImageIO's modes a renderer built on it would use
+        for (const char* mode : {"oiio-trilinear", "oiio-aniso", "oiio-aniso-bicubic", "oiio-aniso-smartbicubic"})
+            labels.push_back(mode);
+    return labels;
 }
 
 std::vector<FootprintFilter> select_footprint_filters(const std::vector<std::string>& labels)

@@ -1,5 +1,6 @@
 #include "bench/bench.h"
 #include "bench/footprint_bench.h"
+#include "io/oiio_texture.h"
 #include "bench/gpu_build_bench.h"
 #include "bench/mip_build_bench.h"
 #include "flags/cli_common.h"
@@ -126,6 +127,8 @@ int run_footprints(const Args& args, const std::vector<std::string>& argv)
                                                 ? list_flag(args, "--filters", "", "filter labels")
                                                 : default_footprint_labels();
     config.filters = select_footprint_filters(labels);
+    if (std::any_of(labels.begin(), labels.end(), [](const std::string& l) { return l.starts_with("oiio-"); }))
+        load_oiio_texture(); // the image I/O module, found before any work
     config.format = parse_flag(args, "--format", "rgba32f", parse_texture_format);
     for (const FootprintFilter& f : config.filters) // integer data and hardware filtering, before any work
         if (f.device)
