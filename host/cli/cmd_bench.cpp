@@ -190,7 +190,7 @@ int run_bench(const std::vector<std::string>& argv)
           {"--lookups-per-pixel", "N", "timed frames: each pixel the mean of N lookups over its footprint, 1..256 "
                                        "(default 1; a GPU's filters above the harness's own cost; images and errors: 1)"},
           {"--stage", "S", "fragment (default) or compute; the mesh scene always rasterizes"},
-          {"--timer", "T", "timestamps (GPU timestamps; default on GPUs) or wall-clock (default on CPU devices)"},
+          {"--timer", "T", "timestamps (GPU timestamps; default on GPUs), wall-clock (default on CPU devices) or cpu-time (the process's CPU time a frame: a CPU device's work, whatever else runs)"},
           {"--mip-build", "", "instead: time the host's MIP build beside memcpy (--texture-size, default 8192; no --out)"},
           {"--repeat", "N", "--mip-build, --gpu-build: runs of each measure, the median reported (default 5, 3)"},
           {"--gpu-build", "", "instead: time the device's MIP and SAT builds beside the host's and beside a copy of "
