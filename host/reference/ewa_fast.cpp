@@ -66,7 +66,10 @@ EwaFastProbes reference_ewa_fast_probes(const MipChain& chain, const SamplerOpti
     v9 /= w9;
     p.triangle = A < row_from * B;
     const double c2 = spacing * spacing;
-    const double target = p.triangle ? A / (1 + 4 * c2 / 6) : std::max(B / (1 + c2), A / (1 + 4 * v9 * c2));
+    // The row's LOD from the triangle's where they meet (A = 1.5 B) down to its own at A = 3 B (continuous).
+    const double meet = std::clamp(2 - A / (row_from * B), 0.0, 1.0);
+    const double target = p.triangle ? A / (1 + 4 * c2 / 6)
+                                     : std::max({B / (1 + c2), A / (1 + 4 * v9 * c2), meet * A / (1 + 4 * c2 / 6)});
     p.lod = clamp_lod(chain, 0.5 * std::log2(target) + options.lod_bias, options);
     const double texel = std::exp2(p.lod), t2 = texel * texel, reach = spacing * texel;
     const double along = std::max(A - t2, 0.0), across = std::max(B - t2, 0.0); // 4 × the variances to carry

@@ -19,8 +19,10 @@
 //            w_t = exp(−t²/(2ρ²)), ρ = h/1.5, V(h) = Σw·t²/Σw (0.394, 1.300, 2.693, 4.577 for h = 1..4),
 //            m = Σw·(−1)^t/Σw: variance Δ²·V(h) along u1, d²·(1 − m²) across (the zigzag), no cross term (the
 //            weights are symmetric); Δ = s1/√V(h) <= c texels (tents one texel apart sum flat: no ripple),
-//            d = s2/√(1 − m²) <= c/2; h = ceil(2·s1/(c·2^λ) − 0.3) <= 4; 4^λ = max(B/(1 + c²), A/(1 + 4·V(4)·c²)):
-//            past what 9 probes reach (about 4.4:1) the LOD rises, so the probes widen instead of leaving gaps.
+//            d = s2/√(1 − m²) <= c/2; h = ceil(2·s1/(c·2^λ) − 0.3) <= 4; 4^λ = max(B/(1 + c²), A/(1 + 4·V(4)·c²),
+//            g·A/(1 + 2c²/3)): past what 9 probes reach (about 4.4:1) the LOD rises, so the probes widen instead of
+//            leaving gaps; g = clamp(2 − A/(ROW_FROM·B), 0, 1) starts the row on the triangle's LOD where the
+//            layouts meet (ROW_FROM = 1.5), so λ is continuous in the footprint.
 //          c = 1 texel. λ + lodBias clamped as tf_lod; a clamp that holds λ lower keeps the spacing at c (the
 //          footprint shrinks: it aliases, like any LOD clamp). So the sum has C's second moments wherever the
 //          clamps allow; one probe where the triangle's (tr √S)² < 1e-6 texels² (a zero footprint).

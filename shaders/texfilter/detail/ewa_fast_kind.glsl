@@ -24,8 +24,12 @@ vec4 tf_ewa_fast(TFI_T, vec2 uv TFI_X, vec2 dUVdx, vec2 dUVdy, tf_Sampler s)
             lambda = tfi_clamp_lod(1.0 / 0.0, s, TFI_A); // σ1 past ~1.8e19 texels: one lookup, the coarsest level
         } else if (shape.m > 0.0) {
             triangle = A < TFI_EWA_FAST_ROW_FROM * B;
+            // The row's LOD starts at the triangle's where the layouts meet (A = ROW_FROM·B) and falls to its own
+            // by A = 2·ROW_FROM·B: no jump of the LOD at the switch.
+            float meet = clamp(2.0 - A / (TFI_EWA_FAST_ROW_FROM * B), 0.0, 1.0);
             float target = triangle ? A / TFI_EWA_FAST_TRIANGLE_REACH
-                                    : max(B / TFI_EWA_FAST_ZIGZAG_REACH, A / TFI_EWA_FAST_ROW_REACH);
+                                    : max(max(B / TFI_EWA_FAST_ZIGZAG_REACH, A / TFI_EWA_FAST_ROW_REACH),
+                                          meet * A / TFI_EWA_FAST_TRIANGLE_REACH);
             lambda = tfi_clamp_lod(0.5 * tfi_log2(target) + s.lodBias, s, TFI_A);
             float texel = exp2(lambda), t2 = texel * texel;
             float reach = TFI_EWA_FAST_SPACING * texel; // the largest spacing
