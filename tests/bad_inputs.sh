@@ -1586,6 +1586,31 @@ for i in range(200000): print('0.5,0.5,0.01,0,0,0.01')" >many.csv
 }
 
 # The groups, in order; ctest runs each as its own entry (bad_inputs.GROUP), listed by --list.
+# ewa-fast: no options of its own (ewa's --alpha, --max-aniso and --taps are refused), and it needs a sampler that
+# filters (no integer formats, no TF_SOURCE kinds) and a 2D texture (no environment-map form); checked before work.
+bad_ewa_fast() {
+    printf '%s\n0.5,0.5,0.01,0,0,0.01\n' "$LOOKUPS_HEADER" >fast.csv
+    local fast=("$TEXFILTER" render --scene slanted --texture checker --filter ewa-fast "${REF[@]}")
+    expect_error "ewa-fast --alpha" "--alpha is not read by --filter ewa-fast (it applies to ewa)" out.png -- \
+        "${fast[@]}" --alpha 2 -o out.png
+    expect_error "ewa-fast --max-aniso" "--max-aniso is not read by --filter ewa-fast (it applies to ewa)" out.png -- \
+        "${fast[@]}" --max-aniso 8 -o out.png
+    expect_error "ewa-fast --taps hardware" "--taps is not read by --filter ewa-fast" out.png -- \
+        "${fast[@]}" --taps hardware -o out.png
+    expect_error "ewa-fast --magnify bspline" "--magnify is not read by --filter ewa-fast" out.png -- \
+        "${fast[@]}" --magnify bspline -o out.png
+    expect_error "ewa-fast --stochastic" "--stochastic is not read by --filter ewa-fast" out.png -- \
+        "${fast[@]}" --stochastic white -o out.png
+    expect_error "ewa-fast --format r32ui" "--format r32ui holds integer data, which no sampler filters: --filter ewa-fast" \
+        out.csv -- "$TEXFILTER" sample --texture checker --filter ewa-fast --format r32ui --lookups fast.csv -o out.csv
+    expect_error "ewa-fast --resource atlas" "--resource atlas cannot run --filter ewa-fast" out.csv -- \
+        "$TEXFILTER" sample --texture checker --filter ewa-fast --resource atlas --lookups fast.csv -o out.csv
+    expect_error "ewa-fast on an environment scene" "--filter ewa-fast has no environment-map form" out.png -- \
+        "$TEXFILTER" render --scene skybox --texture checker --filter ewa-fast "${REF[@]}" -o out.png
+    expect_error "ewa-fast --lod-min above --lod-max" "--lod-min" out.png -- \
+        "${fast[@]}" --lod-min 3 --lod-max 1 -o out.png
+}
+
 CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_resources sample_spirv diff_contract ground_truth_and_bench_errors
     golden_errors vulkan_errors golden_output_directory outputs_and_inputs unwritable_outputs
     signals_remove_temporaries truncated_images memory_budgets lookups_and_texels reproducible_outputs
@@ -1598,6 +1623,7 @@ CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_re
     oiio_peer_refusals
     oiio_peer_temporaries
     footprint_bench_errors
+    bad_ewa_fast
 )
 if [[ ${#SELECTED[@]} -eq 0 ]]; then
     SELECTED=("${CASE_GROUPS[@]}")

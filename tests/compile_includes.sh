@@ -69,6 +69,7 @@ call_for() {
     brilinear) echo "tf_brilinear(tex, uv, dx, dy, s, 0.25)" ;;
     aniso) echo "tf_aniso(tex, uv, dx, dy, s, 8, TF_ANISO_GPU) + tf_aniso_hw(tex, uv, dx, dy, s, 8, TF_ANISO_FELINE)" ;;
     ewa) echo "tf_ewa(tex, uv, dx, dy, s, 2.0, 16.0) + tf_ewa_hw(tex, uv, dx, dy, s, 2.0, 16.0)" ;;
+    ewa_fast) echo "tf_ewa_fast(tex, uv, dx, dy, s)" ;;
     sat) echo "tf_sat(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0)) + tf_sat_assembly(satLow, satHigh, uv, dx, dy, s, vec4(0.0), vec4(1.0), 4)" ;;
     debug) echo "vec4(tf_debug_lod_color(tf_debug_footprint(uv, dx, dy, vec2(textureSize(tex, 0)), textureQueryLevels(tex), s, TF_DEBUG_ANISO, 16, TF_ANISO_GPU, 16.0).lod) + tf_debug_anisotropy_color(tf_debug_anisotropy(dx, dy, vec2(64.0))) + tf_debug_heat(uv.x, 8.0), 1.0) + vec4(tf_debug_aniso_probe(uv, dx, dy, vec2(64.0), 8, TF_ANISO_FELINE, tf_debug_aniso_probe_count(dx, dy, vec2(64.0), 8, TF_ANISO_FELINE) - 1), 0.0, 0.0)" ;;
     cube) echo "tf_trilinear_cube(cube, vec3(uv, 1.0), vec3(dx, 0.0), vec3(dy, 0.0), s) + tf_aniso_cube(cube, vec3(uv, -1.0), vec3(dx, 0.0), vec3(dy, 0.0), s, 8, TF_ANISO_GPU) + tf_ewa_cube_hw(cube, vec3(1.0, uv), vec3(0.0, dx), vec3(0.0, dy), s, 2.0, 16.0) + tf_nearest_cube(cube, vec3(uv, 0.5), s) + tf_nearest_mip_cube(cube, vec3(0.5, uv), vec3(dx, 0.0), vec3(dy, 0.0), s) + tf_bilinear_mip_cube(cube, vec3(uv.x, 1.0, uv.y), vec3(dx, 0.0), vec3(dy, 0.0), s)" ;;

@@ -105,6 +105,7 @@ GROUPS = {
         f"tf_aniso_hw(tex, uv, {D2}, PROBES, TF_ANISO_GPU)", f"tf_aniso_hw(tex, uv, {D2}, PROBES, SHAPE)"]),
     "ewa": dict(include="ewa", calls=[
         f"tf_ewa(tex, uv, {D2}, ALPHA, MAXANISO)", f"tf_ewa_hw(tex, uv, {D2}, ALPHA, MAXANISO)"]),
+    "ewa_fast": dict(include="ewa_fast", calls=[f"tf_ewa_fast(tex, uv, {D2})"]),
     "sat": dict(include="sat", calls=[
         f"tf_sat(satLow, satHigh, uv, {D2}, OFFSET, SCALE)",
         f"tf_sat_assembly(satLow, satHigh, uv, {D2}, OFFSET, SCALE, BOXES)"]),

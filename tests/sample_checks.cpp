@@ -22,7 +22,8 @@
 //   plus one more step as tests/test_hw_vs_manual.cpp allows: 3 2^-s adjacent), a tap's float texel
 //   position (2 2^-14 adjacent, as test_ewa), and for aniso's trilinear probes at an explicit LOD the level
 //   blend quantised to mipmapPrecisionBits (2^-m times the largest difference between two levels' values,
-//   <= 1 for [0, 1] data). adjacent = the largest difference of neighbouring texels on any level. The cubics'
+//   <= 1 for [0, 1] data; for ewa-fast, whose lookups are such probes on one LOD, 2^-m times the lookup's own
+//   difference between its layout on floor(λ) and floor(λ) + 1). adjacent = the largest difference of neighbouring texels on any level. The cubics'
 //   hardware taps (bilinear taps at merged positions, tests/test_bicubic.cpp derives it): each tap's fraction
 //   rounds to a step s = 2^-subTexelPrecisionBits an axis, 2 s times the 4x4 block's range (<= level 0's) times
 //   each axis's sum of |tap weights| at the lookup's fraction (B-spline 1, Catmull-Rom up to 1.25).
@@ -107,12 +108,13 @@ Outcome reference_and_bounds(const Case& c, const std::vector<MipChain>& chains,
     const bool ewa = c.options.filter == Filter::ewa, hardware_taps = c.options.taps == Taps::hardware;
     const double weights = ewa ? 2.5 * (3 + 6 * double(c.options.alpha) * kSupport) : 0.0;
     double sampler = 0;
-    if (hardware_taps && (ewa || c.options.filter == Filter::aniso)) {
+    const bool fast = c.options.filter == Filter::ewa_fast; // hardware trilinear lookups only, as aniso's taps
+    if ((hardware_taps && (ewa || c.options.filter == Filter::aniso)) || fast) {
         sampler = (3 * sub_texel_step() + 2 * std::exp2(-14)) * adjacent_difference(chains, c.options.wrap);
-        if (!ewa)
+        if (!ewa && !fast)
             sampler += mipmap_step(); // the probes' level blend; values in [0, 1]
     }
-    const bool float_taps = ewa || c.options.filter == Filter::aniso;
+    const bool float_taps = ewa || c.options.filter == Filter::aniso || fast;
     const bool cubic = c.options.filter == Filter::bspline || c.options.filter == Filter::catmull_rom;
     const Reconstruction kernel =
         c.options.filter == Filter::bspline ? Reconstruction::bspline : Reconstruction::catmull_rom;
@@ -135,6 +137,12 @@ Outcome reference_and_bounds(const Case& c, const std::vector<MipChain>& chains,
         if (cubic && hardware_taps)
             taps = 2 * sub_texel_step() * cubic_range * tap_weight_sum(double(ls[i].u) * kSize - 0.5) *
                    tap_weight_sum(double(ls[i].v) * kSize - 0.5);
+        if (fast) { // the probes' level blend, 2^-m times this lookup's own difference between its two levels
+            EwaFastProbes lo = reference_ewa_fast_probes(chains.at(0), c.options, ls[i]), hi = lo;
+            lo.lod = std::floor(lo.lod), hi.lod = lo.lod + 1;
+            taps += mipmap_step() * max_channel_diff(reference_ewa_fast_layout(chains[0], c.options, ls[i], lo),
+                                                     reference_ewa_fast_layout(chains[0], c.options, ls[i], hi));
+        }
         o.bound.push_back(spread[i] + (16 + 2 * n + weights) * kUlp + position + taps);
     }
     return o;

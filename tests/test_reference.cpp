@@ -609,8 +609,8 @@ TEST_CASE("names")
     const char* names[] = {"nearest",    "bilinear",    "trilinear",    "nearest-mip", "bilinear-mip",
                            "hw-nearest", "hw-bilinear", "hw-trilinear", "hw-aniso",    "brilinear",
                            "aniso",      "ewa",         "sat",          "sat-assembly", "bspline",
-                           "catmull-rom"};
-    CHECK_EQ(int(tf::all_filters().size()), 16);
+                           "catmull-rom", "ewa-fast"};
+    CHECK_EQ(int(tf::all_filters().size()), 17);
     for (const char* n : names) CHECK(tf::to_string(tf::parse_filter(n)) == n);
     for (Filter f : tf::all_filters()) CHECK(tf::parse_filter(tf::to_string(f)) == f);
     CHECK(tf::parse_filter("nearest-mip") == Filter::nearest_mip);

@@ -152,6 +152,7 @@ std::vector<BenchFilter> bench_filters()
         make_filter("aniso16-hw", Filter::aniso, "--probes 16 --taps hardware"),
         make_filter("ewa", Filter::ewa),
         make_filter("ewa-hw", Filter::ewa, "--taps hardware"),
+        make_filter("ewa-fast", Filter::ewa_fast),
         make_filter("sat", Filter::sat),
         make_filter("sat-assembly", Filter::sat_assembly, "--boxes 4"),
         make_filter("hw-nearest", Filter::hw_nearest),

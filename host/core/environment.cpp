@@ -24,13 +24,14 @@ std::string to_string(EnvMap map) { return map == EnvMap::cube ? "cube" : "latlo
 bool has_environment_form(const SamplerOptions& options)
 {
     const Filter filter = options.filter;
-    return filter != Filter::brilinear && filter != Filter::sat && filter != Filter::sat_assembly;
+    return filter != Filter::brilinear && filter != Filter::sat && filter != Filter::sat_assembly &&
+           filter != Filter::ewa_fast;
 }
 
 void check_environment_filter(const SamplerOptions& options)
 {
     const Filter filter = options.filter;
-    if (filter == Filter::brilinear || filter == Filter::sat || filter == Filter::sat_assembly)
+    if (!has_environment_form(options))
         throw Error("--filter " + to_string(filter) + " has no environment-map form (cube.glsl and latlong.glsl: "
                     "nearest, bilinear, nearest-mip, bilinear-mip, trilinear, aniso, ewa, bspline, catmull-rom, hw-*, "
                     "ground-truth, none)");

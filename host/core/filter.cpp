@@ -26,6 +26,7 @@ const std::pair<Filter, const char*> kFilterNames[] = {
     {Filter::sat_assembly, "sat-assembly"},
     {Filter::bspline, "bspline"},
     {Filter::catmull_rom, "catmull-rom"},
+    {Filter::ewa_fast, "ewa-fast"},
     {Filter::ground_truth, "ground-truth"},
     {Filter::none, "none"},
 };
@@ -118,6 +119,12 @@ bool takes_taps(Filter filter) {
 
 bool takes_magnify(Filter filter) { return filter == Filter::trilinear || filter == Filter::aniso || filter == Filter::ewa; }
 
+bool uses_hardware_lookups(const SamplerOptions& options)
+{
+    return is_hardware(options.filter) || options.filter == Filter::ewa_fast ||
+           (options.taps == Taps::hardware && takes_taps(options.filter));
+}
+
 namespace {
 
 bool reads_lod_bias(Filter f)
@@ -129,6 +136,7 @@ bool reads_lod_bias(Filter f)
     case Filter::brilinear:
     case Filter::aniso:
     case Filter::ewa:
+    case Filter::ewa_fast:
     case Filter::sat:          // scales the footprint by exp2(bias) (sat.glsl)
     case Filter::sat_assembly:
     case Filter::hw_trilinear: // mipLodBias

@@ -26,6 +26,7 @@ enum class Filter {
     sat_assembly = HARNESS_FILTER_SAT_ASSEMBLY, // summed-area table: K boxes along the major axis (--boxes)
     bspline = HARNESS_FILTER_BSPLINE,         // level 0, cubic B-spline (--taps: 16 fetches or 4 bilinear taps)
     catmull_rom = HARNESS_FILTER_CATMULL_ROM, // level 0, Catmull-Rom (--taps: 16 fetches or 9 bilinear taps)
+    ewa_fast = HARNESS_FILTER_EWA_FAST,       // the pixel's Gaussian from at most 9 hardware trilinear lookups
     // Scene-level, not lookup filters (render only):
     ground_truth = HARNESS_FILTER_GROUND_TRUTH, // the pixel's integral of the level-0 bilinear texture (--spp)
     none = HARNESS_FILTER_NONE, // no texture at all: fract(uv) as colour, the benchmark's baseline cost
@@ -135,6 +136,10 @@ struct TruthRange {
     int count = 0;
 };
 TruthRange truth_range(const SamplerOptions& options);
+
+// The lookup goes through the bound sampler's filtering: the hw-* filters, --taps hardware, and ewa-fast
+// (hardware trilinear lookups only).
+bool uses_hardware_lookups(const SamplerOptions& options);
 
 // Throws tf::Error naming the filter when options.magnify is not bilinear on a filter that does not take it.
 void check_magnify(const SamplerOptions& options);

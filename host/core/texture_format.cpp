@@ -242,6 +242,7 @@ bool needs_hardware_filtering(const SamplerOptions& options)
     case Filter::hw_bilinear:
     case Filter::hw_trilinear:
     case Filter::hw_aniso:
+    case Filter::ewa_fast:
         return true;
     case Filter::aniso:
     case Filter::ewa:
@@ -257,7 +258,7 @@ void check_format_filter(TextureFormat format, const SamplerOptions& options)
 {
     if (!format_info(format).integer)
         return;
-    if (is_hardware(options.filter))
+    if (is_hardware(options.filter) || options.filter == Filter::ewa_fast)
         throw Error("--format " + to_string(format) + " holds integer data, which no sampler filters: --filter " +
                     to_string(options.filter) + " needs a float format (the manual filters read integer texels)");
     if (needs_hardware_filtering(options))

@@ -40,7 +40,7 @@ std::vector<FlagSpec> sampler_flags(SamplerFlags which)
     std::vector<FlagSpec> flags = {
         {"--filter", "F",
          std::string("nearest, bilinear, bspline, catmull-rom, trilinear, nearest-mip, bilinear-mip, brilinear, aniso, "
-                     "ewa, sat, sat-assembly, hw-nearest, hw-bilinear, hw-trilinear, hw-aniso") +
+                     "ewa, ewa-fast, sat, sat-assembly, hw-nearest, hw-bilinear, hw-trilinear, hw-aniso") +
              (scenes ? ", ground-truth (supersampled) or none (no texture: the benchmark's baseline)" : "")},
         {"--wrap", "W", "repeat (default), clamp or mirror"},
         {"--aniso", "N", "hw-aniso: maximum anisotropy, 1..16 (default 16)"},

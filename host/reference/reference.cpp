@@ -185,6 +185,8 @@ glm::dvec4 reference_sample_texels(const MipChain& chain, const SamplerOptions& 
                                       options.filter == Filter::trilinear ? options.magnify : Reconstruction::bilinear);
     case Filter::aniso: // its centre is placed by reference_aniso_centre, each probe reduced again
         return reference_aniso(chain, options, lookup, texels);
+    case Filter::ewa_fast: // as aniso's
+        return reference_ewa_fast(chain, options, lookup, texels);
     case Filter::ewa: {
         // Magnification: level 0's trilinear share is the magnification filter's (bilinear or --magnify's cubic;
         // a bilinear hardware tap through the texel source's tap where it has one: the cube's device taps),
@@ -245,6 +247,7 @@ glm::dvec4 reference_sample(const MipChain& chain, const SamplerOptions& options
     case Filter::hw_trilinear:
     case Filter::aniso:
     case Filter::ewa:
+    case Filter::ewa_fast:
     case Filter::bspline:
     case Filter::catmull_rom:
         return reference_sample_texels(chain, options, lookup, TexelSource{});

@@ -142,6 +142,25 @@ AnisoProbes reference_aniso_probes(const MipChain& chain, const SamplerOptions& 
 // none past float range (reduce_uv's [-1, 2] would move a long footprint that reaches into the texture).
 double reference_aniso_centre(double u, double axis, Wrap wrap);
 
+// ewa-fast's layout (reference/ewa_fast.cpp; shaders/texfilter/ewa_fast.glsl): all probes on `lod` (biased and
+// clamped). A triangle of 3 equal-weight probes at uv + offsets[k], or a row of 2·half + 1 probes at
+// uv + t·step + ((-1)^t - zigzag_mean)·zigzag, t = -half..half, weighted reference_ewa_fast_weight(t, half).
+struct EwaFastProbes {
+    double lod = 0;
+    bool triangle = false;
+    std::array<glm::dvec2, 3> offsets{}; // triangle: uv units
+    int half = 0;
+    glm::dvec2 step{0.0}, zigzag{0.0}; // row: along the major axis and across it, uv units
+    double zigzag_mean = 0;
+};
+double reference_ewa_fast_weight(int t, int half); // exp(-t² / (2 (half / 1.5)²))
+EwaFastProbes reference_ewa_fast_probes(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+glm::dvec4 reference_ewa_fast(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                              const TexelSource& texels = {});
+// The filter with a given layout (its lod changed, for the tests' bound on the device's level blend).
+glm::dvec4 reference_ewa_fast_layout(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,
+                                     const EwaFastProbes& probes, const TexelSource& texels = {});
+
 // ewa's footprint (reference/ewa.cpp): the covariance J·Jᵀ in level-0 texels² with its minor axis grown to
 // major / max_aniso (all zero for zero or non-finite gradients), and the LOD it reads, biased and clamped.
 struct EwaFootprint {

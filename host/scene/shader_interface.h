@@ -106,7 +106,8 @@ static_assert(int(Filter::nearest) == HARNESS_FILTER_NEAREST && int(Filter::bili
               int(Filter::aniso) == HARNESS_FILTER_ANISO && int(Filter::ewa) == HARNESS_FILTER_EWA &&
               int(Filter::sat) == HARNESS_FILTER_SAT && int(Filter::sat_assembly) == HARNESS_FILTER_SAT_ASSEMBLY &&
               int(Filter::ground_truth) == HARNESS_FILTER_GROUND_TRUTH && int(Filter::none) == HARNESS_FILTER_NONE &&
-              int(Filter::bspline) == HARNESS_FILTER_BSPLINE && int(Filter::catmull_rom) == HARNESS_FILTER_CATMULL_ROM,
+              int(Filter::bspline) == HARNESS_FILTER_BSPLINE && int(Filter::catmull_rom) == HARNESS_FILTER_CATMULL_ROM &&
+              int(Filter::ewa_fast) == HARNESS_FILTER_EWA_FAST,
               "tf::Filter: the specialization constant of filter_select.glsl");
 static_assert(int(Wrap::repeat) == HARNESS_WRAP_REPEAT && int(Wrap::clamp) == HARNESS_WRAP_CLAMP &&
               int(Wrap::mirror) == HARNESS_WRAP_MIRROR, "tf::Wrap: PushConstants.wrapMode");

@@ -20,6 +20,9 @@ void check_resource_options(const SamplerOptions& options, const ResourceOptions
             throw Error(kind + " cannot run --filter " + to_string(options.filter) +
                         ": the summed-area table is built for one texture of its own, not texels read through "
                         "TF_SOURCE (use --resource combined or separate)");
+        if (options.filter == Filter::ewa_fast)
+            throw Error(kind + " cannot run --filter ewa-fast: its lookups filter a sampler's texture, and the "
+                        "texels come through TF_SOURCE (use --filter ewa)");
         if (options.taps == Taps::hardware)
             throw Error(kind + " cannot run --taps hardware: a hardware tap filters a sampler's texture, and the "
                         "texels come through TF_SOURCE (use --taps manual)");
@@ -39,12 +42,6 @@ void check_resource_options(const SamplerOptions& options, const ResourceOptions
         throw Error(kind + " cannot run --filter hw-aniso: the footprint of a hardware anisotropic comparison is "
                     "implementation-defined, so nothing can check it (use aniso or ewa, with --taps hardware for "
                     "hardware comparison taps)");
-}
-
-bool uses_hardware_lookups(const SamplerOptions& options)
-{
-    return is_hardware(options.filter) ||
-           (options.taps == Taps::hardware && takes_taps(options.filter));
 }
 
 void check_resource_device(const VulkanContext& context, const SamplerOptions& options,

@@ -21,8 +21,6 @@ void check_resource_device(const VulkanContext& context, const SamplerOptions& o
 // atlas, virtual: the atlas or physical texture of a width x height texture fits the device's
 // maxImageDimension2D (core/texel_sources.h's check_source_size).
 void check_source_device(const VulkanContext& context, Resource kind, int width, int height);
-// Whether the filter makes hardware (sampler) lookups: hw-* modes, or --taps hardware for aniso and ewa.
-bool uses_hardware_lookups(const SamplerOptions& options);
 
 // shader: the lookup shader to run instead of the kind's built-in variant (`sample --spirv`, checked by
 // spirv_module.h against the kind's bindings); none (null words): the built-in one.

@@ -25,6 +25,7 @@
 #define HARNESS_FILTER_NONE 15         // render only: no texture (the benchmark's baseline)
 #define HARNESS_FILTER_BSPLINE 16      // level 0, cubic B-spline (bicubic.glsl; --taps manual|hardware)
 #define HARNESS_FILTER_CATMULL_ROM 17  // level 0, Catmull-Rom
+#define HARNESS_FILTER_EWA_FAST 18     // at most 9 hardware trilinear lookups (ewa_fast.glsl)
 
 // Sampler options passed straight to the includes: tf::Wrap, tf::AnisoShape, tf::Taps. They must equal
 // the includes' TF_WRAP_*, TF_ANISO_*, TF_TAPS_* (filter_select.glsl stops the build if not).

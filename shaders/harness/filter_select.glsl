@@ -251,6 +251,7 @@ vec4 harness_filter(vec2 uv, vec2 dUVdx, vec2 dUVdy)
     case HARNESS_FILTER_EWA:
         return hardwareTaps ? tf_ewa_hw(HARNESS_TEX_HW, uv HARNESS_X_HW, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso)
                             : tf_ewa(HARNESS_TEX, uv HARNESS_X, dUVdx, dUVdy, s, pc.alpha, pc.maxAniso);
+    case HARNESS_FILTER_EWA_FAST: return tf_ewa_fast(HARNESS_TEX_HW, uv HARNESS_X_HW, dUVdx, dUVdy, s);
     case HARNESS_FILTER_BSPLINE:
         return hardwareTaps ? tf_bspline_hw(HARNESS_TEX_HW, uv HARNESS_X_HW, s) : tf_bspline(HARNESS_TEX, uv HARNESS_X, s);
     case HARNESS_FILTER_CATMULL_ROM:

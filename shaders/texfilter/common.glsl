@@ -136,6 +136,7 @@ vec4 tfi_slang_lookup(Texture2DArray t, SamplerState s, vec3 uvLayer, float lod)
 #define TFI_FAMILY_LATLONG 11
 #define TFI_FAMILY_BICUBIC 12
 #define TFI_FAMILY_STOCHASTIC 13
+#define TFI_FAMILY_EWA_FAST 14
 
 // Cost hooks: define these before the first include to count work (the harness's `sample --stats`
 // does); by default they vanish. n texels read with texelFetch / n hardware filtered lookups.

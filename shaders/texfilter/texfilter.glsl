@@ -1,6 +1,6 @@
 // texfilter/texfilter.glsl — umbrella include: every texfilter include at once (version, common,
-// derivatives, lod, nearest, bilinear, bicubic, trilinear, brilinear, aniso, ewa, sat, cube, latlong,
-// stochastic).
+// derivatives, lod, nearest, bilinear, bicubic, trilinear, brilinear, aniso, ewa, ewa_fast, sat, cube,
+// latlong, stochastic).
 //
 // Use:     #extension GL_GOOGLE_include_directive : require
 //          #include "texfilter/texfilter.glsl"   // compile with -I<dir holding texfilter/>
@@ -18,7 +18,7 @@
 //          tf_Compare for depth maps).
 // Needs:   what each called filter needs (its header). Nothing is declared here: no bindings, no push constants.
 // Cost:    texel fetches a lookup: nearest 1, bilinear 4, bspline / catmull-rom 16 (_hw: 4 / 9 lookups),
-//          trilinear 8 (4 on a level), brilinear 4 or 8, aniso 8 a probe (N <= 16), ewa the texels in the
+//          trilinear 8 (4 on a level), brilinear 4 or 8, aniso 8 a probe (N <= 16), ewa_fast 1 to 9 lookups, ewa the texels in the
 //          ellipse on 2 levels (capped by TF_EWA_MAX_TEXELS), sat 32 (<= 128), stochastic forms 1. Unused
 //          functions cost nothing: compilers drop them.
 // Degenerate input: each family's header; in short, non-finite uv or dir gives vec4(0), NaN/±Inf gradients
@@ -38,6 +38,7 @@
 #include "brilinear.glsl"
 #include "aniso.glsl"
 #include "ewa.glsl"
+#include "ewa_fast.glsl"
 #include "sat.glsl"
 #include "cube.glsl"
 #include "latlong.glsl"

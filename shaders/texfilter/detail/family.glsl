@@ -20,6 +20,8 @@
 #include "aniso_kind.glsl"
 #elif TFI_FAMILY == TFI_FAMILY_EWA
 #include "ewa_kind.glsl"
+#elif TFI_FAMILY == TFI_FAMILY_EWA_FAST
+#include "ewa_fast_kind.glsl"
 #elif TFI_FAMILY == TFI_FAMILY_SAT
 #include "sat_kind.glsl"
 #elif TFI_FAMILY == TFI_FAMILY_CUBE
