@@ -535,7 +535,7 @@ ground_truth_and_bench_errors() {
     expect_error "bench --gpu-build --sizes ''" "bad value for --sizes: ''" - -- \
         "$TEXFILTER" bench --gpu-build --sizes '' --repeat 1 --dynamic-size 0
     # --mip-build and --gpu-build are runs of their own: one at a time, and only their flags.
-    expect_error "bench --mip-build --gpu-build" "--mip-build and --gpu-build are two different runs" - -- \
+    expect_error "bench --mip-build --gpu-build" "--mip-build, --gpu-build and --footprints are different runs" - -- \
         "$TEXFILTER" bench --mip-build --gpu-build --texture-size 16 --repeat 1
     expect_error "bench --mip-build --out" "bench --mip-build does not take --out" bench-out -- \
         "$TEXFILTER" bench --mip-build --texture-size 16 --repeat 1 --out bench-out
@@ -552,6 +552,50 @@ ground_truth_and_bench_errors() {
         fail "bench --out a non-empty directory" "the earlier results were changed"
     fi
     rm -rf earlier
+}
+
+# bench --footprints: each flag checked before any work (no device opened, nothing at --out).
+footprint_bench_errors() {
+    local fp=("$TEXFILTER" bench --footprints --quick --lookups 16)
+    expect_error "bench --footprints --textures bogus" "unknown texture 'bogus'" fp-out -- \
+        "${fp[@]}" --textures checker,bogus --out fp-out
+    expect_error "bench --footprints --textures ''" "bad value for --textures: ''" fp-out -- \
+        "${fp[@]}" --textures '' --out fp-out
+    expect_error "bench --footprints --textures checker," "bad value for --textures: 'checker,'" fp-out -- \
+        "${fp[@]}" --textures checker, --out fp-out
+    expect_error "bench --footprints --filters bogus" "unknown label 'bogus'" fp-out -- \
+        "${fp[@]}" --filters ewa,bogus --out fp-out
+    expect_error "bench --footprints --filters ewa,ewa" "'ewa' is listed twice" fp-out -- \
+        "${fp[@]}" --filters ewa,ewa --out fp-out
+    expect_error "bench --footprints --lookups 0" --lookups fp-out -- \
+        "$TEXFILTER" bench --footprints --quick --lookups 0 --out fp-out
+    expect_error "bench --footprints --texture-size 0" --texture-size fp-out -- \
+        "${fp[@]}" --texture-size 0 --out fp-out
+    echo P3 >photo.ppm && printf '2 2\n255\n0 0 0 0 0 0 0 0 0 0 0 0\n' >>photo.ppm
+    expect_error "bench --footprints --texture-size with files only" "--texture-size is not read by --textures" fp-out -- \
+        "${fp[@]}" --textures photo.ppm --texture-size 64 --out fp-out
+    expect_error "bench --footprints --format bogus" "unknown texture format 'bogus'" fp-out -- \
+        "${fp[@]}" --format bogus --out fp-out
+    expect_error "bench --footprints --format r32ui with hw-trilinear" "--format r32ui holds integer data" fp-out -- \
+        "${fp[@]}" --format r32ui --filters ewa,hw-trilinear --out fp-out
+    expect_error "bench --footprints --texture" "bench --footprints does not take --texture" fp-out -- \
+        "${fp[@]}" --texture checker --out fp-out
+    expect_error "bench --footprints --scenes" "bench --footprints does not take --scenes" fp-out -- \
+        "${fp[@]}" --scenes plane --out fp-out
+    expect_error "bench --footprints --mip-build" "are different runs" fp-out -- \
+        "${fp[@]}" --mip-build --out fp-out
+    expect_error "bench --footprints without --out" --out - -- "${fp[@]}"
+    expect_error "bench --textures in the results run" "--textures is for bench --footprints" bench-out -- \
+        "$TEXFILTER" bench --quick --scenes zoom --textures checker --out bench-out
+    expect_error "bench --lookups in the results run" "--lookups is for bench --footprints" bench-out -- \
+        "$TEXFILTER" bench --quick --scenes zoom --lookups 9 --out bench-out
+    mkdir -p earlier && echo keep >earlier/bench.json
+    expect_error "bench --footprints --out a non-empty directory" "not an empty directory" - -- \
+        "${fp[@]}" --out earlier
+    if [[ $(cat earlier/bench.json) != keep || $(ls earlier | wc -l) -ne 1 ]]; then
+        fail "bench --footprints --out a non-empty directory" "the earlier results were changed"
+    fi
+    rm -rf earlier photo.ppm
 }
 
 golden_errors() {
@@ -1553,6 +1597,7 @@ CASE_GROUPS=(bad_texture_files bad_flag_values bad_outputs bad_lookups sample_re
     texture_values_and_budgets
     oiio_peer_refusals
     oiio_peer_temporaries
+    footprint_bench_errors
 )
 if [[ ${#SELECTED[@]} -eq 0 ]]; then
     SELECTED=("${CASE_GROUPS[@]}")

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The compute bench's yardsticks (shaders/harness/minimal.glsl), timed beside its own frames: every scene of a
-# compute run reports the minimal pass and the minimal trilinear pass, and the minimal trilinear pass is a fair
-# yardstick for tf_trilinear: on a scene with no seam (plane, slanted) its frame equals trilinear's bit for bit
-# (the same texels, the same weights, the same level). Timings are reported, never asserted.
+# compute run reports the minimal pass and the minimal trilinear pass (timed by the process's CPU clock, --timer
+# cpu-time), and the minimal trilinear pass is a fair yardstick for tf_trilinear: on a scene with no seam (plane,
+# slanted) its frame equals trilinear's bit for bit (the same texels, the same weights, the same level). Timings
+# are reported, never asserted.
 #
 # usage: bench_minimal_pass.sh TEXFILTER
 set -euo pipefail
@@ -13,7 +14,7 @@ fi
 texfilter=$(realpath "$1")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-"$texfilter" bench --out "$work/run" --stage compute --scenes plane,slanted,tunnel --filters trilinear \
+"$texfilter" bench --out "$work/run" --stage compute --timer cpu-time --scenes plane,slanted,tunnel --filters trilinear \
     --size 64x64 --texture-size 256 --spp 1 --warmup 0 --frames 1 --flicker-frames 2 --validate >"$work/log"
 python3 - "$work/run/bench.json" <<'PY'
 import json, math, sys

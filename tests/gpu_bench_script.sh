@@ -59,6 +59,9 @@ assert timing["config"]["scenes"] == ["plane"], timing["config"]["scenes"]
 assert timing["config"]["width"] == 32, timing["config"]
 # The timed frames take TF_LOOKUPS lookups a pixel; the quality run the default one.
 assert timing["config"]["lookups_per_pixel"] == 2 and quality["config"]["lookups_per_pixel"] == 1, timing["config"]
+# The harness's frame against the minimal pass: judged where a frame is one lookup a pixel (the quality run).
+assert goal(quality, "the no-texture frame <=")["status"] in ("met", "missed"), goal(quality, "the no-texture frame <=")
+assert goal(timing, "the no-texture frame <=")["status"] == "not-applicable", goal(timing, "the no-texture frame <=")
 g = goal(quality, "ewa: Gaussian-truth error and flicker below hw-aniso")
 assert g["measured"].split(" (")[0].endswith(" of 1 scenes"), f"quality: {g}"
 EOF

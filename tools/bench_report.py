@@ -15,6 +15,7 @@ then writes:
     DIR/quality_vs_reads.png              PSNR vs gaussian truth against texel fetches + hardware lookups a
                                           pixel, with each scene's frontier (no other filter both better and cheaper)
     DIR/index.html                        self-contained report linking all of the above
+A `bench --footprints` directory gets its figures instead (tools/footprint_report.py).
 Exits 1 with a message naming the file when an input is missing or malformed.
 """
 
@@ -34,6 +35,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 import flip_evaluator  # noqa: E402
+
+import footprint_report  # noqa: E402  (beside this file)
 
 TRUTHS = ("box", "gaussian")
 FLIP_COLUMNS = ("flip_box", "flip_gaussian")
@@ -489,6 +492,8 @@ def main(argv):
         print(f"usage: {argv[0]} DIR   (DIR written by `texfilter bench --out DIR`)", file=sys.stderr)
         return 2
     out_dir = argv[1]
+    if footprint_report.is_footprints(out_dir):  # bench --footprints: its own figures
+        return footprint_report.main(out_dir)
     start = time.monotonic()
     try:
         bench = load_bench(out_dir)

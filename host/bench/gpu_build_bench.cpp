@@ -1,4 +1,5 @@
 #include "bench/gpu_build_bench.h"
+#include "bench/metrics.h"
 #include "core/procedural.h"
 #include "scene/scene.h"
 #include "texture/error.h"
@@ -212,14 +213,6 @@ DynamicRow run_dynamic(const VulkanContext& context, int side, int repeats, Fram
     return row;
 }
 
-std::string today()
-{
-    const std::time_t now = std::time(nullptr);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%d", std::gmtime(&now));
-    return text;
-}
-
 } // namespace
 
 void check_gpu_build_bench(const std::vector<int>& sides, int dynamic_side, const DeviceLimits& device,
@@ -258,7 +251,7 @@ GpuBuildBench run_gpu_build_bench(const VulkanContext& context, const std::vecto
     GpuBuildBench b;
     b.device = context.info.name;
     b.driver = context.info.driver_name + " " + context.info.driver_info;
-    b.date = today();
+    b.date = utc_date();
     b.timer = timer;
     b.repeats = repeats;
     for (int side : sides) {

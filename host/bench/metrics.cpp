@@ -2,6 +2,8 @@
 #include "texture/error.h"
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <ctime>
 
 namespace tf {
 
@@ -80,6 +82,24 @@ double display_flicker(const std::vector<Image>& frames, const std::vector<Image
                 ++count;
             }
     return std::sqrt(sum / double(count));
+}
+
+// %.6g, as the CSV has always been written; empty for a non-finite value.
+std::string csv_number(double value)
+{
+    if (!std::isfinite(value))
+        return "";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+std::string utc_date()
+{
+    const std::time_t now = std::time(nullptr);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%d", std::gmtime(&now));
+    return text;
 }
 
 } // namespace tf

@@ -2,6 +2,7 @@
 // The benchmark's measures: frame-time summaries, and error and flicker against ground truth. Errors are
 // in display units: linear RGB clamped to [0,1] and sRGB-encoded, alpha ignored (what a viewer sees).
 #include "texture/image.h"
+#include <string>
 #include <vector>
 
 namespace tf {
@@ -24,5 +25,10 @@ double psnr_from_rmse(double rmse);
 // of a camera path to the next, minus the change the ground truth shows (display units). Motion itself
 // costs nothing; popping, crawling and shimmering that the truth does not have do. NaN as display_rmse.
 double display_flicker(const std::vector<Image>& frames, const std::vector<Image>& truth);
+
+// A number as the CSVs write it: %.6g, empty for a non-finite value.
+std::string csv_number(double value);
+// Today in UTC, YYYY-MM-DD.
+std::string utc_date();
 
 } // namespace tf

@@ -79,16 +79,6 @@ Json result_json(const BenchResult& r)
             {"images", Json::array({r.image})}};
 }
 
-// %.6g, as the CSV has always been written; empty for a non-finite value.
-std::string csv_number(double value)
-{
-    if (!std::isfinite(value))
-        return "";
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
-
 } // namespace
 
 std::string bench_json(const BenchRun& run)

@@ -1,4 +1,6 @@
 #include "bench/bench.h"
+#include "bench/footprint_bench.h"
+#include "io/oiio_texture.h"
 #include "bench/gpu_build_bench.h"
 #include "bench/mip_build_bench.h"
 #include "flags/cli_common.h"
@@ -91,6 +93,76 @@ void check_mode_flags(const Args& args, const std::string& mode, const std::vect
                         ")");
 }
 
+// --out as given, a trailing '/' dropped (results/ names the directory results), checked new or empty.
+std::string new_out_directory(const Args& args)
+{
+    std::string out = args.require("--out");
+    while (out.size() > 1 && out.back() == '/')
+        out.pop_back();
+    check_new_directory(out, "bench --out");
+    return out;
+}
+
+// bench --footprints: every flag checked, each texture's header read and the output directory made before any
+// work; the files appear together at the end (a staging directory renamed into place).
+int run_footprints(const Args& args, const std::vector<std::string>& argv)
+{
+    check_mode_flags(args, "--footprints",
+                     {"--out", "--quick", "--textures", "--filters", "--texture-size", "--lookups", "--format",
+                      "--device", "--validate"});
+    FootprintConfig config;
+    config.quick = args.has("--quick");
+    config.textures = list_flag(args, "--textures", "checker,zoneplate", "procedural names or image paths");
+    for (const std::string& name : config.textures)
+        check_texture_name(name);
+    if (args.has("--texture-size") &&
+        std::none_of(config.textures.begin(), config.textures.end(), is_procedural_texture))
+        throw Error("--texture-size is not read by --textures " + args.get("--textures", "") +
+                    " (it applies to the procedural textures: " + procedural_texture_names() + ")");
+    config.texture_size = args.get_int("--texture-size", config.quick ? 128 : 512, 1, 16384);
+    config.sampling.lookups = args.get_int("--lookups", config.quick ? 900 : 9000, 1, 1000000);
+    if (config.quick)
+        config.sampling.max_side = 32;
+    const std::vector<std::string> labels = args.has("--filters")
+                                                ? list_flag(args, "--filters", "", "filter labels")
+                                                : default_footprint_labels();
+    config.filters = select_footprint_filters(labels);
+    if (std::any_of(labels.begin(), labels.end(), [](const std::string& l) { return l.starts_with("oiio-"); }))
+        load_oiio_texture(); // the image I/O module, found before any work
+    config.format = parse_flag(args, "--format", "rgba32f", parse_texture_format);
+    for (const FootprintFilter& f : config.filters) // integer data and hardware filtering, before any work
+        if (f.device)
+            check_format_filter(config.format, f.options);
+    const bool device = std::any_of(config.filters.begin(), config.filters.end(),
+                                    [](const FootprintFilter& f) { return f.device; });
+    const fs::path out = new_out_directory(args);
+    StagingDirectory staging(out.string()); // made before any work: the real test that --out can be written
+    std::unique_ptr<GpuSession> gpu;
+    if (device)
+        gpu = std::make_unique<GpuSession>(context_options_from(args));
+    for (const FootprintFilter& f : config.filters)
+        if (gpu && f.device)
+            check_format_support(gpu->context, config.format, f.options);
+    const DeviceLimits limits = gpu ? device_limits(gpu->context.info) : DeviceLimits{};
+    for (const std::string& name : config.textures) // sizes against the SAT's, the device's and memory limits
+        check_texture(footprint_source(config, name), footprint_use(config, gpu ? &limits : nullptr));
+    if (gpu)
+        std::printf("bench --footprints on %s (%s %s)\n", gpu->context.info.name.c_str(),
+                    gpu->context.info.driver_name.c_str(), gpu->context.info.driver_info.c_str());
+    FootprintRun run = run_footprint_bench(gpu ? &gpu->context : nullptr, config);
+    run.command = "texfilter bench";
+    for (const std::string& word : argv)
+        run.command += " " + word;
+    if (gpu)
+        gpu->finish(); // validation messages fail the run before anything appears at --out
+    write_file_atomic(staging.path + "/bench.json", footprint_json(run));
+    write_file_atomic(staging.path + "/bench.csv", footprint_csv(run));
+    write_file_atomic(staging.path + "/tables.md", footprint_tables(run));
+    staging.publish();
+    std::printf("truths %.1f s, filters %.1f s\n%s\n", run.truth_seconds, run.filter_seconds, out.string().c_str());
+    return 0;
+}
+
 // The results directory appears whole or not at all: everything is written into a sibling directory that is
 // renamed into place at the end, and removed if anything fails.
 } // namespace
@@ -118,21 +190,27 @@ int run_bench(const std::vector<std::string>& argv)
           {"--lookups-per-pixel", "N", "timed frames: each pixel the mean of N lookups over its footprint, 1..256 "
                                        "(default 1; a GPU's filters above the harness's own cost; images and errors: 1)"},
           {"--stage", "S", "fragment (default) or compute; the mesh scene always rasterizes"},
-          {"--timer", "T", "timestamps (GPU timestamps; default on GPUs) or wall-clock (default on CPU devices)"},
+          {"--timer", "T", "timestamps (GPU timestamps; default on GPUs), wall-clock (default on CPU devices) or cpu-time (the process's CPU time a frame: a CPU device's work, whatever else runs)"},
           {"--mip-build", "", "instead: time the host's MIP build beside memcpy (--texture-size, default 8192; no --out)"},
           {"--repeat", "N", "--mip-build, --gpu-build: runs of each measure, the median reported (default 5, 3)"},
           {"--gpu-build", "", "instead: time the device's MIP and SAT builds beside the host's and beside a copy of "
                               "the same bytes on each, and the dynamic texture's frame (no --out)"},
           {"--sizes", "A,B", "--gpu-build: texture sides (default 1024,4096,8192)"},
-          {"--dynamic-size", "N", "--gpu-build: the dynamic texture's side, 0 for none (default 1024)"}},
+          {"--dynamic-size", "N", "--gpu-build: the dynamic texture's side, 0 for none (default 1024)"},
+          {"--footprints", "", "instead: each filter's error against footprint size and anisotropy, lookup by lookup, "
+                               "against per-lookup truths (--out DIR: bench.json, bench.csv, tables.md)"},
+          {"--textures", "A,B", "--footprints: procedural names or image paths (default checker,zoneplate)"},
+          {"--lookups", "N", "--footprints: random lookups a texture (default 9000; quick: 900)"}},
          device_flags()});
     Args args = parse_args("bench", argv, specs, 0);
     if (args.has("--help")) {
         std::fputs(format_help("texfilter bench --out DIR [--quick] [--device NAME|INDEX]", specs).c_str(), stdout);
         return 0;
     }
-    if (args.has("--mip-build") && args.has("--gpu-build"))
-        throw Error("bench: --mip-build and --gpu-build are two different runs: give one of them");
+    if (int(args.has("--mip-build")) + int(args.has("--gpu-build")) + int(args.has("--footprints")) > 1)
+        throw Error("bench: --mip-build, --gpu-build and --footprints are different runs: give one of them");
+    if (args.has("--footprints"))
+        return run_footprints(args, argv);
     if (args.has("--mip-build")) {
         check_mode_flags(args, "--mip-build", {"--texture-size", "--repeat", "--memory-budget"});
         const int side = args.get_int("--texture-size", 8192, 1, 16384);
@@ -163,7 +241,8 @@ int run_bench(const std::vector<std::string>& argv)
     }
     using Owner = std::pair<std::string, std::string>; // a flag of the other runs, and which
     for (const auto& [flag, runs] : {Owner{"--repeat", "--mip-build and --gpu-build"}, Owner{"--sizes", "--gpu-build"},
-                                     Owner{"--dynamic-size", "--gpu-build"}})
+                                     Owner{"--dynamic-size", "--gpu-build"}, Owner{"--textures", "--footprints"},
+                                     Owner{"--lookups", "--footprints"}})
         if (args.has(flag))
             throw Error(flag + " is for bench " + runs + ", not for the results run (--out DIR)");
     BenchConfig config;
@@ -217,11 +296,7 @@ int run_bench(const std::vector<std::string>& argv)
     for (const BenchFilter& f : config.filters) // integer data and hardware filtering, before any work
         check_format_filter(config.texture.format, f.options);
 
-    std::string out_text = args.require("--out");
-    while (out_text.size() > 1 && out_text.back() == '/') // results/ names the directory results
-        out_text.pop_back();
-    fs::path out = out_text;
-    check_new_directory(out.string(), "bench --out");
+    const fs::path out = new_out_directory(args);
     StagingDirectory staging(out.string()); // made before any work: the real test that --out can be written
     GpuSession gpu(context_options_from(args));
     // Every filter runs, the SAT ones too: the texture must fit the table, the memory budget and the device.

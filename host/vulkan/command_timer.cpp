@@ -1,7 +1,6 @@
 #include "vulkan/command_timer.h"
 #include "texture/error.h"
 #include <algorithm>
-#include <chrono>
 
 namespace tf {
 
@@ -13,11 +12,11 @@ std::vector<double> time_commands(const VulkanContext& context, const std::funct
     for (int w = 0; w < warmup; ++w)
         submit_and_wait(context, record);
     std::vector<double> ms;
-    if (timer == FrameTimer::wall_clock) {
+    if (timer != FrameTimer::timestamps) {
         for (int r = 0; r < repeats; ++r) {
-            const auto start = std::chrono::steady_clock::now();
+            const double start = host_clock_ms(timer);
             submit_and_wait(context, record);
-            ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            ms.push_back(host_clock_ms(timer) - start);
         }
         return ms;
     }

@@ -3,6 +3,7 @@
 #include "vulkan/frame.h"
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 
 namespace tf {
 
@@ -14,11 +15,11 @@ namespace {
 // pipeline's shaders at its first draw (0.5-4 s), which cut every such filter to three timed frames.
 constexpr double slow_ms = 250.0;
 
-double host_frame_ms(const GpuRenderer& r)
+double host_frame_ms(const GpuRenderer& r, FrameTimer timer)
 {
-    auto start = std::chrono::steady_clock::now();
+    const double start = host_clock_ms(timer);
     submit_and_wait(*r.context, [&](VkCommandBuffer cb) { record_frame(r, cb, VK_NULL_HANDLE, 0); });
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return host_clock_ms(timer) - start;
 }
 
 // The wall clock's rounds: each renderer warms up alone (the slow-frame rule cuts its warm-up), then one frame
@@ -28,12 +29,12 @@ double host_frame_ms(const GpuRenderer& r)
 // after the SAT's frame was slower than after the baseline's). Timed so, a frame costs what it costs in a
 // run of its own frames, as in a renderer's steady state, while the rounds still share the machine's drift.
 std::vector<std::vector<double>> time_on_host_in_turn(const std::vector<GpuRenderer*>& renderers, int warmup,
-                                                      int frames)
+                                                      int frames, FrameTimer timer)
 {
     std::vector<int> limit(renderers.size(), frames);
     for (size_t i = 0; i < renderers.size(); ++i)
         for (int f = 0; f < warmup; ++f)
-            if (double elapsed = host_frame_ms(*renderers[i]); f > 0 && elapsed > slow_ms) {
+            if (double elapsed = host_frame_ms(*renderers[i], timer); f > 0 && elapsed > slow_ms) {
                 limit[i] = std::min(frames, 3);
                 break;
             }
@@ -43,8 +44,8 @@ std::vector<std::vector<double>> time_on_host_in_turn(const std::vector<GpuRende
             if (int(ms[i].size()) >= limit[i])
                 continue;
             if (renderers.size() > 1 && limit[i] == frames) // not for a renderer cut short for being slow
-                host_frame_ms(*renderers[i]);
-            ms[i].push_back(host_frame_ms(*renderers[i]));
+                host_frame_ms(*renderers[i], timer);
+            ms[i].push_back(host_frame_ms(*renderers[i], timer));
             const bool first_frame = warmup == 0 && ms[i].size() == 1; // the compile's, as in the warm-up
             if (!first_frame && ms[i].back() > slow_ms)
                 limit[i] = std::min(limit[i], std::max(3, int(ms[i].size())));
@@ -86,6 +87,17 @@ std::vector<double> time_with_timestamps(const GpuRenderer& r, int warmup, int f
 
 } // namespace
 
+double host_clock_ms(FrameTimer timer)
+{
+    if (timer == FrameTimer::cpu_time) {
+        timespec t{};
+        if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t) != 0)
+            throw Error("the cpu-time timer: the process's CPU clock cannot be read");
+        return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+    }
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
 std::vector<double> time_frames(GpuRenderer& r, int warmup, int frames, FrameTimer timer)
 {
     return time_frames_interleaved({&r}, warmup, frames, timer)[0];
@@ -96,8 +108,8 @@ std::vector<std::vector<double>> time_frames_interleaved(const std::vector<GpuRe
 {
     if (warmup < 0 || frames < 1)
         throw Error("time_frames: need at least one timed frame");
-    if (timer == FrameTimer::wall_clock)
-        return time_on_host_in_turn(renderers, warmup, frames);
+    if (timer != FrameTimer::timestamps)
+        return time_on_host_in_turn(renderers, warmup, frames, timer);
     std::vector<std::vector<double>> ms;
     for (GpuRenderer* r : renderers)
         ms.push_back(time_with_timestamps(*r, warmup, frames));
@@ -110,9 +122,14 @@ FrameTimer parse_frame_timer(const std::string& name)
         return FrameTimer::timestamps;
     if (name == "wall-clock")
         return FrameTimer::wall_clock;
-    throw Error("unknown timer '" + name + "' (expected timestamps or wall-clock)");
+    if (name == "cpu-time")
+        return FrameTimer::cpu_time;
+    throw Error("unknown timer '" + name + "' (expected timestamps, wall-clock or cpu-time)");
 }
 
-std::string to_string(FrameTimer timer) { return timer == FrameTimer::timestamps ? "timestamps" : "wall-clock"; }
+std::string to_string(FrameTimer timer)
+{
+    return timer == FrameTimer::timestamps ? "timestamps" : timer == FrameTimer::wall_clock ? "wall-clock" : "cpu-time";
+}
 
 } // namespace tf

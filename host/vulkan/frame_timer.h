@@ -9,10 +9,17 @@ namespace tf {
 // timestamps: GPU timestamps written before and after each frame's draw or dispatch, all frames in one
 // submit (real GPUs). wall_clock: one submit and wait a frame, timed on the host: lavapipe writes
 // timestamps when it records a command, not when its threads finish the work (they read 0.3 ms for a
-// 30 ms frame), so on CPU devices only the wall clock measures anything.
-enum class FrameTimer { timestamps, wall_clock };
-FrameTimer parse_frame_timer(const std::string& name); // "timestamps", "wall-clock"
+// 30 ms frame), so on CPU devices only the wall clock measures anything. cpu_time: as the wall clock, but the
+// process's CPU time (every thread's) a frame: on a CPU device that is the frame's work, which other processes
+// on the machine do not inflate as they do its wall time (they took 2x on a loaded 2-core machine); it counts
+// the driver's own overhead too, and nothing done outside the process.
+enum class FrameTimer { timestamps, wall_clock, cpu_time };
+FrameTimer parse_frame_timer(const std::string& name); // "timestamps", "wall-clock", "cpu-time"
 std::string to_string(FrameTimer timer);
+
+// The host's clock for a timer other than timestamps, in milliseconds from an arbitrary origin: the steady clock
+// (wall_clock) or the process's CPU time (cpu_time).
+double host_clock_ms(FrameTimer timer);
 
 // The time of `frames` frames after `warmup` untimed ones, in milliseconds each. Throws tf::Error when
 // timestamps are asked for and the queue has none. The wall clock cuts a pathologically slow case short

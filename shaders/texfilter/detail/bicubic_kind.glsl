@@ -90,6 +90,15 @@ vec4 tfi_mip_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
                ? tf_cubic_level(TFI_A, uv TFI_XA, 0, wrapMode, TF_MAGNIFY)
                : tf_bilinear_level(TFI_A, uv TFI_XA, level, wrapMode);
 }
+
+// tfi_mip_level on a uv already finite and reduced (tf_reduce_uv, which leaves a reduced uv as it is, so the
+// cubic's own reduction changes nothing): trilinear's two levels at one uv.
+vec4 tfi_mip_level_reduced(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
+{
+    return TF_MAGNIFY != TF_RECONSTRUCT_BILINEAR && level == 0 // one return (common.glsl)
+               ? tf_cubic_level(TFI_A, uv TFI_XA, 0, wrapMode, TF_MAGNIFY)
+               : tfi_bilinear_level_reduced(TFI_A, uv TFI_XA, level, wrapMode);
+}
 #endif
 
 // TF_MAGNIFY's level 0 from texel fetches or hardware taps (ewa, aniso's hardware probes).

@@ -5,13 +5,13 @@
 #endif
 #if TFI_CAN_FETCH
 
-vec4 tf_bilinear_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
+// tf_bilinear_level on a uv already finite and moved by whole periods (tf_reduce_uv): the filters that read
+// several levels at one uv (trilinear, brilinear, aniso's probes) check and move it once.
+vec4 tfi_bilinear_level_reduced(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
 {
-    if (!tf_finite(uv))
-        return vec4(0.0);
     ivec2 size = tf_level_size(TFI_A, level);
-    // uv moved by whole periods first (tf_reduce_uv): no finite uv makes the texel coordinate overflow float.
-    vec2 x = clamp(tf_reduce_uv(uv, wrapMode) * vec2(size) - 0.5, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
+    // The whole-period move first: no finite uv makes the texel coordinate overflow float.
+    vec2 x = clamp(uv * vec2(size) - 0.5, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
     vec2 i0 = floor(x);
     vec2 a = x - i0;
     ivec2 xs = TFI_WRAP_PAIR(i0.x, size.x, wrapMode), ys = TFI_WRAP_PAIR(i0.y, size.y, wrapMode);
@@ -19,6 +19,15 @@ vec4 tf_bilinear_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
     vec4 top = mix(TFI_FETCH(ivec2(xs.x, ys.x), level), TFI_FETCH(ivec2(xs.y, ys.x), level), a.x);
     vec4 bottom = mix(TFI_FETCH(ivec2(xs.x, ys.y), level), TFI_FETCH(ivec2(xs.y, ys.y), level), a.x);
     return mix(top, bottom, a.y);
+}
+
+vec4 tf_bilinear_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode)
+{
+    // Selects, not an early return: one path (lavapipe runs both sides of a branch under a mask anyway).
+    bool finite = tf_finite(uv);
+    vec4 color = tfi_bilinear_level_reduced(TFI_A, finite ? tf_reduce_uv(uv, wrapMode) : vec2(0.0) TFI_XA, level,
+                                            wrapMode);
+    return finite ? color : vec4(0.0);
 }
 
 #if TFI_MANUAL
