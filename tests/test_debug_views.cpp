@@ -341,7 +341,7 @@ TEST_CASE("footprint-known-gradients")
     CHECK_NEAR(glm::length(aniso.major) * 256, 4.0, 1e-12); // half the probes' line
     CHECK_NEAR(glm::length(aniso.minor) * 256, 1.0, 1e-12); // half the level-1 texel
     const PixelFootprint ewa = lookup_footprint(chain, filter_options(Filter::ewa), l);
-    CHECK_NEAR(ewa.lod, 1.0, 1e-12); // log2(minor semi-axis 2)
+    CHECK_NEAR(ewa.lod, 0.5, 1e-12); // log2(minor semi-axis 2 / sqrt(2))
     CHECK_NEAR(std::abs(ewa.major.x) * 256, 4.0, 1e-12);
     CHECK_NEAR(std::abs(ewa.minor.y) * 256, 1.0, 1e-12);
     CHECK_NEAR(footprint_anisotropy(chain, {0.5, 0.5, 0, 0, 0, 0}), 1.0, 0.0);

@@ -512,7 +512,7 @@ int ewa_coarse_level(const MipChain& chain, const Lookup& l, double max_aniso) {
     const double major2 = 0.5 * (s + r) + std::hypot(0.5 * (s - r), t);
     const double minor2 = std::max((a * d - b * c) * (a * d - b * c) / major2, major2 / (max_aniso * max_aniso));
     const double major_texels = (kMaxTexels - 3) / (4.0 * std::sqrt(kSupport));
-    const double lambda = std::max(0.5 * std::log2(minor2), 0.5 * std::log2(major2) - std::log2(major_texels));
+    const double lambda = std::max(0.5 * std::log2(minor2) - 0.5, 0.5 * std::log2(major2) - std::log2(major_texels));
     return std::clamp(int(std::ceil(lambda + 1e-6)), 0, int(chain.levels.size()) - 1);
 }
 
@@ -840,6 +840,41 @@ TEST_CASE("weight-variance") {
     CHECK_LE("alpha 0: |variance - 1/3| (the clamp to 1/64)", std::abs(reference_ewa_weight_variance(0.0) - 1.0 / 3),
              0.002);
     CHECK_EQ(reference_ewa_weight_variance(0.0), reference_ewa_weight_variance(1.0 / 64));
+}
+
+// The level rule's variance bookkeeping (ewa.glsl, "Math"), measured through the whole filter: on a texture
+// that is a parabola along u, t = (x - c)²/S (x in level-0 texels), any filter returns (x0 - c)²/S plus its
+// kernel's second moment along u over S. The Gaussian-pixel truth's is σ²·(J·Jᵀ)_uu + 1/6 (the bilinear
+// tent); the level's is the box its texels average ((4^l - 1)/12 level-0 texels², exact on a parabola) plus
+// 4^l·v·M_uu, M = S·J·Jᵀ·S + r₀·I with r₀ = (3·4^-l - 1)/(12v) where M needs no lift: in sum v·(J·Jᵀ)_uu + 1/6,
+// alpha's own σ² = v in place of ¼. The lookup is held on one level (lodMin = lodMax = l) with the footprint's
+// smaller eigenvalue 4 level texels² there (no lift). Bound 2 %: the sampled, truncated weight's second moment
+// against the continuous v·M (σ ≈ 0.9 texel, cut at r² = R²) and the line fit's centroid correction; the rule
+// before (M = S·J·Jᵀ·S + I) is 27-36 % over on these levels.
+TEST_CASE("level-variance") {
+    const int size = 256;
+    const double c = size / 2.0, scale = c * c;
+    Image img = make_image(size, size);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const double t = (x + 0.5 - c) * (x + 0.5 - c) / scale;
+            img.at(x, y) = glm::vec4(float(t), float(t), float(t), 1.0f);
+        }
+    const MipChain chain = build_mip_chain(img);
+    const double v = reference_ewa_weight_variance(2.0);
+    for (int level = 1; level <= 4; ++level) {
+        SamplerOptions o = ewa_options(Wrap::clamp, Taps::manual);
+        o.lod_min = o.lod_max = float(level);
+        const double a = 2.0 * std::exp2(level), b = std::sqrt(2.0) * a; // (J·Jᵀ)_uu = 4·4^l, _vv = 8·4^l
+        double worst = 0;
+        for (double x0 : {128.0, 128.3, 129.7, 131.25}) {
+            const Lookup l{x0 / size, 0.5 + 0.37 / size, a / size, 0.0, 0.0, b / size};
+            const double excess = reference_sample(chain, o, l).r * scale - (x0 - c) * (x0 - c);
+            const double target = v * a * a + 1.0 / 6.0;
+            worst = std::max(worst, std::abs(excess / target - 1));
+        }
+        CHECK_LE("second moment along u / (v·(J·Jᵀ)_uu + 1/6) - 1, level " + std::to_string(level), worst, 0.02);
+    }
 }
 
 TEST_SUITE_BEGIN("gpu");

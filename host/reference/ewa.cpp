@@ -4,10 +4,14 @@
 // tests every texel and solves the weighted least-squares normal equations directly.
 //
 //   J = [dUV/dx dUV/dy] in level-0 texels; the footprint ellipse J·Jᵀ has its minor semi-axis grown
-//   to major / max_aniso; lambda = max(log2 minor, log2(major / ((K-3)/(4R)))) + bias, clamped.
-//   Level l: M = S·(clamped J·Jᵀ)·S + I, S = diag(w_l/w_0, h_l/h_0), shrunk so that the support's
-//   bounding box half-extents R·sqrt(M.xx), R·sqrt(M.yy) stay <= (K-1)/2 - 1/64; texels with
-//   r² = xᵀM⁻¹x < R² (R² = 2) weigh exp(-alpha r²) - exp(-alpha R²) (continuous at the edge).
+//   to major / max_aniso; lambda = max(log2 minor - 1/2, log2(major / ((K-3)/(4R)))) + bias, clamped.
+//   Level l: M = S·(clamped J·Jᵀ)·S + c·I, S = diag(w_l/w_0, h_l/h_0) (s² = its determinant), the first
+//   term shrunk so that the support's bounding box half-extents R·sqrt(M.xx), R·sqrt(M.yy) stay
+//   <= (K-1)/2 - 1/64 with c = 1; c = (3s² - 1)/(12v), v the weight's variance in units of M: the
+//   Gaussian-pixel truth's bilinear tent on level 0 (1/6 level-0 texel²) less the box average the level's
+//   texels already are ((1 - s²)/12 level texel²), raised to lift M's smaller eigenvalue to kEwaSmallest,
+//   at most 1.
+//   Texels with r² = xᵀM⁻¹x < R² (R² = 2) weigh exp(-alpha r²) - exp(-alpha R²) (continuous at the edge).
 //   Manual taps: the weighted least-squares fit b + g·d over the texels (d = texel centre - centre),
 //   evaluated at d = 0 and clamped to the range of the texels read (a line fitted across a step can
 //   overshoot it): it reproduces a linear texture exactly, whichever texels the support catches.
@@ -38,6 +42,8 @@ constexpr double kHalfBox = 0.5 * (kMaxTexels - 1) - 1.0 / 64.0; // largest boun
 // Largest major semi-axis (M's, without R) on the LOD's level: the support then fits the cap there.
 const double kMajorTexels = (kMaxTexels - 3) / (4.0 * std::sqrt(kSupport));
 constexpr double kMaxAlpha = 64.0;
+// M's smallest eigenvalue on a level, unless the footprint's own is below kEwaSmallest - 1 (then M = S·J·Jᵀ·S + I).
+constexpr double kEwaSmallest = 2.5;
 constexpr double kTwistLimit = 0.005; // a block's 4|w00 w11 - w10 w01| / w over the level's weight
 constexpr double kMaxTexel = 4503599627370496.0; // 2^52: beyond it doubles have no fraction
 
@@ -75,7 +81,8 @@ Footprint footprint(const MipChain& chain, const SamplerOptions& options, const 
     const double c = std::cos(theta), s = std::sin(theta);
     // R diag(major2, minor2) Rᵀ with R = [c -s; s c].
     fp.cov = {major2 * c * c + minor2 * s * s, (major2 - minor2) * c * s, major2 * s * s + minor2 * c * c};
-    fp.lambda = std::max(0.5 * std::log2(minor2), 0.5 * std::log2(major2) - std::log2(kMajorTexels)) +
+    // The minor semi-axis spans sqrt(2) texels of level lambda (ewa.glsl, Math: where M needs no lift).
+    fp.lambda = std::max(0.5 * std::log2(minor2) - 0.5, 0.5 * std::log2(major2) - std::log2(kMajorTexels)) +
                 double(options.lod_bias);
     return fp;
 }
@@ -101,18 +108,12 @@ long long reduce_base(long long base, int size, Wrap wrap) {
     return base;
 }
 
-LevelEllipse level_ellipse(const MipChain& chain, int level, const Footprint& fp, const Lookup& l, Wrap wrap) {
-    const Image& base = chain.levels[0];
+LevelEllipse level_ellipse(const MipChain& chain, int level, const Footprint& fp, const Lookup& l, Wrap wrap,
+                           double alpha) {
     const Image& img = chain.levels[size_t(level)];
-    const double sx = double(img.width) / base.width, sy = double(img.height) / base.height;
-    Sym d{sx * sx * fp.cov.xx, sx * sy * fp.cov.xy, sy * sy * fp.cov.yy};
-    const double widest = std::max(d.xx, d.yy);
-    if (kSupport * (widest + 1.0) > kHalfBox * kHalfBox) { // the loop cap: shrink, same shape
-        const double k = (kHalfBox * kHalfBox / kSupport - 1.0) / widest;
-        d = {k * d.xx, k * d.xy, k * d.yy};
-    }
+    const EwaLevelShape m = reference_ewa_level_shape(chain, level, fp.cov.xx, fp.cov.xy, fp.cov.yy, alpha);
     LevelEllipse e;
-    e.m = {d.xx + 1.0, d.xy, d.yy + 1.0};
+    e.m = {m.xx, m.xy, m.yy};
     const double cx = std::clamp(l.u * img.width, -kMaxTexel, kMaxTexel);
     const double cy = std::clamp(l.v * img.height, -kMaxTexel, kMaxTexel);
     e.fx = cx - std::floor(cx), e.fy = cy - std::floor(cy);
@@ -175,7 +176,7 @@ glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, cons
     const Image& img = chain.levels[size_t(level)];
     // ewa.glsl reads a 1x1 level once; the 2D wrap makes every texel that one, an environment rule would not.
     if (texels.read && img.width == 1 && img.height == 1) return texels.read(texels.map, level, 0, 0);
-    const LevelEllipse e = level_ellipse(chain, level, fp, l, wrap);
+    const LevelEllipse e = level_ellipse(chain, level, fp, l, wrap, alpha);
     long long i0, i1, j0, j1;
     box_range(e.bx, e.fx, std::sqrt(kSupport * e.m.xx), i0, i1); // the support's bounding box
     box_range(e.by, e.fy, std::sqrt(kSupport * e.m.yy), j0, j1);
@@ -242,6 +243,26 @@ glm::dvec4 ewa_level(const MipChain& chain, int level, const Footprint& fp, cons
 }
 
 } // namespace
+
+EwaLevelShape reference_ewa_level_shape(const MipChain& chain, int level, double cov_xx, double cov_xy, double cov_yy,
+                                        double alpha) {
+    const Image& base = chain.levels[0];
+    const Image& img = chain.levels[size_t(level)];
+    const double sx = double(img.width) / base.width, sy = double(img.height) / base.height;
+    Sym d{sx * sx * cov_xx, sx * sy * cov_xy, sy * sy * cov_yy};
+    const double widest = std::max(d.xx, d.yy);
+    if (kSupport * (widest + 1.0) > kHalfBox * kHalfBox) { // the loop cap: shrink, same shape
+        const double k = (kHalfBox * kHalfBox / kSupport - 1.0) / widest;
+        d = {k * d.xx, k * d.xy, k * d.yy};
+    }
+    // The level's own reconstruction c·I (ewa.glsl, Math): the truth's bilinear tent on level 0 (1/6 level-0
+    // texel² per axis) less the box this level already averages ((1 - s²)/12), in units of the weight's
+    // variance; at least what lifts M's smaller eigenvalue to kEwaSmallest, at most 1 (the loop cap's bound).
+    const double minor = 0.5 * (d.xx + d.yy) - std::hypot(0.5 * (d.xx - d.yy), d.xy);
+    const double wanted = (3.0 * sx * sy - 1.0) / (12.0 * reference_ewa_weight_variance(alpha));
+    const double c = std::min(std::max(wanted, kEwaSmallest - std::max(minor, 0.0)), 1.0);
+    return {d.xx + c, d.xy, d.yy + c};
+}
 
 double reference_ewa_alpha(const SamplerOptions& options) {
     return options.alpha >= 0.0f ? std::min(double(options.alpha), kMaxAlpha) : 0.0; // NaN and negative: 0

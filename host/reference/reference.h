@@ -168,6 +168,13 @@ struct EwaFootprint {
     double lod = 0;
 };
 EwaFootprint reference_ewa_footprint(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup);
+// ewa's M on one level (level texels², the support is xᵀM⁻¹x < R²) for a footprint covariance (level-0
+// texels²): the covariance scaled to the level (shrunk to the loop cap) plus the level's reconstruction c·I.
+struct EwaLevelShape {
+    double xx = 0, xy = 0, yy = 0;
+};
+EwaLevelShape reference_ewa_level_shape(const MipChain& chain, int level, double cov_xx, double cov_xy, double cov_yy,
+                                        double alpha);
 // With a texel source (environment maps) a 1x1 level is its one texel (0, 0), whatever the ellipse, as
 // ewa.glsl reads it; under the 2D wrap every texel of a 1x1 level is that texel anyway.
 glm::dvec4 reference_ewa(const MipChain& chain, const SamplerOptions& options, const Lookup& lookup,

@@ -18,9 +18,7 @@ namespace {
 
 using Visit = std::function<void(double p, const glm::dvec4& value)>;
 
-constexpr int kEwaMaxTexels = 95; // TF_EWA_MAX_TEXELS's default
 constexpr double kEwaSupport = 2.0; // R²
-constexpr double kEwaHalfBox = 0.5 * (kEwaMaxTexels - 1) - 1.0 / 64.0;
 
 // Texel (i, j) of `level`: through the texel source where it has a rule (the environment maps), else wrapped.
 glm::dvec4 texel(const MipChain& chain, int level, long long i, long long j, Wrap wrap, const TexelSource& texels)
@@ -117,17 +115,10 @@ struct WeightedTexel {
 std::vector<WeightedTexel> ewa_support(const MipChain& chain, int level, const EwaFootprint& fp, double u, double v,
                                        double alpha)
 {
-    const Image& base = chain.levels[0];
     const Image& img = chain.levels[size_t(level)];
     if (img.width == 1 && img.height == 1) return {{0, 0, 1.0}};
-    const double sx = double(img.width) / base.width, sy = double(img.height) / base.height;
-    double dxx = sx * sx * fp.xx, dxy = sx * sy * fp.xy, dyy = sy * sy * fp.yy;
-    const double widest = std::max(dxx, dyy);
-    if (kEwaSupport * (widest + 1.0) > kEwaHalfBox * kEwaHalfBox) { // the loop cap: shrink, same shape
-        const double k = (kEwaHalfBox * kEwaHalfBox / kEwaSupport - 1.0) / widest;
-        dxx *= k, dxy *= k, dyy *= k;
-    }
-    const double mxx = dxx + 1.0, mxy = dxy, myy = dyy + 1.0, det = mxx * myy - mxy * mxy;
+    const EwaLevelShape m = reference_ewa_level_shape(chain, level, fp.xx, fp.xy, fp.yy, alpha);
+    const double mxx = m.xx, mxy = m.xy, myy = m.yy, det = mxx * myy - mxy * mxy;
     const double cx = u * img.width, cy = v * img.height;
     const double hx = std::sqrt(kEwaSupport * mxx), hy = std::sqrt(kEwaSupport * myy);
     std::vector<WeightedTexel> out;

@@ -219,8 +219,8 @@ float tfi_debug_ewa(vec2 dUVdx, vec2 dUVdy, vec2 textureSize, int levels, tf_Sam
             float e = maxAniso >= 1.0 ? maxAniso : 1.0;
             minor2 = max(minor2, major2 / (e * e));
             const float majorTexels = 0.25 * float(TF_EWA_MAX_TEXELS - 3) / sqrt(TF_EWA_SUPPORT);
-            lambda = tfi_log2(m) + max(0.5 * log2(max(minor2, 1e-30)), 0.5 * log2(major2) - log2(majorTexels)) +
-                     s.lodBias;
+            lambda = tfi_log2(m) +
+                     max(0.5 * log2(max(minor2, 1e-30)) - 0.5, 0.5 * log2(major2) - log2(majorTexels)) + s.lodBias;
             vec2 u1 = tfi_debug_major_direction(xx, xy, yy);
             major = 0.5 * m * sqrt(major2) * u1; // the pre-image J·(disk of radius ½), in texels
             minor = 0.5 * m * sqrt(minor2) * vec2(-u1.y, u1.x);

@@ -7,13 +7,22 @@
 //          Every resource kind and a TF_SOURCE (common.glsl) have the same overloads, extras such as
 //          `int layer` right after uv: the prototype list near the end of this file.
 // Math:    J = [dUVdx dUVdy]·size in level-0 texels; the footprint ellipse J·Jᵀ, its minor axis grown to
-//          major/maxAniso. On level l (texels scaled by S = size_l/size_0) the filter uses M = S·J·Jᵀ·S + I (the
-//          +I is one texel of reconstruction: it makes zoom-in work). Texels whose centres have
-//          r² = xᵀM⁻¹x < R² = 2 weigh exp(−alpha·r²) − exp(−alpha·R²), zero at the support's edge (no texel pops in or
-//          out). A level's value is the weighted least-squares line through the texels read, at uv (exact on a
+//          major/maxAniso. On level l (texels scaled by S = size_l/size_0, s² = det S) the filter uses
+//          M = S·J·Jᵀ·S + c·I. Texels whose centres have r² = xᵀM⁻¹x < R² = 2 weigh exp(−alpha·r²) −
+//          exp(−alpha·R²), zero at the support's edge (no texel pops in or out); their covariance is v·M, v the
+//          weight's variance in units of M (0.21 at alpha 2). The aim is a Gaussian pixel over level 0
+//          reconstructed bilinearly: v·J·Jᵀ (the truth's ¼·J·Jᵀ less the support's cut at alpha 2) plus the
+//          tent's 1/6 level-0 texel². A level-l texel already averages a box of 1/s² level-0 texels ((1 − s²)/12
+//          level-l texel²), so the level adds c₀ = (s²/6 − (1 − s²)/12)/v = (3s² − 1)/(12v) (0.79 on level 0 at
+//          alpha 2, down to −0.40), raised to what makes M's smaller eigenvalue TFI_EWA_SMALLEST = 2.5 (a
+//          Gaussian sampled finely enough that a level's Nyquist-rate patterns and step edges are not passed
+//          on) and at most 1: M = S·J·Jᵀ·S + I where the footprint is under 1.5 texels² (zoom-in works), the
+//          loop cap's bound.
+//          A level's value is the weighted least-squares line through the texels read, at uv (exact on a
 //          linear texture, where a weighted mean sits on the weights' centroid), clamped to their range.
-//          λ = max(log2 minor, log2 major − log2((K−3)/(4R))) + lodBias, clamped: the minor axis spans 2 texels
-//          (pbrt's rule) unless the major one would exceed the loop cap; floor(λ) and floor(λ)+1 blended by frac(λ).
+//          λ = max(log2 minor − ½, log2 major − log2((K−3)/(4R))) + lodBias, clamped: the minor semi-axis spans
+//          √2..2√2 texels of level floor(λ) (S·J·Jᵀ·S's smaller eigenvalue 2..8, where M needs little lift),
+//          unless the major one would exceed the loop cap; floor(λ) and floor(λ)+1 blended by frac(λ).
 //          Magnification: where trilinear's λ < 1, level 0's trilinear share 1 − clamp(λ, 0, 1) goes to the
 //          magnification filter (bilinear, or TF_MAGNIFY's cubic) averaged over the footprint: the mean of 4 of
 //          its lookups at uv ± k·(dUVdx ± dUVdy), k² the weight's variance, so their spread is the ellipse's.
@@ -28,10 +37,10 @@
 // Needs:   a full MIP chain. tf_ewa: texelFetch only. tf_ewa_hw: the sampler bound with the texture filters
 //          linearly (min and mag; any mipmapMode) with the wrap mode s.wrap, no LOD bias, no LOD clamp
 //          narrower than the levels (the sampler's bias and clamps apply to textureLod too).
-// Cost:    tf_ewa reads each texel of the support once on each of 2 levels: about 30 for an isotropic footprint,
-//          350 at 16:1; at most K² a level whatever the input. tf_ewa_hw: one lookup per 2x2 block that meets the
-//          support, two for a twisted one: about 0.45 of those reads (its weights are evaluated twice); at most
-//          2(K/2+1)² a level.
+// Cost:    tf_ewa reads each texel of the support once on each of 2 levels: about 41 for an isotropic footprint,
+//          340 at 16:1, 89.3 on the plane; at most K² a level whatever the input. tf_ewa_hw: one lookup per 2x2
+//          block that meets the support, two for a twisted one: about 0.4 of those reads (its weights are
+//          evaluated twice), 33.0 on the plane; at most 2(K/2+1)² a level.
 //          Where λ < 1, 4 lookups of the magnification filter more (bilinear: 16 fetches or 4 taps).
 // Degenerate input: zero gradients → the magnification filter alone on level 0 (with lodMin >= 1: lodMin's
 //          level with M = I); huge gradients → the coarsest level the clamps allow (normally the 1x1 mean);
@@ -60,6 +69,10 @@ const float TFI_EWA_SPAN_MARGIN = 1.0 / 256.0;
 // The weight's support: r² = xᵀM⁻¹x < TF_EWA_SUPPORT (R², in the footprint's own units: r = 1 is one
 // pixel from its centre). Below, M is scaled by R² so that the loops test the support ellipse against 1.
 const float TF_EWA_SUPPORT = 2.0;
+
+// M's smallest eigenvalue on a level (level texels²), unless the footprint's own is below it by more than 1:
+// then M = S·J·Jᵀ·S + I (header, Math).
+const float TFI_EWA_SMALLEST = 2.5;
 
 // The ellipse of one lookup before any level: level-0 texel space, scaled by 1/m² (m = the largest
 // |gradient component|, so that 1e30 gradients do not overflow).

@@ -30,10 +30,11 @@ tfi_EwaShape tfi_ewa_shape(TFI_T, vec2 dUVdx, vec2 dUVdy, tf_Sampler s, float ma
             // Clamped covariance = minor2·I + (major2 - minor2)·e1e1ᵀ, e1e1ᵀ the projector on the major axis.
             vec3 p1 = d > 0.0 ? 0.5 * vec3(1.0 + h / d, xy / d, 1.0 - h / d) : vec3(0.5, 0.0, 0.5);
             shape = tfi_EwaShape(vec3(minor2, 0.0, minor2) + max(major2 - minor2, 0.0) * p1, major2, minor2, m);
-            // On the LOD's level the support's major semi-axis stays inside the loop cap (see the header).
+            // The minor semi-axis spans √2 texels of level λ (see the header), unless the support's major
+            // semi-axis would then exceed the loop cap.
             const float majorTexels = 0.25 * float(TF_EWA_MAX_TEXELS - 3) / sqrt(TF_EWA_SUPPORT);
-            lambda = tfi_log2(m) + max(0.5 * log2(max(minor2, 1e-30)), 0.5 * log2(major2) - log2(majorTexels)) +
-                     s.lodBias;
+            lambda = tfi_log2(m) +
+                     max(0.5 * log2(max(minor2, 1e-30)) - 0.5, 0.5 * log2(major2) - log2(majorTexels)) + s.lodBias;
         }
     }
     lambda = tfi_clamp_lod(lambda, s, TFI_A);
@@ -60,7 +61,7 @@ void tfi_ewa_spread(TFI_T, vec2 dUVdx, vec2 dUVdy, float alpha, out vec2 a, out 
 // from it are exact in float. For repeat/mirror, base is moved by a multiple of 2·size into
 // [0, 2·size): both modes repeat every 2·size texels, and the parity that anchors tf_ewa_hw's 2x2 grid
 // is kept. uv has been through tf_reduce_uv.
-void tfi_ewa_level_ellipse(TFI_T, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, out vec3 M,
+void tfi_ewa_level_ellipse(TFI_T, vec2 uv, int level, int wrapMode, tfi_EwaShape shape, float alpha, out vec3 M,
                           out float det, out vec2 base, out vec2 frac)
 {
     vec2 size = vec2(tf_level_size(TFI_A, level));
@@ -74,10 +75,18 @@ void tfi_ewa_level_ellipse(TFI_T, vec2 uv, int level, int wrapMode, tfi_EwaShape
         k = min(shape.m, sqrt((halfBox * halfBox / TF_EWA_SUPPORT - 1.0) / max(D.x, D.z)));
     }
     float k2 = k * k;
-    M = TF_EWA_SUPPORT * (k2 * D + vec3(1.0, 0.0, 1.0));
-    // det(M_unscaled) = k⁴·det(D) + k²·trace(D) + 1, det(D) = sc.x²·sc.y²·major2·minor2: exact form, >= 1.
-    det = TF_EWA_SUPPORT * TF_EWA_SUPPORT *
-          (k2 * k2 * (sc.x * sc.x * sc.y * sc.y) * shape.major2 * shape.minor2 + k2 * (D.x + D.z) + 1.0);
+    // The level's reconstruction recon·I (header, Math: c): the truth's bilinear tent on level 0 less the box
+    // this level already averages, in units of the weight's variance; at least what lifts M's smaller
+    // eigenvalue to TFI_EWA_SMALLEST (k²·D's is k²·det(D)/its larger one), at most 1 (the loop cap above
+    // assumes 1).
+    float detD = (sc.x * sc.x * sc.y * sc.y) * shape.major2 * shape.minor2;
+    float majorD = 0.5 * (D.x + D.z) + length(vec2(0.5 * (D.x - D.z), D.y));
+    float minorD = majorD > 0.0 ? k2 * detD / majorD : 0.0;
+    float recon = min(
+        max((3.0 * sc.x * sc.y - 1.0) / (12.0 * tfi_ewa_weight_variance(alpha)), TFI_EWA_SMALLEST - minorD), 1.0);
+    M = TF_EWA_SUPPORT * (k2 * D + vec3(recon, 0.0, recon));
+    // det(M_unscaled) = k⁴·det(D) + recon·k²·trace(D) + recon²: exact form, >= 1 (both eigenvalues are).
+    det = TF_EWA_SUPPORT * TF_EWA_SUPPORT * (k2 * k2 * detD + recon * k2 * (D.x + D.z) + recon * recon);
     vec2 c = clamp(uv * size, -TF_MAX_TEXEL_COORD, TF_MAX_TEXEL_COORD);
     base = floor(c);
     frac = c - base;
@@ -92,7 +101,7 @@ vec4 tfi_ewa_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaShape s
     vec3 M;
     float det;
     vec2 base, frac;
-    tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, M, det, base, frac);
+    tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, alpha, M, det, base, frac);
     ivec2 size = tf_level_size(TFI_A, level);
     vec2 rowSpan = tfi_ewa_rows(M, frac.y);
     int rows = int(clamp(rowSpan.y - rowSpan.x + 1.0, 0.0, float(TF_EWA_MAX_TEXELS)));
@@ -157,7 +166,7 @@ vec4 tfi_ewa_blocks_hw(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi_EwaSha
     vec3 M;
     float det;
     vec2 base, frac;
-    tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, M, det, base, frac);
+    tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, alpha, M, det, base, frac);
     vec2 size = vec2(tf_level_size(TFI_A, level));
     tfi_EwaBlocks blocks = tfi_ewa_blocks(M, base, frac);
     bool picking = pick >= 0.0; // a constant at each call

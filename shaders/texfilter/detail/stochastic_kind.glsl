@@ -37,7 +37,7 @@ vec4 tfi_ewa_stochastic_level(TFI_T, vec2 uv TFI_X, int level, int wrapMode, tfi
     vec3 M;
     float det;
     vec2 base, frac;
-    tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, M, det, base, frac);
+    tfi_ewa_level_ellipse(TFI_A, uv, level, wrapMode, shape, alpha, M, det, base, frac);
     vec2 rowSpan = tfi_ewa_rows(M, frac.y);
     int rows = int(clamp(rowSpan.y - rowSpan.x + 1.0, 0.0, float(TF_EWA_MAX_TEXELS)));
     float total = 0.0, target = 0.0, below = 0.0;
