@@ -75,10 +75,10 @@ failed=
 # Speed: trilinear, brilinear and sat against hw-trilinear; aniso's two forms and EWA against hw-aniso16.
 run_bench timing --size "${TF_TIMING_SIZE:-512x512}" --lookups-per-pixel "${TF_LOOKUPS:-16}" --spp 1 \
     --flicker-frames 2 --warmup 5 --frames 20 \
-    --filters trilinear,brilinear,sat,sat-assembly,hw-trilinear,aniso16,aniso16-hw,hw-aniso16,ewa,ewa-hw
+    --filters trilinear,brilinear,sat,sat-assembly,hw-trilinear,aniso16,aniso16-hw,hw-aniso16,ewa,ewa-hw,ewa-fast
 # Quality: EWA's error and flicker against the hardware's anisotropic filter, the manual/hardware pairs; at one
 # lookup a pixel, so its bench.json also judges the harness's no-texture frame against the minimal pass.
 run_bench quality --size "${TF_QUALITY_SIZE:-512x512}" --warmup 1 --frames 3 \
-    --filters trilinear,hw-trilinear,aniso16,aniso16-hw,hw-aniso16,ewa,ewa-hw
+    --filters trilinear,hw-trilinear,aniso16,aniso16-hw,hw-aniso16,ewa,ewa-hw,ewa-fast
 tail -n 4 "$log"
 [ -z "$failed" ] || { echo "gpu_bench: failed or cut off by the ${limit} s limit:$failed (see $log)" >&2; exit 1; }

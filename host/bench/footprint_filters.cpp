@@ -80,8 +80,8 @@ std::vector<FootprintFilter> footprint_filters()
 
 std::vector<std::string> default_footprint_labels()
 {
-    std::vector<std::string> labels = {"ewa",       "ewa-hw",     "hw-aniso16", "hw-trilinear",
-                                       "trilinear", "aniso16",    "aniso16-hw", "sat-assembly"};
+    std::vector<std::string> labels = {"ewa",          "ewa-hw",    "ewa-fast", "hw-aniso16",   "hw-trilinear",
+                                       "trilinear",    "aniso16",   "aniso16-hw", "sat-assembly"};
     if (oiio_texture_available()) // OpenImageIO's modes a renderer built on it would use
         for (const char* mode : {"oiio-trilinear", "oiio-aniso", "oiio-aniso-bicubic", "oiio-aniso-smartbicubic"})
             labels.push_back(mode);

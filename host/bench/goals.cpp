@@ -93,6 +93,35 @@ BenchGoal harness_frame(const BenchRun& run)
     return goal;
 }
 
+// ewa-fast: within 1 dB of ewa against the Gaussian truth, and flicker no worse than hw-aniso16's, on every scene
+// all three ran on.
+BenchGoal ewa_fast_every_scene(const BenchRun& run)
+{
+    BenchGoal goal{"ewa-fast within 1 dB of ewa (Gaussian truth), flicker no worse than hw-aniso 16's, every scene", "",
+                   "", ""};
+    int compared = 0, kept = 0;
+    for (const BenchResult& f : run.results) {
+        if (f.filter.label != "ewa-fast")
+            continue;
+        const BenchResult* e = find(run, f.scene, "ewa");
+        const BenchResult* h = find(run, f.scene, "hw-aniso16");
+        if (!e || !h)
+            continue;
+        ++compared;
+        const double db = psnr_from_rmse(f.rmse_gaussian) - psnr_from_rmse(e->rmse_gaussian);
+        const bool ok = db >= -1.0 && f.flicker_gaussian <= h->flicker_gaussian;
+        kept += ok;
+        goal.measured += (goal.measured.empty() ? "" : "; ") + to_string(f.scene) + format(" %+.2f dB", db) +
+                         format(", flicker %.4f", f.flicker_gaussian) + format(" vs %.4f", h->flicker_gaussian);
+    }
+    goal.measured = std::to_string(kept) + " of " + std::to_string(compared) + " scenes" +
+                    (goal.measured.empty() ? "" : " (" + goal.measured + ")");
+    goal.status = compared == 0 ? not_applicable : kept == compared ? met : missed;
+    if (compared == 0)
+        goal.note = "ewa-fast, ewa or hw-aniso16 was not run";
+    return goal;
+}
+
 // Does `label` beat hw-aniso16 on the Gaussian truth on plane, tunnel and slanted? Fills `measured`.
 bool ewa_beats_hw_aniso(const BenchRun& run, const std::string& label, std::string& measured, int& compared)
 {
@@ -213,6 +242,9 @@ std::vector<BenchGoal> judge_goals(const BenchRun& run)
                               "hw-aniso16", 2.0, true));
     goals.push_back(time_goal(run, real_gpu, "ewa --taps hardware <= 3x hw-aniso 16 (real GPU)", "ewa-hw", "hw-aniso16",
                               3.0, true));
+    goals.push_back(time_goal(run, real_gpu, "ewa-fast <= 1.5x hw-aniso 16 (real GPU)", "ewa-fast", "hw-aniso16", 1.5,
+                              true));
+    goals.push_back(ewa_fast_every_scene(run));
 
     // EWA: more accurate than the hardware's anisotropic filter, and the fastest form that is within 2x of it.
     BenchGoal ewa{"ewa: error against the Gaussian truth below hw-aniso 16's on plane, tunnel and slanted", "", "", ""};
