@@ -25,7 +25,7 @@
 set -euo pipefail
 
 FUNCTIONS=(tf_nearest tf_bilinear tf_nearest_mip tf_bilinear_mip tf_trilinear tf_brilinear tf_aniso
-    tf_aniso_hw tf_ewa tf_ewa_hw tf_sat tf_sat_assembly)
+    tf_aniso_hw tf_ewa tf_ewa_hw tf_ewa_fast tf_sat tf_sat_assembly)
 
 if [[ ${1:-} == --list ]]; then
     printf '%s\n' "${FUNCTIONS[@]}"
@@ -53,7 +53,7 @@ call_for() {
     fi
     case "$1" in
     tf_nearest | tf_bilinear) echo "$1(tex, uv, s)" ;;
-    tf_nearest_mip | tf_bilinear_mip | tf_trilinear) echo "$1(tex, uv, dx, dy, s)" ;;
+    tf_nearest_mip | tf_bilinear_mip | tf_trilinear | tf_ewa_fast) echo "$1(tex, uv, dx, dy, s)" ;;
     tf_brilinear) echo "tf_brilinear(tex, uv, dx, dy, s, $band)" ;;
     tf_aniso | tf_aniso_hw) echo "$1(tex, uv, dx, dy, s, $probes, $shape)" ;;
     tf_ewa | tf_ewa_hw) echo "$1(tex, uv, dx, dy, s, $alpha, $maxAniso)" ;;
