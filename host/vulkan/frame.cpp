@@ -52,9 +52,13 @@ void record_frame(const GpuRenderer& r, VkCommandBuffer cb, VkQueryPool timestam
 
 void record_frame_readback(const GpuRenderer& r, VkCommandBuffer cb)
 {
-    if (r.kind == RenderKind::compute)
-        record_host_read(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
-    else
+    if (r.kind == RenderKind::compute) {
+        memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT);
+        const VkBufferCopy copy{0, 0, r.pixels.size};
+        vkCmdCopyBuffer(cb, r.pixels.buffer, r.pixels_readback.buffer, 1, &copy);
+        record_host_read(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    } else
         record_target_readback(cb, r.targets);
 }
 

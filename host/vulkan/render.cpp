@@ -61,9 +61,12 @@ std::unique_ptr<GpuRenderer> create_renderer(const VulkanContext& context, const
     VkShaderStageFlags push_stages = VK_SHADER_STAGE_FRAGMENT_BIT;
     if (r.kind == RenderKind::compute) {
         stages = push_stages = VK_SHADER_STAGE_COMPUTE_BIT;
-        r.pixels = create_host_buffer(context, VkDeviceSize(r.width) * r.height * sizeof(glm::vec4),
-                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        const VkDeviceSize bytes = VkDeviceSize(r.width) * r.height * sizeof(glm::vec4);
+        r.pixels = create_device_buffer(context, bytes,
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         cleanup.add([&context, &r] { destroy_buffer(context, r.pixels); });
+        r.pixels_readback = create_host_buffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        cleanup.add([&context, &r] { destroy_buffer(context, r.pixels_readback); });
         buffers.push_back({HARNESS_BINDING_RESULTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, r.pixels.buffer});
     } else {
         r.targets = create_render_targets(context, r.width, r.height, r.kind == RenderKind::mesh, cleanup);
@@ -93,7 +96,8 @@ Image render_frame(GpuRenderer& r, const SceneParams& scene)
         record_frame(r, cb, VK_NULL_HANDLE, 0);
         record_frame_readback(r, cb);
     });
-    return read_pixels(r.kind == RenderKind::compute ? r.pixels : r.targets.readback, int(r.width), int(r.height));
+    return read_pixels(r.kind == RenderKind::compute ? r.pixels_readback : r.targets.readback, int(r.width),
+                       int(r.height));
 }
 
 Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
