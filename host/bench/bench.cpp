@@ -191,12 +191,13 @@ void print_yardsticks(const BenchRun& run, SceneKind kind)
     std::printf("\n");
 }
 
-// The yardsticks a run times beside its baseline: in the compute stage the minimal pass, and with a float texture
-// that is square and a power of two (what its mask repeat assumes) the minimal trilinear pass too.
+// The yardsticks a run times beside its baseline: in the compute stage at one lookup a pixel (the minimal pass makes
+// one) the minimal pass, and with a float texture that is square and a power of two (what its mask repeat assumes)
+// the minimal trilinear pass too.
 std::vector<MinimalPass> minimal_passes(const BenchConfig& config, const GpuTexture& texture, int texture_width,
                                         int texture_height)
 {
-    if (config.stage != Stage::compute)
+    if (config.stage != Stage::compute || config.lookups_per_pixel != 1)
         return {};
     const bool power_of_two = texture_width == texture_height && (texture_width & (texture_width - 1)) == 0;
     if (format_info(texture.format).integer || !power_of_two)

@@ -83,11 +83,13 @@ BenchGoal harness_frame(const BenchRun& run)
         worst = std::max(worst, ratio);
         goal.measured += (goal.measured.empty() ? "" : "; ") + to_string(scene) + format(" %.2fx", ratio);
     }
-    if (run.minimal.empty())
+    if (run.config.stage != Stage::compute)
         goal.status = not_applicable, goal.note = "the minimal pass runs in the compute stage only";
     else if (run.config.lookups_per_pixel != 1)
         goal.status = not_applicable, goal.note = "the minimal pass makes one lookup a pixel; this run timed " +
                                                   std::to_string(run.config.lookups_per_pixel);
+    else if (run.minimal.empty())
+        goal.status = not_applicable, goal.note = "no 2D scene ran";
     else
         goal.status = worst <= 1.25 ? met : missed;
     return goal;
