@@ -653,7 +653,7 @@ vulkan_errors() {
     expect_error "--device 99 (info)" --device - -- "$TEXFILTER" info --device 99
 }
 
-# Issue 10, item 1: golden --out never deletes what it did not make.
+# `golden --out` never deletes what it did not make.
 golden_output_directory() {
     local case_name
     # awk alone: under pipefail, grep | awk '...; exit' can kill grep with SIGPIPE and the script with it.
@@ -721,7 +721,7 @@ golden_output_directory() {
     rm -rf theirs ours tampered outside.txt elsewhere linked unlisted
 }
 
-# Issue 10, item 2: an output is never one of the inputs; read-only files and links behave as documented.
+# An output is never one of the inputs; read-only files and links behave as documented.
 outputs_and_inputs() {
     cp ok.png texture.png
     local texture_sum
@@ -766,7 +766,7 @@ if [[ $(id -u) -eq 0 ]]; then
     AS_USER=(setpriv --reuid=nobody --regid=nogroup --clear-groups --)
 fi
 
-# Issue 10, item 3: unwritable outputs are found before the work, with the reason; signals leave no litter.
+# Unwritable outputs are found before the work, with the reason; signals leave no litter.
 unwritable_outputs() {
     if [[ $(id -u) -eq 0 ]] && ! command -v setpriv >/dev/null; then
         skip "unwritable outputs" "running as root without setpriv"
@@ -1050,7 +1050,7 @@ outputs_created_first() {
     fi
 }
 
-# Issue 10, item 4: truncated images are errors naming the file.
+# Truncated images are errors naming the file.
 truncated_images() {
     local render=("$TEXFILTER" render --scene zoom --filter nearest "${REF[@]}")
     oiiotool --pattern checker:width=8:height=8 256x256 3 -d uint8 -o whole.jpg
@@ -1067,7 +1067,7 @@ truncated_images() {
         "${render[@]}" --texture truncated_idat.png -o out.png
 }
 
-# Issue 10, item 5: sizes are checked from headers against the memory budget and the device.
+# Sizes are checked from headers against the memory budget and the device.
 memory_budgets() {
     local render=("$TEXFILTER" render --scene zoom --filter nearest "${REF[@]}")
     write_png_header_only bomb.png 16384 16384
@@ -1118,7 +1118,7 @@ EOF
     rm -f bomb.png k1024.png oversize.png huge16k.png
 }
 
-# Issue 10, items 6-9: extreme lookups finish with a result, HDR and NaN texels for sat, CSV messages.
+# Extreme lookups finish with a result, HDR and NaN texels for sat, CSV messages.
 lookups_and_texels() {
     # One lookup with gradients of 1e100 among good ones: every row answered, all finite (the reference
     # once threw "no texel weighs anything" for ewa and lost the whole batch).
@@ -1170,7 +1170,7 @@ EOF
     rm -f extreme.csv nan_texel.pfm header_only.csv header_only_out.csv bom.csv bom_out.csv garbage.csv stdout stderr
 }
 
-# Issue 10, item 10: the same command gives the same bytes.
+# The same command gives the same bytes.
 reproducible_outputs() {
     for ext in png exr pfm; do
         "${RENDER[@]}" -o first.$ext >/dev/null

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Compile tests for every resource kind of the includes (issue 13), and SPIR-V checks of the bindless hook.
+"""Compile tests for every resource kind of the includes, and SPIR-V checks of the bindless hook.
 
 usage: compile_resources.py --list
        compile_resources.py GLSLANG GLSLC SPIRV_DIS INCLUDE_DIR GROUP
@@ -68,7 +68,7 @@ KINDS = {
                    textures=[("sampler2D", "depth"), ("texture2D", "depth2")],
                    forms=[dict(T="depth", X=", cmp", manual=True, queries=False, hw=False),
                           dict(T="depth2", X=", cmp", manual=True, queries=False, hw=False)]),
-    # Cube maps (cube.glsl, issue 15): one kind with both cube bits, fragment only (compile_includes compiles
+    # Cube maps (cube.glsl): one kind with both cube bits, fragment only (compile_includes compiles
     # cube.glsl with a samplerCube in every stage). Its two forms take both remaining paths: a separate sampler
     # (the sampled-image constructor) and an array (the layer), every family's manual and _hw entry points.
     "cube": dict(bit="TF_RESOURCE_CUBE | TF_RESOURCE_CUBE_ARRAY", stages=("frag",),

@@ -32,7 +32,7 @@ render triangles checker trilinear
 render triangles checker trilinear --derivatives ray
 render mesh zoneplate aniso
 render mesh mipcolors trilinear
-# Issue 16: bicubic magnification, the analytic truth that judges it, stochastic filtering, ray cones.
+# Bicubic magnification, the analytic truth that judges it, stochastic filtering, ray cones.
 for filter in bspline catmull-rom; do
   render zoom zoneplate "$filter" --texture-size 64
 done

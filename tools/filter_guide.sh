@@ -6,7 +6,7 @@
 #
 # usage: tools/filter_guide.sh [TEXFILTER] [pictures|numbers|counts|all]   (default: build/texfilter, all)
 #   pictures  docs/images/filters/*.png: crops of 256x256 renders (plane: 512² checker), magnified 2x by
-#             pixel replication, grey (the R channel, 8-bit sRGB), tiled by oiiotool; ~0.1 MB in all
+#             pixel replication, grey (the R channel, 8-bit sRGB), tiled by oiiotool (front.png: README's)
 #   numbers   prints, for plane, tunnel and slanted (256x256, checker 512, fragment stage, fine quads, 256
 #             samples a pixel, 8 path frames), tf_aniso with 16 probes in the gpu and feline shapes: PSNR
 #             against the box and Gaussian truths, flicker against each, texel reads a covered pixel; the gpu
@@ -77,9 +77,10 @@ if [[ $what == pictures || $what == all ]]; then
                 -o "$work/$n-crop.png"
             inputs+=("$work/$n-crop.png")
         done
-        oiiotool "${inputs[@]}" --mosaic:pad=4 "2x$((($# + 1) / 2))" -o "$out/$name.png"
+        oiiotool "${inputs[@]}" --mosaic:pad=4 "${columns}x$((($# + columns - 1) / columns))" -o "$out/$name.png"
         echo "$out/$name.png"
     }
+    columns=2
     # The plane's far rows (66..113 of 256, towards the horizon: long, thin footprints), where the filters
     # differ; the two truths first.
     crop=160x48+48+66
@@ -99,6 +100,13 @@ if [[ $what == pictures || $what == all ]]; then
     render zoom-bspline.png zoom bspline
     render zoom-catmull-rom.png zoom catmull-rom
     strip magnify zoom-truth zoom-bilinear zoom-bspline zoom-catmull-rom
+    # README's front picture: the plane from the middle to the horizon (rows 62..141) under the Gaussian truth,
+    # nearest, trilinear, hardware aniso 16, tf_aniso and tf_ewa, three a row.
+    crop=200x80+28+62
+    columns=3
+    render nearest.png plane nearest
+    render trilinear.png plane trilinear
+    strip front truth-gauss nearest trilinear hw-aniso aniso ewa
     du -ch "$out"/*.png | tail -n 1
 fi
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# SPIR-V code size of each public filter function (issue 13: "the code size ... must not grow").
+# SPIR-V code size of each public filter function: it must not grow.
 #
 # One small compute shader per function (sampler2D kind, the form users call today), compiled with
 # `glslc -O --target-env=vulkan1.2`, disassembled with spirv-dis. The count:

@@ -116,7 +116,7 @@ struct BenchRun {
 BenchRun run_bench(const VulkanContext& context, const BenchConfig& config, const MipChain& chain,
                    const std::string& directory);
 
-// The goals of issue 5 / docs/BENCHMARKS.md judged on a finished run (a real GPU's goals are
+// The goals of docs/BENCHMARKS.md judged on a finished run (a real GPU's goals are
 // not-applicable on a CPU device, with the measured figure still given).
 std::vector<BenchGoal> judge_goals(const BenchRun& run);
 

@@ -1,5 +1,5 @@
 #pragma once
-// EWA's error against footprint size (issue 16: "ewa --taps hardware within 0.5 dB of the manual form at every
+// EWA's error against footprint size (the goal "ewa --taps hardware within 0.5 dB of the manual form at every
 // footprint size"): the minify scene at 1 .. 64 level-0 texels a pixel, each form's PSNR against the
 // Gaussian-pixel truth of that scene (the truth EWA approximates). EwaSweepPoint is in bench/bench.h.
 #include "bench/bench.h"

@@ -1,4 +1,4 @@
-// The goals of issue 5 (docs/BENCHMARKS.md), judged on a finished benchmark run.
+// The goals of docs/BENCHMARKS.md, judged on a finished benchmark run.
 #include "bench/bench.h"
 #include <cmath>
 #include <cstdio>
@@ -142,7 +142,7 @@ bool ewa_beats_hw_aniso(const BenchRun& run, const std::string& label, std::stri
     return all && compared > 0;
 }
 
-// Issue 16: brilinear, which exists to read fewer texels, faster than trilinear on every scene both ran on
+// Brilinear, which exists to read fewer texels, faster than trilinear on every scene both ran on
 // (median frame times of one interleaved run: frame_timer.h).
 BenchGoal brilinear_every_scene(const BenchRun& run)
 {
@@ -168,7 +168,7 @@ BenchGoal brilinear_every_scene(const BenchRun& run)
     return goal;
 }
 
-// Issue 16: ewa's Gaussian-truth error and its flicker both below hw-aniso 16's on every scene both ran on.
+// ewa's Gaussian-truth error and its flicker both below hw-aniso 16's on every scene both ran on.
 BenchGoal ewa_every_scene(const BenchRun& run, bool real_gpu)
 {
     BenchGoal goal{"ewa: Gaussian-truth error and flicker below hw-aniso 16's on every scene", "", "", ""};
@@ -196,7 +196,7 @@ BenchGoal ewa_every_scene(const BenchRun& run, bool real_gpu)
     return goal;
 }
 
-// Issue 16: ewa --taps hardware within 0.5 dB of the manual form at every footprint size of the sweep.
+// ewa --taps hardware within 0.5 dB of the manual form at every footprint size of the sweep.
 BenchGoal ewa_taps_every_size(const BenchRun& run)
 {
     BenchGoal goal{"ewa --taps hardware within 0.5 dB of --taps manual (Gaussian truth) at every footprint size", "",

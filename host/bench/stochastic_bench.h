@@ -1,5 +1,5 @@
 #pragma once
-// Stochastic filtering in the bench (issue 16): for each of bilinear, trilinear, aniso16 and ewa that the run
+// Stochastic filtering in the bench: for each of bilinear, trilinear, aniso16 and ewa that the run
 // has, with white and blue noise, on one 2D scene: the time of one stochastic frame (one texel a lookup) and the
 // error of the mean of the first 1, 4, 16 and 64 frames against the scene's box and Gaussian truths, beside the
 // deterministic filter's own row.
