@@ -97,6 +97,39 @@ bool check_throws(bool threw, const std::string& message, const std::string& par
                  ok ? "" : threw ? "threw \"" + message + "\"" : "threw " + message);
 }
 
+bool check_bound(const std::string& what, double measured, double bound, bool upper, const char* file, int line)
+{
+    const bool ok = upper ? measured <= bound : measured >= bound; // NaN fails
+    std::printf("%-4s %-72s %.4g (%s %.4g)\n", ok ? "ok" : "FAIL", what.c_str(), measured, upper ? "bound" : "at least",
+                bound);
+    return check(ok, file, line, what,
+                 "measured " + show(measured) + (upper ? ", bound " : ", at least ") + show(bound));
+}
+
+bool check_true(const std::string& what, bool ok, const std::string& detail, const char* file, int line)
+{
+    std::printf("%-4s %-72s %s\n", ok ? "ok" : "FAIL", what.c_str(), detail.c_str());
+    return check(ok, file, line, what, detail);
+}
+
+bool check_contains(const std::string& text, std::initializer_list<std::string> parts, const char* file, int line,
+                    const char* text_expr)
+{
+    std::string missing;
+    for (const std::string& part : parts)
+        if (text.find(part) == std::string::npos)
+            missing += (missing.empty() ? "\"" : ", \"") + part + "\"";
+    return check(missing.empty(), file, line, std::string(text_expr) + " contains every part",
+                 "\"" + text + "\" lacks " + missing);
+}
+
+bool check_eq_text(const std::string& a, const std::string& b, const char* file, int line, const char* a_text,
+                   const char* b_text)
+{
+    const bool ok = a == b;
+    return check(ok, file, line, std::string(a_text) + " == " + b_text, ok ? "" : "\"" + a + "\" vs \"" + b + "\"");
+}
+
 bool near(double a, double b, double eps) { return a == b || std::fabs(a - b) <= eps; }
 
 bool near(const glm::dvec4& a, const glm::dvec4& b, double eps)

@@ -16,6 +16,7 @@
 #include <exception>
 #include <filesystem>
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,17 @@ bool check_near(const glm::dvec4& a, const glm::dvec4& b, double eps, const char
 // threw: the expression threw a tf::Error; message: what it threw (any exception).
 bool check_throws(bool threw, const std::string& message, const std::string& part, const char* file, int line,
                   const char* expr);
+
+// Measured against a bound, and named conditions: each prints one line, "ok" or "FAIL", what, the measured
+// value and its bound (or the detail), so a run shows its margins and a device's log can be read for them,
+// and is one doctest assertion naming what, measured and bound when it fails. NaN fails either bound.
+bool check_bound(const std::string& what, double measured, double bound, bool upper, const char* file, int line);
+bool check_true(const std::string& what, bool ok, const std::string& detail, const char* file, int line);
+// `text` holds every one of `parts`.
+bool check_contains(const std::string& text, std::initializer_list<std::string> parts, const char* file, int line,
+                    const char* text_expr);
+bool check_eq_text(const std::string& a, const std::string& b, const char* file, int line, const char* a_text,
+                   const char* b_text);
 
 // Equal, or at most eps apart, in every component (NaN is never near).
 bool near(double a, double b, double eps);
@@ -154,6 +166,15 @@ SampleResult run_sample(const std::string& texfilter, const std::filesystem::pat
 // Doubles or glm::dvec4s, every component within eps.
 #define CHECK_NEAR(a, b, eps) \
     ::tf::test::check_near((a), (b), (eps), __FILE__, __LINE__, #a " ~= " #b " within " #eps)
+// measured <= bound (CHECK_LE) or measured >= bound (CHECK_GE), what a string; printed either way.
+#define CHECK_LE(what, measured, bound) ::tf::test::check_bound((what), (measured), (bound), true, __FILE__, __LINE__)
+#define CHECK_GE(what, measured, bound) ::tf::test::check_bound((what), (measured), (bound), false, __FILE__, __LINE__)
+// A named condition and what was seen (strings); printed either way.
+#define CHECK_TRUE(what, ok, detail) ::tf::test::check_true((what), bool(ok), (detail), __FILE__, __LINE__)
+// The text (a std::string) contains each of the parts that follow it.
+#define CHECK_CONTAINS(text, ...) ::tf::test::check_contains((text), {__VA_ARGS__}, __FILE__, __LINE__, #text)
+// Two strings equal.
+#define CHECK_EQ_TEXT(a, b) ::tf::test::check_eq_text((a), (b), __FILE__, __LINE__, #a, #b)
 // The expression throws tf::Error whose message contains `part`.
 #define CHECK_THROWS_WITH(expr, part)                                                             \
     do {                                                                                          \

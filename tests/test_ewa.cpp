@@ -40,21 +40,6 @@ constexpr double kSupport = 2.0;
 std::string g_texfilter;
 std::filesystem::path g_work;
 
-// One line per check: the measured value against its bound (an upper bound, or a lower one).
-void check_bound(const char* file, int line, const std::string& what, double measured, double bound, bool upper) {
-    const bool ok = upper ? measured <= bound : measured >= bound; // NaN fails
-    std::printf("%-4s %-68s %.3g (%s %.3g)\n", ok ? "ok" : "FAIL", what.c_str(), measured, upper ? "bound" : "at least",
-                bound);
-    test::check(ok, file, line, what, test::show(measured) + (upper ? " > " : " < ") + test::show(bound));
-}
-void check_true(const char* file, int line, const std::string& what, bool ok, const std::string& detail) {
-    std::printf("%-4s %-68s %s\n", ok ? "ok" : "FAIL", what.c_str(), detail.c_str());
-    test::check(ok, file, line, what, detail);
-}
-#define CHECK_LE(what, measured, bound) check_bound(__FILE__, __LINE__, what, measured, bound, true)
-#define CHECK_GE(what, measured, bound) check_bound(__FILE__, __LINE__, what, measured, bound, false)
-#define CHECK_TRUE(what, ok, detail) check_true(__FILE__, __LINE__, what, ok, detail)
-
 double max_abs(const glm::dvec4& d) { return std::max(std::max(std::abs(d.r), std::abs(d.g)), std::max(std::abs(d.b), std::abs(d.a))); }
 bool finite(const glm::dvec4& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b) && std::isfinite(c.a); }
 

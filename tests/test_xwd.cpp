@@ -245,7 +245,7 @@ TEST_CASE("xwd-compare")
     std::string output;
     std::string files = "'" + (work / "dump.xwd").string() + "' '" + png + "'";
     CHECK_EQ(run_xwd_compare(work, files + " --at 3,2", output), 0);
-    CHECK(output.find("max channel difference 0, 0 of 24 pixels differ") != std::string::npos, output);
+    CHECK_CONTAINS(output, "max channel difference 0, 0 of 24 pixels differ");
     CHECK_EQ(run_xwd_compare(work, files, output), 1); // 0,0: the frame, not the shot
     CHECK_EQ(run_xwd_compare(work, files + " --at 4,2", output), 1);
 
@@ -263,19 +263,19 @@ TEST_CASE("xwd-compare")
     l.byte_order = 1;
     write_file(work / "dump.xwd", make_xwd(l, bumped_colour));
     CHECK_EQ(run_xwd_compare(work, files + " --at 3,2", output), 1);
-    CHECK(output.find("max channel difference 3, 1 of 24 pixels differ (first at 2,1") != std::string::npos, output);
+    CHECK_CONTAINS(output, "max channel difference 3, 1 of 24 pixels differ (first at 2,1");
     CHECK_EQ(run_xwd_compare(work, files + " --at 3,2 --tolerance 3", output), 0);
     CHECK_EQ(run_xwd_compare(work, files + " --at 3,2 --tolerance 2", output), 1);
 
     CHECK_EQ(run_xwd_compare(work, files + " --at 7,2", output), 2);
-    CHECK(output.find("(6x4) at 7,2 does not fit in") != std::string::npos, output);
+    CHECK_CONTAINS(output, "(6x4) at 7,2 does not fit in");
     CHECK_EQ(run_xwd_compare(work, files + " --tolerance 300", output), 2);
-    CHECK(output.find("xwd_compare: bad --tolerance '300'") != std::string::npos, output);
+    CHECK_CONTAINS(output, "xwd_compare: bad --tolerance '300'");
     CHECK_EQ(run_xwd_compare(work, files + " --at 3", output), 2);
     CHECK_EQ(run_xwd_compare(work, "'" + png + "' '" + png + "'", output), 2); // a PNG is no XWD
-    CHECK(output.find("file_version is") != std::string::npos, output);
+    CHECK_CONTAINS(output, "file_version is");
     CHECK_EQ(run_xwd_compare(work, "'" + (work / "dump.xwd").string() + "'", output), 2);
-    CHECK(output.find("usage: xwd_compare DUMP.xwd SHOT.png") != std::string::npos, output);
+    CHECK_CONTAINS(output, "usage: xwd_compare DUMP.xwd SHOT.png");
 }
 
 TEST_SUITE_END();
