@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cerrno> // program_invocation_short_name
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -22,7 +23,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The running test case's failed checks, and how many more it may report (limit_failure_lines).
+// The check reporter's own state, as doctest keeps its own: the running test case's failed checks and how
+// many more it may report (limit_failure_lines), set back by the listener as each case starts; the case's
+// name; and whether main was asked to list the named checks. No test reads or writes these but through
+// the functions declared in support.h.
 int g_failures = 0;
 int g_lines_left = INT_MAX;
 std::string g_case;         // the running test case's name
@@ -259,6 +263,12 @@ fs::path make_work_dir(const std::string& name)
     return dir;
 }
 
+const fs::path& work_dir()
+{
+    static const fs::path dir = make_work_dir(program_invocation_short_name);
+    return dir;
+}
+
 namespace {
 
 // Through a volatile: GCC 12.2 at -O2/-O3 vectorises six double -> float -> double conversions in a row
@@ -320,6 +330,16 @@ void write_lookups_csv(const fs::path& path, const std::vector<Lookup>& lookups,
         throw Error("cannot write " + path.string());
 }
 
+fs::path new_file_in(const fs::path& dir, const std::string& prefix, const std::string& suffix)
+{
+    std::string name = (dir / (prefix + "XXXXXX" + suffix)).string();
+    const int fd = ::mkstemps(name.data(), int(suffix.size()));
+    if (fd < 0)
+        throw Error("cannot make a file " + name);
+    ::close(fd);
+    return name;
+}
+
 namespace {
 
 // "exit 2", or how std::system's command ended otherwise.
@@ -355,13 +375,11 @@ SampleResult read_colors_csv(const std::string& path, bool stats, const std::str
 
 } // namespace
 
-SampleResult run_sample(const std::string& texfilter, const fs::path& work, const std::string& flags,
-                        const std::string& lookups_csv, bool stats)
+SampleResult run_sample(const std::string& flags, const std::string& lookups_csv, bool stats)
 {
-    static int runs = 0; // one output file a run, kept until the work dir goes
-    const std::string out = (work / ("sample-" + std::to_string(runs++) + ".csv")).string();
+    const std::string out = new_file_in(work_dir(), "sample-", ".csv").string();
     const std::string device = test_device().empty() ? "" : "--device '" + test_device() + "' ";
-    const std::string command = "timeout " + std::to_string(kSampleSeconds) + " '" + texfilter +
+    const std::string command = "timeout " + std::to_string(kSampleSeconds) + " '" + texfilter_path() +
                                 "' sample --validate " + device + (stats ? "--stats " : "") + flags + " --lookups '" +
                                 lookups_csv + "' -o '" + out + "' > /dev/null";
     if (const int status = std::system(command.c_str()); status != 0)

@@ -112,6 +112,11 @@ void run_end_of_run();
 
 // A fresh directory texfilter-<name>-<pid> in the system's temp dir, removed when the process exits.
 std::filesystem::path make_work_dir(const std::string& name);
+// This process's scratch directory, texfilter-<executable>-<pid>: made on first use, the same ever after.
+const std::filesystem::path& work_dir();
+// A new empty file PREFIX<6 characters>SUFFIX in dir, its name unique (mkstemps).
+std::filesystem::path new_file_in(const std::filesystem::path& dir, const std::string& prefix,
+                                  const std::string& suffix);
 
 // Where random_footprint_lookups draws from. Footprints are 2^o level-0 texels of a texture_size texture,
 // o in [octave_min, octave_max], at a random angle; the minor column is shorter by 2^s, s in
@@ -144,11 +149,10 @@ struct SampleResult {
     std::vector<LookupStats> stats; // with stats only
 };
 
-// Runs `texfilter sample --validate [--device D] [--stats] FLAGS --lookups LOOKUPS_CSV -o OUT` (OUT in
-// work; D the test device) under a time limit and reads one row per lookup back. Throws tf::Error naming the command line if the command
-// fails or its output is not that.
-SampleResult run_sample(const std::string& texfilter, const std::filesystem::path& work, const std::string& flags,
-                        const std::string& lookups_csv, bool stats);
+// Runs `texfilter sample --validate [--device D] [--stats] FLAGS --lookups LOOKUPS_CSV -o OUT` (texfilter_path();
+// OUT a new file in work_dir(); D the test device) under a time limit and reads one row per lookup back.
+// Throws tf::Error naming the command line if the command fails or its output is not that.
+SampleResult run_sample(const std::string& flags, const std::string& lookups_csv, bool stats);
 
 } // namespace tf::test
 

@@ -289,8 +289,7 @@ TEST_CASE("cli-camera-and-frame")
     SamplerOptions trilinear;
     trilinear.filter = Filter::trilinear;
     auto run_render = [&](SceneKind kind, const std::string& flags) {
-        static int runs = 0;
-        std::string out = (work / ("render-" + std::to_string(runs++) + ".pfm")).string();
+        std::string out = test::new_file_in(work, "render-", ".pfm").string();
         std::string device = test::test_device().empty() ? "" : " --device '" + test::test_device() + "'";
         std::string command = "timeout 300 '" + test::texfilter_path() + "' render --validate" + device + " --scene " +
                               to_string(kind) + " --texture checker --texture-size " + std::to_string(texture_size) +

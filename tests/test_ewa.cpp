@@ -37,9 +37,6 @@ constexpr int kMaxTexels = 95;
 // TF_EWA_SUPPORT: R², the weight's support r² < R².
 constexpr double kSupport = 2.0;
 
-std::string g_texfilter;
-std::filesystem::path g_work;
-
 double max_abs(const glm::dvec4& d) { return std::max(std::max(std::abs(d.r), std::abs(d.g)), std::max(std::abs(d.b), std::abs(d.a))); }
 bool finite(const glm::dvec4& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b) && std::isfinite(c.a); }
 
@@ -120,29 +117,15 @@ struct Gpu {
         return {out.begin(), out.end()};
     }
 };
-Gpu* g_gpu = nullptr;
-
-// What a GPU test case holds: the device (g_gpu while it lives), texfilter and a work dir.
+// What a GPU test case holds: the device and its subTexelPrecisionBits.
 struct GpuCase {
     Gpu gpu;
-    int bits = int(gpu.context.info.sub_texel_precision_bits); // the device's subTexelPrecisionBits
-    GpuCase()
-    {
-        g_gpu = &gpu;
-        g_texfilter = test::texfilter_path();
-        g_work = test::make_work_dir("ewa");
-        std::printf("     device: %s, subTexelPrecisionBits %d\n", gpu.context.info.name.c_str(), bits);
-    }
-    ~GpuCase() { g_gpu = nullptr; }
+    int bits = int(gpu.context.info.sub_texel_precision_bits);
+    GpuCase() { std::printf("     device: %s, subTexelPrecisionBits %d\n", gpu.context.info.name.c_str(), bits); }
 };
 
-// The texfilter command's cases (no in-process device): texfilter, a work dir, the device's bits.
-int command_case()
-{
-    g_texfilter = test::texfilter_path();
-    g_work = test::make_work_dir("ewa");
-    return int(test::test_device_info().sub_texel_precision_bits);
-}
+// The texfilter command's cases (no in-process device): the device's subTexelPrecisionBits.
+int command_case() { return int(test::test_device_info().sub_texel_precision_bits); }
 
 std::vector<glm::dvec4> reference(const MipChain& chain, const std::vector<Lookup>& lookups,
                                   const SamplerOptions& options) {
@@ -187,7 +170,7 @@ constexpr double kUlp = 1.0 / 16777216.0; // 2^-24: float's unit roundoff
 // Reference: exact to double rounding. GPU: sum(w·c) and sum(w) over n texels (or taps) each round
 // by at most (n-1) ulp relative, the division and the level blend by a few more, so the result is
 // within (2n + 4)·2^-24·c of c.
-void check_constant() {
+void check_constant(Gpu& device) {
     const glm::vec4 value(0.25f, 0.5f, 0.75f, 1.0f);
     const MipChain chain = constant_chain(61, 47, value);
     std::vector<Lookup> lookups = random_lookups(1024, 11, 61);
@@ -198,7 +181,7 @@ void check_constant() {
             CHECK_LE("constant 61x47 => constant, reference (" + describe(wrap, taps) + ")",
                      max_error(reference(chain, lookups, o), expected), 1e-14);
             std::vector<LookupStats> stats;
-            const auto gpu = g_gpu->sample(chain, lookups, o, &stats);
+            const auto gpu = device.sample(chain, lookups, o, &stats);
             double worst = 0, worst_ratio = 0;
             for (size_t i = 0; i < gpu.size(); ++i) {
                 const double n = stats[i].texel_fetches + stats[i].hardware_lookups;
@@ -216,13 +199,13 @@ void check_constant() {
 // return mix(colour[lo], colour[lo+1], frac(lambda)) — the GPU must agree with the reference's lambda.
 // Adjacent colours differ by up to 1, so an error e in lambda shows as e: lambda ~ log2(texels) < 16 is
 // float, a few ulp of 16 (1.9e-6 each) apart from the double one.
-void check_mipcolors() {
+void check_mipcolors(Gpu& device) {
     const MipChain chain = make_procedural("mipcolors", 256);
     const std::vector<Lookup> lookups = random_lookups(2048, 12);
     for (Taps taps : {Taps::manual, Taps::hardware}) {
         const SamplerOptions o = ewa_options(Wrap::repeat, taps);
         CHECK_LE("mipcolors: GPU vs reference, level blend (" + to_string(taps) + ")",
-                 max_error(g_gpu->sample(chain, lookups, o), reference(chain, lookups, o)), 4 * 1.9e-6);
+                 max_error(device.sample(chain, lookups, o), reference(chain, lookups, o)), 4 * 1.9e-6);
     }
 }
 
@@ -236,7 +219,7 @@ void check_mipcolors() {
 // rounding (as check_gpu_vs_reference). The Hessian on level l is the level-0 wave bound times 4^l; the
 // bound of a lookup uses the coarser level it reads. (Before the fit, the discrete weights' centroid,
 // up to ½ texel off uv, added gradient·½·2^l: the bias of issue 10 item 11.)
-void check_isotropic_vs_trilinear(int bits) {
+void check_isotropic_vs_trilinear(Gpu& device, int bits) {
     const int size = 256;
     const MipChain chain = wave_chain(size, kSmoothWaves);
     const double lo = -3.0, hi = 2.0;
@@ -251,10 +234,10 @@ void check_isotropic_vs_trilinear(int bits) {
     tri.filter = Filter::trilinear;
     tri.wrap = Wrap::repeat;
     const auto ref_tri = reference(chain, lookups, tri);
-    const auto gpu_tri = g_gpu->sample(chain, lookups, tri);
+    const auto gpu_tri = device.sample(chain, lookups, tri);
     for (Taps taps : {Taps::manual, Taps::hardware}) {
         const SamplerOptions ewa = ewa_options(Wrap::repeat, taps);
-        const auto ref_ewa = reference(chain, lookups, ewa), gpu_ewa = g_gpu->sample(chain, lookups, ewa);
+        const auto ref_ewa = reference(chain, lookups, ewa), gpu_ewa = device.sample(chain, lookups, ewa);
         for (bool gpu : {false, true}) {
             const auto& e = gpu ? gpu_ewa : ref_ewa;
             const auto& t = gpu ? gpu_tri : ref_tri;
@@ -287,7 +270,7 @@ void check_isotropic_vs_trilinear(int bits) {
 // (alpha 0.25, nearly a flat disc); a Gaussian of those attenuates a wave of f cycles/texel by
 // exp(-2π²·var·f²), a ratio of 1.11 at f = 0.2 to 1.72 at 0.45, and more along u (variances 5/2 as large).
 // Asserted: at least 1.3 over the band.
-void check_alpha_blurs() {
+void check_alpha_blurs(Gpu& device) {
     const int size = 256;
     const MipChain chain = make_procedural("zoneplate", size);
     std::vector<Lookup> lookups;
@@ -306,8 +289,8 @@ void check_alpha_blurs() {
     for (bool gpu : {false, true}) {
         const SamplerOptions sharp_o = ewa_options(Wrap::repeat, Taps::manual, 2.0f);
         const SamplerOptions wide_o = ewa_options(Wrap::repeat, Taps::manual, 0.25f);
-        const auto sharp = gpu ? g_gpu->sample(chain, lookups, sharp_o) : reference(chain, lookups, sharp_o);
-        const auto wide = gpu ? g_gpu->sample(chain, lookups, wide_o) : reference(chain, lookups, wide_o);
+        const auto sharp = gpu ? device.sample(chain, lookups, sharp_o) : reference(chain, lookups, sharp_o);
+        const auto wide = gpu ? device.sample(chain, lookups, wide_o) : reference(chain, lookups, wide_o);
         std::printf("     zoneplate std dev over the band: alpha 2 %.4f, alpha 0.25 %.4f\n", stddev(sharp), stddev(wide));
         CHECK_GE(std::string("alpha 0.25 blurs: contrast ratio alpha 2 / alpha 0.25, ") + (gpu ? "GPU" : "reference"),
                  stddev(sharp) / stddev(wide), 1.3);
@@ -337,11 +320,11 @@ glm::dvec4 reference_scaled(const MipChain& chain, const SamplerOptions& o, Look
 //     bilinear weights are rounded to subTexelPrecisionBits (Vulkan allows 8: 2^-8·(2·across + down)
 //     per tap, as in test_hw_vs_manual), across/down = the largest adjacent-texel difference on any
 //     level. The result is a weighted mean of taps, so its error is at most the worst tap's.
-void check_gpu_vs_reference(const std::string& texture, SamplerOptions o, const std::string& label, int bits) {
+void check_gpu_vs_reference(Gpu& device, const std::string& texture, SamplerOptions o, const std::string& label, int bits) {
     const MipChain chain = make_procedural(texture, 256);
     const std::vector<Lookup> lookups = random_lookups(2048, 21);
     std::vector<LookupStats> stats;
-    const auto gpu = g_gpu->sample(chain, lookups, o, &stats);
+    const auto gpu = device.sample(chain, lookups, o, &stats);
     const auto ref = reference(chain, lookups, o);
     double adjacent, mixed;
     texture_differences(chain, o.wrap, adjacent, mixed);
@@ -375,12 +358,12 @@ void check_gpu_vs_reference(const std::string& texture, SamplerOptions o, const 
 // are close to trilinear on a smooth one (check_isotropic_vs_trilinear), but on a texture with detail
 // they differ by how each treats its non-linear part, for which there is no tight bound (the merge
 // identity "exact on f(x) + g(y)" of the unshifted taps no longer holds once every tap is shifted).
-void report_hw_vs_manual(const std::string& name, const MipChain& chain, Wrap wrap) {
+void report_hw_vs_manual(Gpu& device, const std::string& name, const MipChain& chain, Wrap wrap) {
     const std::vector<Lookup> lookups = random_lookups(1024, 31, chain.levels[0].width);
     const auto manual = reference(chain, lookups, ewa_options(wrap, Taps::manual));
     const auto hw = reference(chain, lookups, ewa_options(wrap, Taps::hardware));
-    const auto gpu_manual = g_gpu->sample(chain, lookups, ewa_options(wrap, Taps::manual));
-    const auto gpu_hw = g_gpu->sample(chain, lookups, ewa_options(wrap, Taps::hardware));
+    const auto gpu_manual = device.sample(chain, lookups, ewa_options(wrap, Taps::manual));
+    const auto gpu_hw = device.sample(chain, lookups, ewa_options(wrap, Taps::hardware));
     std::printf("     hardware vs manual taps on %s (%s): reference RMS %.3g max %.3g; GPU RMS %.3g max %.3g\n",
                 name.c_str(), to_string(wrap).c_str(), rms_error(hw, manual), max_error(hw, manual),
                 rms_error(gpu_hw, gpu_manual), max_error(gpu_hw, gpu_manual));
@@ -394,7 +377,7 @@ void report_hw_vs_manual(const std::string& name, const MipChain& chain, Wrap wr
 // 0.004 on the zone plate here before such blocks got two taps). Blocks twisted by more than 0.005 of the level's
 // weight are now two exact taps; the bound is what one block at that limit can misweigh on these [0, 1] textures
 // (checkerboard part at most 0.5): 0.005 x 0.5 = 0.0025.
-void check_twisted_blocks(const char* texture, int size, double major_lo, double major_hi, Wrap wrap) {
+void check_twisted_blocks(Gpu& device, const char* texture, int size, double major_lo, double major_hi, Wrap wrap) {
     const MipChain chain = make_procedural(texture, size);
     std::mt19937 rng(47);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -413,14 +396,14 @@ void check_twisted_blocks(const char* texture, int size, double major_lo, double
                        reference(chain, lookups, ewa_options(wrap, Taps::manual))),
              bound);
     CHECK_LE("twisted blocks: RMS |hardware - manual|, GPU, " + what,
-             rms_error(g_gpu->sample(chain, lookups, ewa_options(wrap, Taps::hardware)),
-                       g_gpu->sample(chain, lookups, ewa_options(wrap, Taps::manual))),
+             rms_error(device.sample(chain, lookups, ewa_options(wrap, Taps::hardware)),
+                       device.sample(chain, lookups, ewa_options(wrap, Taps::manual))),
              bound);
 }
 
 // Texel fetches and hardware lookups per lookup (the shader's TF_COUNT_* hooks): manual never more
 // than K² per level; hardware about a quarter of manual's fetches, as lookups.
-void check_counts() {
+void check_counts(Gpu& device) {
     const MipChain chain = make_procedural("noise", 256);
     struct Case {
         const char* name;
@@ -440,8 +423,8 @@ void check_counts() {
     cases.push_back({"anisotropic 16:1", aniso});
     for (const Case& c : cases) {
         std::vector<LookupStats> manual, hw;
-        g_gpu->sample(chain, c.lookups, ewa_options(Wrap::repeat, Taps::manual), &manual);
-        g_gpu->sample(chain, c.lookups, ewa_options(Wrap::repeat, Taps::hardware), &hw);
+        device.sample(chain, c.lookups, ewa_options(Wrap::repeat, Taps::manual), &manual);
+        device.sample(chain, c.lookups, ewa_options(Wrap::repeat, Taps::hardware), &hw);
         double fetches = 0, lookups = 0;
         uint32_t most = 0, most_hw = 0;
         for (size_t i = 0; i < manual.size(); ++i) {
@@ -510,7 +493,7 @@ int ewa_coarse_level(const MipChain& chain, const Lookup& l, double max_aniso) {
 //   and its float uv by 2 spacings of 2^-14 level texels (as check_gpu_vs_reference), on a level of
 //   2^l level-0 texels, l the coarser level read; the fit is a weighted mean of those positions plus a
 //   gradient term whose weights sum to 0, so its error is within 2x the worst tap's, plus the manual bound.
-void check_ramp(int bits) {
+void check_ramp(Gpu& device, int bits) {
     const int size = 512;
     const MipChain chain = ramp_chain(size);
     const std::vector<Lookup> lookups = ramp_lookups(2048, 51, size);
@@ -518,7 +501,7 @@ void check_ramp(int bits) {
         const SamplerOptions o = ewa_options(Wrap::clamp, taps);
         const auto ref = reference(chain, lookups, o);
         std::vector<LookupStats> stats;
-        const auto gpu = g_gpu->sample(chain, lookups, o, &stats);
+        const auto gpu = device.sample(chain, lookups, o, &stats);
         for (bool on_gpu : {false, true}) {
             const auto& out = on_gpu ? gpu : ref;
             std::vector<double> errors;
@@ -555,7 +538,7 @@ void check_ramp(int bits) {
 // -0.021 and up to 1.018 (both backends). With the clamp every result is in [0, 1]: the reference
 // exactly, the GPU within float rounding of the blend (2 ulp). Hardware taps are a positive-weighted
 // mean of bilinear taps: inside [0, 1] by construction, checked too.
-void check_overshoot() {
+void check_overshoot(Gpu& device) {
     const int size = 256;
     Image img = make_image(size, size);
     for (int y = 0; y < size; ++y)
@@ -574,7 +557,7 @@ void check_overshoot() {
     for (Taps taps : {Taps::manual, Taps::hardware})
         for (bool gpu : {false, true}) {
             const SamplerOptions o = ewa_options(Wrap::repeat, taps, 8.0f);
-            const auto out = gpu ? g_gpu->sample(chain, lookups, o) : reference(chain, lookups, o);
+            const auto out = gpu ? device.sample(chain, lookups, o) : reference(chain, lookups, o);
             double lo = INFINITY, hi = -INFINITY;
             for (const auto& c : out) lo = std::min(lo, c.r), hi = std::max(hi, c.r);
             const std::string who = std::string(gpu ? "GPU" : "reference") + ", " + to_string(taps);
@@ -591,7 +574,7 @@ void check_overshoot() {
 // blocking the test. False (and the command on stderr) if it failed.
 bool run_cli(const std::string& flags, const std::string& lookups, bool stats, test::SampleResult& result) {
     try {
-        result = test::run_sample(g_texfilter, g_work, flags, lookups, stats);
+        result = test::run_sample(flags, lookups, stats);
         return true;
     } catch (const Error& e) {
         std::fprintf(stderr, "%s\n", e.what());
@@ -632,7 +615,7 @@ void check_non_finite() {
         {"uv NaN", {nan, 0.5, t, 0, 0, t}, false, true},
         {"uv Inf", {inf, 0.5, t, 0, 0, t}, false, true},
     };
-    const std::string in = (g_work / "nonfinite.csv").string();
+    const std::string in = (test::work_dir() / "nonfinite.csv").string();
     std::vector<Lookup> lookups;
     for (const Row& r : rows) lookups.push_back(r.l);
     test::write_lookups_csv(in, lookups, false); // as they are: the GPU rounds them, the reference does not
@@ -736,7 +719,7 @@ void check_degenerate_all_families(int bits) {
     // ±Inf there and counted as (0, 0, 0, 0).
     const size_t near_max = lookups.size();
     lookups.push_back({3.4e38, 0.5, 1.3e36, 0, 0, 1e34});
-    const std::string in = (g_work / "degenerate.csv").string();
+    const std::string in = (test::work_dir() / "degenerate.csv").string();
     test::write_lookups_csv(in, lookups, false, 17); // 1000000.3125 has 11 digits
     struct Family {
         std::string flags;
@@ -864,18 +847,18 @@ TEST_CASE("level-variance") {
 
 TEST_SUITE_BEGIN("gpu");
 
-TEST_CASE("ramp") { GpuCase c; check_ramp(c.bits); }
-TEST_CASE("constant") { GpuCase c; check_constant(); }
-TEST_CASE("mipcolors") { GpuCase c; check_mipcolors(); }
-TEST_CASE("isotropic-vs-trilinear") { GpuCase c; check_isotropic_vs_trilinear(c.bits); }
-TEST_CASE("alpha-blurs") { GpuCase c; check_alpha_blurs(); }
+TEST_CASE("ramp") { GpuCase c; check_ramp(c.gpu, c.bits); }
+TEST_CASE("constant") { GpuCase c; check_constant(c.gpu); }
+TEST_CASE("mipcolors") { GpuCase c; check_mipcolors(c.gpu); }
+TEST_CASE("isotropic-vs-trilinear") { GpuCase c; check_isotropic_vs_trilinear(c.gpu, c.bits); }
+TEST_CASE("alpha-blurs") { GpuCase c; check_alpha_blurs(c.gpu); }
 
 // GPU vs reference on random footprints, each texture and option set with manual and hardware taps.
 void gpu_vs_reference(const std::string& texture, Wrap wrap, Taps taps, float alpha = 2.0f)
 {
     GpuCase c;
     const std::string name = to_string(taps);
-    check_gpu_vs_reference(texture, ewa_options(wrap, taps, alpha), alpha == 2.0f ? name : name + ", alpha 8", c.bits);
+    check_gpu_vs_reference(c.gpu, texture, ewa_options(wrap, taps, alpha), alpha == 2.0f ? name : name + ", alpha 8", c.bits);
 }
 // Bias, LOD clamp (the loop cap shrinks footprints past level 3), eccentricity clamp 4.
 void gpu_vs_reference_clamps(Taps taps)
@@ -884,7 +867,7 @@ void gpu_vs_reference_clamps(Taps taps)
     SamplerOptions o = ewa_options(Wrap::repeat, taps, 0.5f, 4.0f);
     o.lod_bias = -0.5f;
     o.lod_max = 3.0f;
-    check_gpu_vs_reference("grid", o, to_string(taps) + ", alpha 0.5, max-aniso 4, bias -0.5, lod-max 3", c.bits);
+    check_gpu_vs_reference(c.gpu, "grid", o, to_string(taps) + ", alpha 0.5, max-aniso 4, bias -0.5, lod-max 3", c.bits);
 }
 TEST_CASE("gpu-vs-reference-noise-manual") { gpu_vs_reference("noise", Wrap::repeat, Taps::manual); }
 TEST_CASE("gpu-vs-reference-checker-manual") { gpu_vs_reference("checker", Wrap::clamp, Taps::manual); }
@@ -898,17 +881,17 @@ TEST_CASE("gpu-vs-reference-noise-alpha-8-hardware") { gpu_vs_reference("noise",
 TEST_CASE("gpu-vs-reference-grid-clamps-hardware") { gpu_vs_reference_clamps(Taps::hardware); }
 
 // Reported, not asserted beyond what report_hw_vs_manual checks.
-TEST_CASE("hw-vs-manual-noise") { GpuCase c; report_hw_vs_manual("noise", make_procedural("noise", 256), Wrap::repeat); }
-TEST_CASE("hw-vs-manual-checker") { GpuCase c; report_hw_vs_manual("checker", make_procedural("checker", 256), Wrap::clamp); }
+TEST_CASE("hw-vs-manual-noise") { GpuCase c; report_hw_vs_manual(c.gpu, "noise", make_procedural("noise", 256), Wrap::repeat); }
+TEST_CASE("hw-vs-manual-checker") { GpuCase c; report_hw_vs_manual(c.gpu, "checker", make_procedural("checker", 256), Wrap::clamp); }
 TEST_CASE("hw-vs-manual-zoneplate")
 {
     GpuCase c;
-    report_hw_vs_manual("zoneplate", make_procedural("zoneplate", 256), Wrap::mirror);
+    report_hw_vs_manual(c.gpu, "zoneplate", make_procedural("zoneplate", 256), Wrap::mirror);
 }
-TEST_CASE("twisted-blocks-checker") { GpuCase c; check_twisted_blocks("checker", 512, 64.0, 256.0, Wrap::repeat); }
-TEST_CASE("twisted-blocks-zoneplate") { GpuCase c; check_twisted_blocks("zoneplate", 256, 2.0, 8.0, Wrap::repeat); }
-TEST_CASE("overshoot") { GpuCase c; check_overshoot(); }
-TEST_CASE("counts") { GpuCase c; check_counts(); }
+TEST_CASE("twisted-blocks-checker") { GpuCase c; check_twisted_blocks(c.gpu, "checker", 512, 64.0, 256.0, Wrap::repeat); }
+TEST_CASE("twisted-blocks-zoneplate") { GpuCase c; check_twisted_blocks(c.gpu, "zoneplate", 256, 2.0, 8.0, Wrap::repeat); }
+TEST_CASE("overshoot") { GpuCase c; check_overshoot(c.gpu); }
+TEST_CASE("counts") { GpuCase c; check_counts(c.gpu); }
 TEST_CASE("non-finite") { command_case(); check_non_finite(); }
 TEST_SUITE_END();
 

@@ -155,9 +155,9 @@ TEST_CASE("lookup-count")
 // counted reads, 6.8, come from its own frames).
 TEST_CASE("plane-lookups")
 {
-    const std::filesystem::path out = sample::work_dir() / "plane-data.pfm";
+    const std::filesystem::path out = test::work_dir() / "plane-data.pfm";
     const std::string device = test::test_device().empty() ? "" : "--device '" + test::test_device() + "' ";
-    const std::string command = "'" + sample::texfilter() + "' render --validate " + device +
+    const std::string command = "'" + test::texfilter_path() + "' render --validate " + device +
                                 "--scene plane --texture checker --texture-size 512 --filter ewa-fast --view data "
                                 "-o '" + out.string() + "' > /dev/null";
     CHECK(std::system(command.c_str()) == 0, command);

@@ -29,8 +29,6 @@ using namespace tf;
 
 namespace {
 
-std::string texfilter;
-std::filesystem::path work;
 
 // Probes: footprints from 1/16 texel to the whole texture, up to 16:1, rotated, uv inside and outside
 // [0, 1]; then the degenerate ones.
@@ -130,8 +128,6 @@ struct Case {
 // One filter form on the random probes plus the degenerate ones, in every placement.
 void check_orders(const Case& c)
 {
-    texfilter = test::texfilter_path();
-    work = test::make_work_dir("sample-order");
     setenv("UBSAN_OPTIONS", "halt_on_error=1:print_stacktrace=1", 0); // sanitizer builds: UB fails the run
     test::limit_failure_lines(40);
     std::vector<Lookup> probes = probe_lookups(96, 2026);
@@ -141,13 +137,13 @@ void check_orders(const Case& c)
 
     std::vector<std::vector<size_t>> where;
     const std::vector<Lookup> rows = arrange(probes, where);
-    const std::string csv = (work / "orders.csv").string();
+    const std::string csv = (test::work_dir() / "orders.csv").string();
     test::write_lookups_csv(csv, rows);
     const glm::dvec4 coarsest(chain.levels.back().texels.at(0));
     const size_t first_degenerate = probes.size() - degenerate.size();
     {
         test::SampleResult r =
-            test::run_sample(texfilter, work, "--texture noise --wrap repeat --filter " + c.filter, csv, true);
+            test::run_sample("--texture noise --wrap repeat --filter " + c.filter, csv, true);
         int differ = 0, wrong = 0;
         double spread = 0;
         for (size_t p = 0; p < probes.size(); ++p) {
@@ -191,18 +187,15 @@ void check_orders(const Case& c)
 // Vulkan pass used to memcpy from a null pointer there: UBSan, which this test makes fatal for its runs).
 void check_empty()
 {
-    texfilter = test::texfilter_path();
-    work = test::make_work_dir("sample-order-empty");
     setenv("UBSAN_OPTIONS", "halt_on_error=1:print_stacktrace=1", 0);
-    const std::string csv = (work / "empty.csv").string();
+    const std::string csv = (test::work_dir() / "empty.csv").string();
     test::write_lookups_csv(csv, {});
     int ok = 0, total = 0;
     for (const char* filter : {"trilinear", "hw-aniso", "sat", "ewa --taps hardware"})
         for (bool reference : {false, true}) {
             ++total;
             try {
-                test::SampleResult r = test::run_sample(texfilter, work,
-                                                        std::string("--texture checker --filter ") + filter +
+                test::SampleResult r = test::run_sample(std::string("--texture checker --filter ") + filter +
                                                             (reference ? " --backend reference" : ""),
                                                         csv, !reference);
                 ok += CHECK(r.colors.empty() && r.stats.empty(), std::string(filter) + ": " +

@@ -44,8 +44,6 @@ using tf::test::SampleResult;
 
 namespace {
 
-std::string texfilter;
-std::filesystem::path work;
 
 std::string fmt(const char* format, double a, double b = 0, double c = 0)
 {
@@ -167,12 +165,11 @@ void check_exact_box_sums()
 SampleResult sample(const std::string& texture, int size, const std::string& filter, Wrap wrap,
                     const std::vector<Lookup>& lookups, const std::string& extra = "")
 {
-    static int run = 0;
-    const std::string in = (work / ("lookups-" + std::to_string(run++) + ".csv")).string();
+    const std::string in = test::new_file_in(test::work_dir(), "lookups-", ".csv").string();
     test::write_lookups_csv(in, lookups);
     const std::string flags = "--texture " + texture + " --texture-size " + std::to_string(size) + " --filter " +
                               filter + " --wrap " + to_string(wrap) + " " + extra;
-    return test::run_sample(texfilter, work, flags, in, true);
+    return test::run_sample(flags, in, true);
 }
 
 SamplerOptions sat_options(Filter filter, Wrap wrap, int boxes = 4)
@@ -343,8 +340,6 @@ bool crosses_border(const Lookup& l, double lod_bias)
     return l.u - hu < 0 || l.u + hu > 1 || l.v - hv < 0 || l.v + hv > 1;
 }
 
-double g_worst_gpu_error = 0; // over every GPU-vs-reference comparison, for the summary line
-
 struct WrapCase { std::string texture; int size; Wrap wrap; float bias = 0; };
 
 // (3)'s lookups and its GPU run of one case (what (5a) compares sat-assembly --boxes 1 with).
@@ -359,7 +354,8 @@ SampleResult wrap_mode_run(const WrapCase& c)
     return sample(c.texture, c.size, "sat", c.wrap, wrap_mode_lookups(), "--lod-bias " + std::to_string(c.bias));
 }
 
-void check_wrap_mode(const WrapCase& c)
+// worst_gpu_error: raised to the largest GPU-vs-reference error seen (the case's summary line).
+void check_wrap_mode(const WrapCase& c, double& worst_gpu_error)
 {
     const std::vector<Lookup>& lookups = wrap_mode_lookups();
     {
@@ -387,7 +383,7 @@ void check_wrap_mode(const WrapCase& c)
             if (!(e <= tol) && border.over + inside.over <= 3)
                 CHECK(e <= tol, fmt("lookup %g: GPU vs reference %.3g > tolerance %.3g", double(i), e, tol));
         }
-        g_worst_gpu_error = std::max({g_worst_gpu_error, inside.worst_error, border.worst_error});
+        worst_gpu_error = std::max({worst_gpu_error, inside.worst_error, border.worst_error});
         bool ok = inside.over == 0 && border.over == 0 && border_count > 500 && most_fetches <= 128;
         CHECK(border_count > 500 && most_fetches <= 128, fmt("%g border lookups, %g fetches", border_count, most_fetches));
         std::printf("(3) %s %d %s, lod bias %g: %zu lookups (%d across the border): max |GPU-ref| inside %.3g, border "
@@ -446,7 +442,7 @@ glm::dvec4 parallelogram_mean(const Image& image, const Lookup& l, Wrap wrap, in
     return sum / double(m * m);
 }
 
-void check_assembly()
+void check_assembly(double& worst_gpu_error)
 {
     // K = 1 against the sat runs of (3) (noise 256 repeat, clamp): bit for bit (CSV has 9 digits: a float).
     const std::vector<Lookup>& lookups = wrap_mode_lookups();
@@ -485,7 +481,7 @@ void check_assembly()
             if (!(e <= tol) && tally.over <= 3)
                 CHECK(e <= tol, fmt("lookup %g: sat-assembly GPU vs reference %.3g > %.3g", double(i), e, tol));
         }
-        g_worst_gpu_error = std::max(g_worst_gpu_error, tally.worst_error);
+        worst_gpu_error = std::max(worst_gpu_error, tally.worst_error);
         std::printf("(5b) sat-assembly K=4 vs reference (noise 256 %s): %d lookups (%d near-isotropic skipped), "
                     "max error %.3g, worst error/tolerance %.3f -> %s\n",
                     to_string(wrap).c_str(), tally.checked, skipped, tally.worst_error, tally.worst_ratio,
@@ -628,7 +624,7 @@ void check_hdr()
     const int n = 64;
     Image image = make_image(n, n, glm::vec4(0.3f, 0.3f, 0.3f, 1.0f));
     image.at(37, 21) = glm::vec4(65504.0f, 65504.0f, 65504.0f, 1.0f);
-    const std::string path = (work / "hdr.pfm").string();
+    const std::string path = (test::work_dir() / "hdr.pfm").string();
     write_image(path, image);
     MipChain chain;
     chain.levels.push_back(image); // level 0 is all sat reads
@@ -654,11 +650,11 @@ void check_hdr()
     }
     lookups.push_back({0.3, 0.7, std::numeric_limits<double>::quiet_NaN(), 0, 0, 0.1}); // the whole texture
     exact.push_back(exact[3]);
-    const std::string in = (work / "hdr-lookups.csv").string();
+    const std::string in = (test::work_dir() / "hdr-lookups.csv").string();
     test::write_lookups_csv(in, lookups);
-    const SampleResult gpu = test::run_sample(texfilter, work, "--texture " + path + " --filter sat", in, false);
+    const SampleResult gpu = test::run_sample("--texture " + path + " --filter sat", in, false);
     const SampleResult cli_reference =
-        test::run_sample(texfilter, work, "--texture " + path + " --filter sat --backend reference", in, false);
+        test::run_sample("--texture " + path + " --filter sat --backend reference", in, false);
 
     const double step = double(table.scale.r) / 65535.0;
     Tally vs_exact, vs_reference;
@@ -695,7 +691,7 @@ void check_hdr()
 // Runs a command, returns its exit status and what it printed on stderr.
 int run_capturing(const std::string& command, std::string& err)
 {
-    const std::string err_path = (work / "stderr.txt").string();
+    const std::string err_path = (test::work_dir() / "stderr.txt").string();
     const int status = std::system((command + " 2> '" + err_path + "' > /dev/null").c_str());
     err.clear();
     if (FILE* f = std::fopen(err_path.c_str(), "r")) {
@@ -712,7 +708,7 @@ void check_non_finite_texels()
 {
     struct Bad { float value; const char* word; };
     const Bad bad[] = {{std::numeric_limits<float>::quiet_NaN(), "NaN"}, {INFINITY, "+Inf"}, {-INFINITY, "-Inf"}};
-    const std::string in = (work / "one-lookup.csv").string();
+    const std::string in = (test::work_dir() / "one-lookup.csv").string();
     test::write_lookups_csv(in, {{0.5, 0.5, 0.1, 0, 0, 0.1}});
     int passed = 0, total = 0;
     for (const Bad& b : bad) {
@@ -725,14 +721,14 @@ void check_non_finite_texels()
         chain.levels.push_back(image);
         CHECK_THROWS_WITH(reference_sample(chain, sat_options(Filter::sat, Wrap::repeat), {0.5, 0.5, 0.1, 0, 0, 0.1}),
                           expect);
-        const std::string path = (work / (std::string("bad-") + b.word + ".pfm")).string();
+        const std::string path = (test::work_dir() / (std::string("bad-") + b.word + ".pfm")).string();
         write_image(path, image);
         for (const char* backend : {"vulkan", "reference"})
             for (const char* filter : {"sat", "sat-assembly"}) {
-                const std::string out = (work / "bad-out.csv").string();
+                const std::string out = (test::work_dir() / "bad-out.csv").string();
                 std::filesystem::remove(out);
                 std::string err;
-                const int status = run_capturing("'" + texfilter + "' sample --texture '" + path + "' --filter " +
+                const int status = run_capturing("'" + test::texfilter_path() + "' sample --texture '" + path + "' --filter " +
                                                      filter + " --backend " + backend + " --lookups '" + in +
                                                      "' -o '" + out + "'",
                                                  err);
@@ -752,17 +748,13 @@ void check_non_finite_texels()
 
 } // namespace
 
-// texfilter and a work dir for the case; its summary line: the worst GPU-vs-reference error it saw.
+// A case's summary line: the worst GPU-vs-reference error it saw, and its time.
 struct SatCase {
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-    SatCase()
-    {
-        texfilter = test::texfilter_path();
-        work = test::make_work_dir("sat");
-    }
+    double worst_gpu_error = 0;
     ~SatCase()
     {
-        std::printf("max GPU-vs-reference error: %.3g; total %.1f s\n", g_worst_gpu_error, seconds_since(start));
+        std::printf("max GPU-vs-reference error: %.3g; total %.1f s\n", worst_gpu_error, seconds_since(start));
     }
 };
 
@@ -772,19 +764,19 @@ TEST_SUITE_END();
 
 TEST_SUITE_BEGIN("gpu");
 TEST_CASE("aligned-boxes") { SatCase c; check_aligned_boxes(); }
-TEST_CASE("wrap-noise-256-repeat") { SatCase c; check_wrap_mode({"noise", 256, Wrap::repeat}); }
-TEST_CASE("wrap-noise-256-clamp") { SatCase c; check_wrap_mode({"noise", 256, Wrap::clamp}); }
-TEST_CASE("wrap-noise-256-mirror") { SatCase c; check_wrap_mode({"noise", 256, Wrap::mirror}); }
-TEST_CASE("wrap-zoneplate-100-repeat") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::repeat}); }
-TEST_CASE("wrap-zoneplate-100-clamp") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::clamp}); }
-TEST_CASE("wrap-zoneplate-100-mirror") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::mirror}); }
-TEST_CASE("wrap-grid-64-repeat-bias-1.5") { SatCase c; check_wrap_mode({"grid", 64, Wrap::repeat, 1.5f}); }
-TEST_CASE("wrap-checker-96-clamp-bias-minus-1") { SatCase c; check_wrap_mode({"checker", 96, Wrap::clamp, -1.0f}); }
+TEST_CASE("wrap-noise-256-repeat") { SatCase c; check_wrap_mode({"noise", 256, Wrap::repeat}, c.worst_gpu_error); }
+TEST_CASE("wrap-noise-256-clamp") { SatCase c; check_wrap_mode({"noise", 256, Wrap::clamp}, c.worst_gpu_error); }
+TEST_CASE("wrap-noise-256-mirror") { SatCase c; check_wrap_mode({"noise", 256, Wrap::mirror}, c.worst_gpu_error); }
+TEST_CASE("wrap-zoneplate-100-repeat") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::repeat}, c.worst_gpu_error); }
+TEST_CASE("wrap-zoneplate-100-clamp") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::clamp}, c.worst_gpu_error); }
+TEST_CASE("wrap-zoneplate-100-mirror") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::mirror}, c.worst_gpu_error); }
+TEST_CASE("wrap-grid-64-repeat-bias-1.5") { SatCase c; check_wrap_mode({"grid", 64, Wrap::repeat, 1.5f}, c.worst_gpu_error); }
+TEST_CASE("wrap-checker-96-clamp-bias-minus-1") { SatCase c; check_wrap_mode({"checker", 96, Wrap::clamp, -1.0f}, c.worst_gpu_error); }
 TEST_CASE("constant-time") { SatCase c; check_constant_time(); }
 TEST_SUITE_END();
 
 TEST_SUITE_BEGIN("gpu slow");
-TEST_CASE("assembly") { SatCase c; check_assembly(); }
+TEST_CASE("assembly") { SatCase c; check_assembly(c.worst_gpu_error); }
 TEST_SUITE_END();
 
 TEST_SUITE_BEGIN("gpu");

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 using namespace tf;
@@ -47,7 +48,7 @@ std::uint32_t pack(glm::u8vec3 c, const XwdLayout& l)
 
 glm::u8vec3 colour_at(int x, int y) { return {std::uint8_t(40 * x + 3), std::uint8_t(70 * y + 1), std::uint8_t(x * y * 17 + 200)}; }
 
-std::vector<std::uint8_t> make_xwd(const XwdLayout& l, glm::u8vec3 (*colour)(int, int) = colour_at)
+std::vector<std::uint8_t> make_xwd(const XwdLayout& l, const std::function<glm::u8vec3(int, int)>& colour = colour_at)
 {
     std::uint32_t h[xwd_field_count] = {};
     h[xwd_header_size] = std::uint32_t(xwd_header_bytes + l.window_name.size() + 1);
@@ -101,7 +102,7 @@ void write_file(const std::filesystem::path& path, const std::vector<std::uint8_
     std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
-int wrong_pixels(const XwdImage& image, glm::u8vec3 (*colour)(int, int) = colour_at)
+int wrong_pixels(const XwdImage& image, const std::function<glm::u8vec3(int, int)>& colour = colour_at)
 {
     int wrong = 0;
     for (int y = 0; y < image.height; ++y)
@@ -230,9 +231,8 @@ TEST_CASE("xwd-compare")
             picture.at(x, y) = glm::vec4(x / 5.0f, y / 3.0f, float((x * 7 + y * 3) % 10) / 9.0f, 1.0f);
     std::string png = (work / "shot.png").string();
     write_image(png, picture);
-    static Image stored;
-    stored = read_image_raw(png);
-    auto stored_colour = [](int x, int y) {
+    const Image stored = read_image_raw(png);
+    auto stored_colour = [&stored](int x, int y) {
         int px = x - 3, py = y - 2; // the shot sits at 3,2 of the dump; around it a frame of other colours
         if (px < 0 || py < 0 || px >= stored.width || py >= stored.height)
             return glm::u8vec3(x * 9, 255 - y * 9, 77);
@@ -249,8 +249,8 @@ TEST_CASE("xwd-compare")
     CHECK_EQ(run_xwd_compare(work, files, output), 1); // 0,0: the frame, not the shot
     CHECK_EQ(run_xwd_compare(work, files + " --at 4,2", output), 1);
 
-    static int bumped_x = 5, bumped_y = 3;
-    auto bumped_colour = [](int x, int y) {
+    constexpr int bumped_x = 5, bumped_y = 3;
+    auto bumped_colour = [&stored](int x, int y) {
         int px = x - 3, py = y - 2;
         if (px < 0 || py < 0 || px >= stored.width || py >= stored.height)
             return glm::u8vec3(0);
