@@ -1,4 +1,5 @@
 #include "support.h"
+#include "cli/commands.h"
 #include "io/lookups_csv.h"
 #include "vulkan/loader.h"
 
@@ -375,7 +376,59 @@ SampleResult read_colors_csv(const std::string& path, bool stats, const std::str
 
 } // namespace
 
+namespace {
+
+// FLAGS as a shell splits them: words between blanks, single quotes keeping what they hold.
+std::vector<std::string> split_flags(const std::string& flags)
+{
+    std::vector<std::string> words;
+    std::string word;
+    bool in_word = false, quoted = false;
+    for (char c : flags) {
+        if (c == '\'') {
+            quoted = !quoted;
+            in_word = true;
+        } else if ((c == ' ' || c == '\t' || c == '\n') && !quoted) {
+            if (in_word)
+                words.push_back(word);
+            word.clear();
+            in_word = false;
+        } else {
+            word += c;
+            in_word = true;
+        }
+    }
+    if (quoted)
+        throw Error("unbalanced quote in the flags: " + flags);
+    if (in_word)
+        words.push_back(word);
+    return words;
+}
+
+} // namespace
+
 SampleResult run_sample(const std::string& flags, const std::string& lookups_csv, bool stats)
+{
+    std::vector<std::string> argv = split_flags(flags);
+    argv.push_back("--validate");
+    if (!test_device().empty())
+        argv.insert(argv.end(), {"--device", test_device()});
+    if (stats)
+        argv.push_back("--stats");
+    const std::vector<Lookup> lookups = read_lookups_csv(lookups_csv);
+    SampleOutput output;
+    try {
+        output = sample_lookups(argv, lookups);
+    } catch (const std::exception& e) {
+        throw Error("sample " + flags + " (in process): " + e.what());
+    }
+    if (output.colors.size() != lookups.size() || (stats && output.stats.size() != lookups.size()))
+        throw Error(std::to_string(output.colors.size()) + " colours for " + std::to_string(lookups.size()) +
+                    " lookups from sample " + flags);
+    return {std::move(output.colors), std::move(output.stats)};
+}
+
+SampleResult run_sample_command(const std::string& flags, const std::string& lookups_csv, bool stats)
 {
     const std::string out = new_file_in(work_dir(), "sample-", ".csv").string();
     const std::string device = test_device().empty() ? "" : "--device '" + test_device() + "' ";

@@ -149,10 +149,16 @@ struct SampleResult {
     std::vector<LookupStats> stats; // with stats only
 };
 
-// Runs `texfilter sample --validate [--device D] [--stats] FLAGS --lookups LOOKUPS_CSV -o OUT` (texfilter_path();
-// OUT a new file in work_dir(); D the test device) under a time limit and reads one row per lookup back.
-// Throws tf::Error naming the command line if the command fails or its output is not that.
+// The lookups of LOOKUPS_CSV filtered as `texfilter sample --validate [--device D] [--stats] FLAGS` filters
+// them (D the test device), in process through tf::sample_lookups (cli/commands.h): the same flags, checks
+// and device work, no command and no output file. Throws tf::Error naming the flags if it fails (a validation
+// message included) or gives other than one row per lookup.
 SampleResult run_sample(const std::string& flags, const std::string& lookups_csv, bool stats);
+// The command itself, for the tests of the command: `texfilter sample --validate [--device D] [--stats] FLAGS
+// --lookups LOOKUPS_CSV -o OUT` (texfilter_path(); OUT a new file in work_dir()) under a time limit (a hung
+// shader fails the test instead of blocking it), its CSV read back. Throws tf::Error naming the command line
+// if the command fails or its output is not one row per lookup.
+SampleResult run_sample_command(const std::string& flags, const std::string& lookups_csv, bool stats);
 
 } // namespace tf::test
 

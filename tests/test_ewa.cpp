@@ -574,7 +574,7 @@ void check_overshoot(Gpu& device) {
 // blocking the test. False (and the command on stderr) if it failed.
 bool run_cli(const std::string& flags, const std::string& lookups, bool stats, test::SampleResult& result) {
     try {
-        result = test::run_sample(flags, lookups, stats);
+        result = test::run_sample_command(flags, lookups, stats);
         return true;
     } catch (const Error& e) {
         std::fprintf(stderr, "%s\n", e.what());
