@@ -278,7 +278,7 @@ TEST_CASE("moved-camera-vs-reference")
     CHECK_EQ(validation_message_count(), 0);
 }
 
-// 9. `texfilter render --camera ... --frame ...` gives the in-process render of with_camera(scene_at_frame(
+// 9. A CLI test (the command's flags): `texfilter render --camera ... --frame ...` gives the in-process render of with_camera(scene_at_frame(
 //    make_scene(...))) to the bit (PFM: float32 as rendered), on the GPU (the mesh) and on the reference (a
 //    ray-cast scene); and --camera with the scene's own camera is the render without it.
 TEST_CASE("cli-camera-and-frame")

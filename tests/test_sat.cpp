@@ -688,7 +688,8 @@ void check_hdr()
 // ---------------------------------------------------------------------------------------------------
 // (8) NaN and ±Inf texels are refused with a message naming the texel, on both backends and in build_sat.
 
-// Runs a command, returns its exit status and what it printed on stderr.
+// Runs a command, returns its exit status and what it printed on stderr: (8) is a CLI test in part (the
+// command's exit status, its one message, no output file).
 int run_capturing(const std::string& command, std::string& err)
 {
     const std::string err_path = (test::work_dir() / "stderr.txt").string();

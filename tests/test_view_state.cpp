@@ -472,7 +472,7 @@ TEST_SUITE_END();
 
 TEST_SUITE_BEGIN("gpu");
 
-// 8. The lines run: `texfilter render` accepts each (A and B, an output path a shell must quote) and
+// 8. A CLI test (the command lines the viewer prints are its contract): `texfilter render` accepts each (A and B, an output path a shell must quote) and
 //    writes its PNG. Frames without --camera/--frame/--view, which render does not take yet on its own.
 TEST_CASE("command-lines-run")
 {

@@ -111,7 +111,8 @@ int wrong_pixels(const XwdImage& image, const std::function<glm::u8vec3(int, int
     return wrong;
 }
 
-// Runs xwd_compare ARGS; its exit status, and its stdout and stderr in `output`.
+// Runs xwd_compare ARGS; its exit status, and its stdout and stderr in `output`: the tool's own tests (its
+// exit codes and messages).
 int run_xwd_compare(const std::filesystem::path& work, const std::string& args, std::string& output)
 {
     std::string log = (work / "xwd_compare.log").string();
