@@ -165,138 +165,6 @@ double rms_error(const std::vector<glm::dvec4>& a, const std::vector<glm::dvec4>
 
 constexpr double kUlp = 1.0 / 16777216.0; // 2^-24: float's unit roundoff
 
-// Weights are normalised: a constant texture gives that constant for every footprint, wrap mode and
-// tap form (a missing or wrong division by the weight sum scales it). NPOT, non-square: 61x47.
-// Reference: exact to double rounding. GPU: sum(w·c) and sum(w) over n texels (or taps) each round
-// by at most (n-1) ulp relative, the division and the level blend by a few more, so the result is
-// within (2n + 4)·2^-24·c of c.
-void check_constant(Gpu& device) {
-    const glm::vec4 value(0.25f, 0.5f, 0.75f, 1.0f);
-    const MipChain chain = constant_chain(61, 47, value);
-    std::vector<Lookup> lookups = random_lookups(1024, 11, 61);
-    for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror})
-        for (Taps taps : {Taps::manual, Taps::hardware}) {
-            const SamplerOptions o = ewa_options(wrap, taps);
-            const std::vector<glm::dvec4> expected(lookups.size(), glm::dvec4(value));
-            CHECK_LE("constant 61x47 => constant, reference (" + describe(wrap, taps) + ")",
-                     max_error(reference(chain, lookups, o), expected), 1e-14);
-            std::vector<LookupStats> stats;
-            const auto gpu = device.sample(chain, lookups, o, &stats);
-            double worst = 0, worst_ratio = 0;
-            for (size_t i = 0; i < gpu.size(); ++i) {
-                const double n = stats[i].texel_fetches + stats[i].hardware_lookups;
-                const double err = finite(gpu[i]) ? max_abs(gpu[i] - glm::dvec4(value)) : INFINITY;
-                worst = std::max(worst, err);
-                worst_ratio = std::max(worst_ratio, err / ((2 * n + 4) * kUlp * 1.0));
-            }
-            std::printf("     constant GPU (%s): max error %.3g\n", describe(wrap, taps).c_str(), worst);
-            CHECK_LE("constant 61x47 => constant, GPU, error / ((2n+4) ulp) (" + describe(wrap, taps) + ")",
-                     worst_ratio, 1.0);
-        }
-}
-
-// Per-level normalisation and the level blend: on mipcolors every level is one flat colour, so EWA must
-// return mix(colour[lo], colour[lo+1], frac(lambda)) — the GPU must agree with the reference's lambda.
-// Adjacent colours differ by up to 1, so an error e in lambda shows as e: lambda ~ log2(texels) < 16 is
-// float, a few ulp of 16 (1.9e-6 each) apart from the double one.
-void check_mipcolors(Gpu& device) {
-    const MipChain chain = make_procedural("mipcolors", 256);
-    const std::vector<Lookup> lookups = random_lookups(2048, 12);
-    for (Taps taps : {Taps::manual, Taps::hardware}) {
-        const SamplerOptions o = ewa_options(Wrap::repeat, taps);
-        CHECK_LE("mipcolors: GPU vs reference, level blend (" + to_string(taps) + ")",
-                 max_error(device.sample(chain, lookups, o), reference(chain, lookups, o)), 4 * 1.9e-6);
-    }
-}
-
-// Isotropic footprints on a smooth texture: EWA ≈ trilinear, both tap forms. Both read the same two
-// levels with the same blend weight (an isotropic footprint gets trilinear's lambda), and per level all
-// three estimators reproduce a linear function exactly (bilinear; EWA's line fit or shifted taps,
-// check_ramp), so they differ only through the texture's curvature: by at most half the difference of
-// their kernels' per-axis second moments times |t_xx| + |t_yy|. EWA's is <= 0.2097·(σ² + 1) <= 1.05
-// texel² on the finer level (σ < 2 texels there; 0.2097 is the per-axis variance, in units of M, of
-// exp(-2 r²) - exp(-2 R²) on r² < R² = 2), bilinear's is in [0, ¼]; hardware taps add the sampler's
-// rounding (as check_gpu_vs_reference). The Hessian on level l is the level-0 wave bound times 4^l; the
-// bound of a lookup uses the coarser level it reads. (Before the fit, the discrete weights' centroid,
-// up to ½ texel off uv, added gradient·½·2^l: the bias of issue 10 item 11.)
-void check_isotropic_vs_trilinear(Gpu& device, int bits) {
-    const int size = 256;
-    const MipChain chain = wave_chain(size, kSmoothWaves);
-    const double lo = -3.0, hi = 2.0;
-    const std::vector<Lookup> lookups = isotropic_lookups(2048, 13, lo, hi);
-    double gradient = 0, hessian = 0;
-    for (const Wave& w : kSmoothWaves) {
-        const double k = 2 * std::numbers::pi * std::hypot(w.kx, w.ky) / size;
-        gradient += w.amplitude * k;
-        hessian += 2 * w.amplitude * k * k;
-    }
-    SamplerOptions tri;
-    tri.filter = Filter::trilinear;
-    tri.wrap = Wrap::repeat;
-    const auto ref_tri = reference(chain, lookups, tri);
-    const auto gpu_tri = device.sample(chain, lookups, tri);
-    for (Taps taps : {Taps::manual, Taps::hardware}) {
-        const SamplerOptions ewa = ewa_options(Wrap::repeat, taps);
-        const auto ref_ewa = reference(chain, lookups, ewa), gpu_ewa = device.sample(chain, lookups, ewa);
-        for (bool gpu : {false, true}) {
-            const auto& e = gpu ? gpu_ewa : ref_ewa;
-            const auto& t = gpu ? gpu_tri : ref_tri;
-            double worst_ratio = 0, sum2 = 0, bound2 = 0;
-            for (size_t i = 0; i < lookups.size(); ++i) {
-                const double lambda = std::max(0.0, reference_lod(chain, lookups[i], tri));
-                const double scale = std::exp2(std::ceil(lambda)); // the coarser level read
-                // gradient·scale bounds one adjacent-texel difference on that level (the sampler term).
-                const double sampler = gpu && taps == Taps::hardware
-                                           ? (std::exp2(-bits) * 3 + 2 * std::exp2(-14)) * gradient * scale
-                                           : 0.0;
-                const double bound = 0.5 * 1.05 * hessian * scale * scale + sampler + 1e-6;
-                const double err = max_abs(e[i] - t[i]);
-                worst_ratio = std::max(worst_ratio, err / bound);
-                sum2 += err * err;
-                bound2 += bound * bound;
-            }
-            const std::string who = std::string(gpu ? "GPU" : "reference") + ", " + to_string(taps);
-            CHECK_LE("isotropic smooth texture: RMS |ewa - trilinear|, " + who, std::sqrt(sum2 / lookups.size()),
-                     std::sqrt(bound2 / lookups.size()));
-            CHECK_LE("isotropic smooth texture: worst |ewa - trilinear| / its bound, " + who, worst_ratio, 1.0);
-        }
-    }
-}
-
-// A Gaussian that is too wide (small alpha) blurs, measured: standard deviation of lookups over the
-// zoneplate's band of 0.2..0.45 cycles/texel, one lookup per texel, footprint 2 x 1 texels (trilinear's
-// λ = 1, where the ellipse alone filters: below it the magnification filter takes level 0's share) on
-// level 0: M = diag(5, 2). Along v the per-axis variances are 0.1717·2 (alpha 2) and 0.2396·2 texel²
-// (alpha 0.25, nearly a flat disc); a Gaussian of those attenuates a wave of f cycles/texel by
-// exp(-2π²·var·f²), a ratio of 1.11 at f = 0.2 to 1.72 at 0.45, and more along u (variances 5/2 as large).
-// Asserted: at least 1.3 over the band.
-void check_alpha_blurs(Gpu& device) {
-    const int size = 256;
-    const MipChain chain = make_procedural("zoneplate", size);
-    std::vector<Lookup> lookups;
-    for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x) {
-            const double r = std::hypot(x + 0.5 - size / 2.0, y + 0.5 - size / 2.0);
-            if (r >= 0.2 * size && r <= 0.45 * size)
-                lookups.push_back(as_float({(x + 0.5) / size, (y + 0.5) / size, 2.0 / size, 0, 0, 1.0 / size}));
-        }
-    auto stddev = [](const std::vector<glm::dvec4>& c) {
-        double s = 0, s2 = 0;
-        for (const auto& v : c) s += v.r, s2 += v.r * v.r;
-        const double n = double(c.size());
-        return std::sqrt(std::max(0.0, s2 / n - (s / n) * (s / n)));
-    };
-    for (bool gpu : {false, true}) {
-        const SamplerOptions sharp_o = ewa_options(Wrap::repeat, Taps::manual, 2.0f);
-        const SamplerOptions wide_o = ewa_options(Wrap::repeat, Taps::manual, 0.25f);
-        const auto sharp = gpu ? device.sample(chain, lookups, sharp_o) : reference(chain, lookups, sharp_o);
-        const auto wide = gpu ? device.sample(chain, lookups, wide_o) : reference(chain, lookups, wide_o);
-        std::printf("     zoneplate std dev over the band: alpha 2 %.4f, alpha 0.25 %.4f\n", stddev(sharp), stddev(wide));
-        CHECK_GE(std::string("alpha 0.25 blurs: contrast ratio alpha 2 / alpha 0.25, ") + (gpu ? "GPU" : "reference"),
-                 stddev(sharp) / stddev(wide), 1.3);
-    }
-}
-
 // Reference value with the footprint scaled by `scale` (both gradients).
 glm::dvec4 reference_scaled(const MipChain& chain, const SamplerOptions& o, Lookup l, double scale) {
     l.dudx *= scale, l.dvdx *= scale, l.dudy *= scale, l.dvdy *= scale;
@@ -354,8 +222,8 @@ void check_gpu_vs_reference(Gpu& device, const std::string& texture, SamplerOpti
 
 // Hardware vs manual taps on textures with detail (noise, checker, zoneplate), reference and GPU: measured
 // and printed, not asserted. The two forms are different estimators since the line fit (manual) and
-// the shifted bilinear taps (hardware): both reproduce a linear texture exactly (check_ramp) and both
-// are close to trilinear on a smooth one (check_isotropic_vs_trilinear), but on a texture with detail
+// the shifted bilinear taps (hardware): both reproduce a linear texture exactly (the ramp case) and both
+// are close to trilinear on a smooth one (the isotropic-vs-trilinear case), but on a texture with detail
 // they differ by how each treats its non-linear part, for which there is no tight bound (the merge
 // identity "exact on f(x) + g(y)" of the unshifted taps no longer holds once every tap is shifted).
 void report_hw_vs_manual(Gpu& device, const std::string& name, const MipChain& chain, Wrap wrap) {
@@ -401,48 +269,6 @@ void check_twisted_blocks(Gpu& device, const char* texture, int size, double maj
              bound);
 }
 
-// Texel fetches and hardware lookups per lookup (the shader's TF_COUNT_* hooks): manual never more
-// than K² per level; hardware about a quarter of manual's fetches, as lookups.
-void check_counts(Gpu& device) {
-    const MipChain chain = make_procedural("noise", 256);
-    struct Case {
-        const char* name;
-        std::vector<Lookup> lookups;
-    };
-    std::vector<Case> cases = {{"random footprints", random_lookups(2048, 41)},
-                               {"isotropic 1..64 texels", isotropic_lookups(1024, 42, 0.0, 6.0)}};
-    // Anisotropic 16:1 with a minor axis of 1..4 texels: the ellipses EWA is for.
-    std::vector<Lookup> aniso;
-    std::mt19937 rng(43);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    for (int i = 0; i < 1024; ++i) {
-        const double minor = std::exp2(2 * unit(rng)) / 256, major = 16 * minor, a = 2 * std::numbers::pi * unit(rng);
-        aniso.push_back(as_float({unit(rng), unit(rng), major * std::cos(a), major * std::sin(a), -minor * std::sin(a),
-                                  minor * std::cos(a)}));
-    }
-    cases.push_back({"anisotropic 16:1", aniso});
-    for (const Case& c : cases) {
-        std::vector<LookupStats> manual, hw;
-        device.sample(chain, c.lookups, ewa_options(Wrap::repeat, Taps::manual), &manual);
-        device.sample(chain, c.lookups, ewa_options(Wrap::repeat, Taps::hardware), &hw);
-        double fetches = 0, lookups = 0;
-        uint32_t most = 0, most_hw = 0;
-        for (size_t i = 0; i < manual.size(); ++i) {
-            fetches += manual[i].texel_fetches;
-            lookups += hw[i].hardware_lookups;
-            most = std::max(most, manual[i].texel_fetches + manual[i].hardware_lookups);
-            most_hw = std::max(most_hw, hw[i].hardware_lookups + hw[i].texel_fetches);
-        }
-        fetches /= double(manual.size()), lookups /= double(hw.size());
-        std::printf("     %s: manual %.1f texel fetches a lookup (max %u), hardware %.1f lookups (max %u)\n", c.name,
-                    fetches, most, lookups, most_hw);
-        CHECK_LE(std::string("fetches: most manual fetches in one lookup <= 2K² (") + c.name + ")", most,
-                 2.0 * kMaxTexels * kMaxTexels);
-        CHECK_LE(std::string("fetches: hardware lookups / manual fetches (") + c.name + ")", lookups / fetches,
-                 std::string(c.name).starts_with("isotropic") ? 0.6 : 0.5);
-    }
-}
-
 // ---------------------------------------------------------------- linear ramp (no bias)
 
 // R = u, G = v in level-0 texels: texel (x, y) holds its centre (x + ½, y + ½). The box MIP chain of a
@@ -484,16 +310,101 @@ int ewa_coarse_level(const MipChain& chain, const Lookup& l, double max_aniso) {
     return std::clamp(int(std::ceil(lambda + 1e-6)), 0, int(chain.levels.size()) - 1);
 }
 
+// ---------------------------------------------------------------- overshoot
+
+// ---------------------------------------------------------------- non-finite and huge footprints
+
+// Runs `texfilter sample --validate` under its time limit: a shader that hangs fails the check instead of
+// blocking the test. False (and the command on stderr) if it failed.
+bool run_cli(const std::string& flags, const std::string& lookups, bool stats, test::SampleResult& result) {
+    try {
+        result = test::run_sample_command(flags, lookups, stats);
+        return true;
+    } catch (const Error& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return false;
+    }
+}
+
+// ---------------------------------------------------------------- degenerate input, every family
+
+}  // namespace
+
+// ewa's magnification spreads its lookups by k² = the weight's per-axis variance (reference_ewa_weight_variance,
+// Simpson's rule in r²): against the closed form worked here by hand, with w(u) = e^(-αu) - e^(-αU), U = R² = 2,
+// mass = ∫w du = (1 - e^(-αU))/α - U e^(-αU), ∫u w du = (1 - (1 + αU) e^(-αU))/α² - U² e^(-αU)/2, and the
+// variance E[u]/2 = (∫u w)/(2 mass): 1/3 = U/6 as α -> 0 (w linear in u), 1/(2α) as α grows (a Gaussian). The
+// quadrature's relative error at 8192 steps h = U/8192 is of Simpson's order (α·h)⁴, 6e-8 at α = 64 (the widest
+// use, measured 1.3e-9): bound 1e-8. Below α = 1/64 the variance is α = 1/64's (the clamp).
+TEST_CASE("weight-variance") {
+    auto closed_form = [](double a) {
+        const double U = kSupport, e = std::exp(-a * U);
+        const double mass = (1 - e) / a - U * e, moment = (1 - (1 + a * U) * e) / (a * a) - 0.5 * U * U * e;
+        return 0.5 * moment / mass;
+    };
+    double worst = 0;
+    for (double a : {1.0 / 64, 0.1, 0.5, 1.0, 2.0, 8.0, 32.0, 64.0})
+        worst = std::max(worst, std::abs(reference_ewa_weight_variance(a) / closed_form(a) - 1));
+    CHECK_LE("|quadrature / closed form - 1| over alpha 1/64..64", worst, 1e-8);
+    CHECK_LE("alpha 2 (the default): |variance - 0.2097|", std::abs(reference_ewa_weight_variance(2.0) - 0.2097), 1e-4);
+    CHECK_LE("alpha 64: |variance · 2 alpha - 1| (a Gaussian: e^-128 of it cut off)",
+             std::abs(reference_ewa_weight_variance(64.0) * 128 - 1), 1e-8);
+    CHECK_LE("alpha 0: |variance - 1/3| (the clamp to 1/64)", std::abs(reference_ewa_weight_variance(0.0) - 1.0 / 3),
+             0.002);
+    CHECK_EQ(reference_ewa_weight_variance(0.0), reference_ewa_weight_variance(1.0 / 64));
+}
+
+// The level rule's variance bookkeeping (ewa.glsl, "Math"), measured through the whole filter: on a texture
+// that is a parabola along u, t = (x - c)²/S (x in level-0 texels), any filter returns (x0 - c)²/S plus its
+// kernel's second moment along u over S. The Gaussian-pixel truth's is σ²·(J·Jᵀ)_uu + 1/6 (the bilinear
+// tent); the level's is the box its texels average ((4^l - 1)/12 level-0 texels², exact on a parabola) plus
+// 4^l·v·M_uu, M = S·J·Jᵀ·S + r₀·I with r₀ = (3·4^-l - 1)/(12v) where M needs no lift: in sum v·(J·Jᵀ)_uu + 1/6,
+// alpha's own σ² = v in place of ¼. The lookup is held on one level (lodMin = lodMax = l) with the footprint's
+// smaller eigenvalue 4 level texels² there (no lift). Bound 2 %: the sampled, truncated weight's second moment
+// against the continuous v·M (σ ≈ 0.9 texel, cut at r² = R²) and the line fit's centroid correction; the rule
+// before (M = S·J·Jᵀ·S + I) is 27-36 % over on these levels.
+TEST_CASE("level-variance") {
+    const int size = 256;
+    const double c = size / 2.0, scale = c * c;
+    Image img = make_image(size, size);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const double t = (x + 0.5 - c) * (x + 0.5 - c) / scale;
+            img.at(x, y) = glm::vec4(float(t), float(t), float(t), 1.0f);
+        }
+    const MipChain chain = build_mip_chain(img);
+    const double v = reference_ewa_weight_variance(2.0);
+    for (int level = 1; level <= 4; ++level) {
+        SamplerOptions o = ewa_options(Wrap::clamp, Taps::manual);
+        o.lod_min = o.lod_max = float(level);
+        const double a = 2.0 * std::exp2(level), b = std::sqrt(2.0) * a; // (J·Jᵀ)_uu = 4·4^l, _vv = 8·4^l
+        double worst = 0;
+        for (double x0 : {128.0, 128.3, 129.7, 131.25}) {
+            const Lookup l{x0 / size, 0.5 + 0.37 / size, a / size, 0.0, 0.0, b / size};
+            const double excess = reference_sample(chain, o, l).r * scale - (x0 - c) * (x0 - c);
+            const double target = v * a * a + 1.0 / 6.0;
+            worst = std::max(worst, std::abs(excess / target - 1));
+        }
+        CHECK_LE("second moment along u / (v·(J·Jᵀ)_uu + 1/6) - 1, level " + std::to_string(level), worst, 0.02);
+    }
+}
+
+TEST_SUITE_BEGIN("gpu");
+
 // The position EWA returns on the ramp is uv·size up to rounding, on both backends and tap forms:
 // - reference, manual and hardware taps (exact bilinear): double rounding, bound 1e-9 texels;
 // - GPU, manual taps: the result is a fit over n float texel values t <= size: the sums of w·t, w·d·t
-//   and the fit's few operations round by (2n + 16) ulp of the largest value (as check_constant), i.e.
+//   and the fit's few operations round by (2n + 16) ulp of the largest value (as the constant case), i.e.
 //   (2n + 16)·2^-24·size texels, n the fetches of the lookup;
 // - GPU, hardware taps: each tap's position is rounded to subTexelPrecisionBits (2^-bits/2 per axis)
 //   and its float uv by 2 spacings of 2^-14 level texels (as check_gpu_vs_reference), on a level of
 //   2^l level-0 texels, l the coarser level read; the fit is a weighted mean of those positions plus a
 //   gradient term whose weights sum to 0, so its error is within 2x the worst tap's, plus the manual bound.
-void check_ramp(Gpu& device, int bits) {
+TEST_CASE("ramp")
+{
+    GpuCase c;
+    Gpu& device = c.gpu;
+    const int bits = c.bits;
     const int size = 512;
     const MipChain chain = ramp_chain(size);
     const std::vector<Lookup> lookups = ramp_lookups(2048, 51, size);
@@ -529,8 +440,191 @@ void check_ramp(Gpu& device, int bits) {
     }
 }
 
-// ---------------------------------------------------------------- overshoot
+// Weights are normalised: a constant texture gives that constant for every footprint, wrap mode and
+// tap form (a missing or wrong division by the weight sum scales it). NPOT, non-square: 61x47.
+// Reference: exact to double rounding. GPU: sum(w·c) and sum(w) over n texels (or taps) each round
+// by at most (n-1) ulp relative, the division and the level blend by a few more, so the result is
+// within (2n + 4)·2^-24·c of c.
+TEST_CASE("constant")
+{
+    GpuCase c;
+    Gpu& device = c.gpu;
+    const glm::vec4 value(0.25f, 0.5f, 0.75f, 1.0f);
+    const MipChain chain = constant_chain(61, 47, value);
+    std::vector<Lookup> lookups = random_lookups(1024, 11, 61);
+    for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror})
+        for (Taps taps : {Taps::manual, Taps::hardware}) {
+            const SamplerOptions o = ewa_options(wrap, taps);
+            const std::vector<glm::dvec4> expected(lookups.size(), glm::dvec4(value));
+            CHECK_LE("constant 61x47 => constant, reference (" + describe(wrap, taps) + ")",
+                     max_error(reference(chain, lookups, o), expected), 1e-14);
+            std::vector<LookupStats> stats;
+            const auto gpu = device.sample(chain, lookups, o, &stats);
+            double worst = 0, worst_ratio = 0;
+            for (size_t i = 0; i < gpu.size(); ++i) {
+                const double n = stats[i].texel_fetches + stats[i].hardware_lookups;
+                const double err = finite(gpu[i]) ? max_abs(gpu[i] - glm::dvec4(value)) : INFINITY;
+                worst = std::max(worst, err);
+                worst_ratio = std::max(worst_ratio, err / ((2 * n + 4) * kUlp * 1.0));
+            }
+            std::printf("     constant GPU (%s): max error %.3g\n", describe(wrap, taps).c_str(), worst);
+            CHECK_LE("constant 61x47 => constant, GPU, error / ((2n+4) ulp) (" + describe(wrap, taps) + ")",
+                     worst_ratio, 1.0);
+        }
+}
 
+// Per-level normalisation and the level blend: on mipcolors every level is one flat colour, so EWA must
+// return mix(colour[lo], colour[lo+1], frac(lambda)) — the GPU must agree with the reference's lambda.
+// Adjacent colours differ by up to 1, so an error e in lambda shows as e: lambda ~ log2(texels) < 16 is
+// float, a few ulp of 16 (1.9e-6 each) apart from the double one.
+TEST_CASE("mipcolors")
+{
+    GpuCase c;
+    Gpu& device = c.gpu;
+    const MipChain chain = make_procedural("mipcolors", 256);
+    const std::vector<Lookup> lookups = random_lookups(2048, 12);
+    for (Taps taps : {Taps::manual, Taps::hardware}) {
+        const SamplerOptions o = ewa_options(Wrap::repeat, taps);
+        CHECK_LE("mipcolors: GPU vs reference, level blend (" + to_string(taps) + ")",
+                 max_error(device.sample(chain, lookups, o), reference(chain, lookups, o)), 4 * 1.9e-6);
+    }
+}
+
+// Isotropic footprints on a smooth texture: EWA ≈ trilinear, both tap forms. Both read the same two
+// levels with the same blend weight (an isotropic footprint gets trilinear's lambda), and per level all
+// three estimators reproduce a linear function exactly (bilinear; EWA's line fit or shifted taps,
+// the ramp case), so they differ only through the texture's curvature: by at most half the difference of
+// their kernels' per-axis second moments times |t_xx| + |t_yy|. EWA's is <= 0.2097·(σ² + 1) <= 1.05
+// texel² on the finer level (σ < 2 texels there; 0.2097 is the per-axis variance, in units of M, of
+// exp(-2 r²) - exp(-2 R²) on r² < R² = 2), bilinear's is in [0, ¼]; hardware taps add the sampler's
+// rounding (as check_gpu_vs_reference). The Hessian on level l is the level-0 wave bound times 4^l; the
+// bound of a lookup uses the coarser level it reads. (Before the fit, the discrete weights' centroid,
+// up to ½ texel off uv, added gradient·½·2^l: the bias of issue 10 item 11.)
+TEST_CASE("isotropic-vs-trilinear")
+{
+    GpuCase c;
+    Gpu& device = c.gpu;
+    const int bits = c.bits;
+    const int size = 256;
+    const MipChain chain = wave_chain(size, kSmoothWaves);
+    const double lo = -3.0, hi = 2.0;
+    const std::vector<Lookup> lookups = isotropic_lookups(2048, 13, lo, hi);
+    double gradient = 0, hessian = 0;
+    for (const Wave& w : kSmoothWaves) {
+        const double k = 2 * std::numbers::pi * std::hypot(w.kx, w.ky) / size;
+        gradient += w.amplitude * k;
+        hessian += 2 * w.amplitude * k * k;
+    }
+    SamplerOptions tri;
+    tri.filter = Filter::trilinear;
+    tri.wrap = Wrap::repeat;
+    const auto ref_tri = reference(chain, lookups, tri);
+    const auto gpu_tri = device.sample(chain, lookups, tri);
+    for (Taps taps : {Taps::manual, Taps::hardware}) {
+        const SamplerOptions ewa = ewa_options(Wrap::repeat, taps);
+        const auto ref_ewa = reference(chain, lookups, ewa), gpu_ewa = device.sample(chain, lookups, ewa);
+        for (bool gpu : {false, true}) {
+            const auto& e = gpu ? gpu_ewa : ref_ewa;
+            const auto& t = gpu ? gpu_tri : ref_tri;
+            double worst_ratio = 0, sum2 = 0, bound2 = 0;
+            for (size_t i = 0; i < lookups.size(); ++i) {
+                const double lambda = std::max(0.0, reference_lod(chain, lookups[i], tri));
+                const double scale = std::exp2(std::ceil(lambda)); // the coarser level read
+                // gradient·scale bounds one adjacent-texel difference on that level (the sampler term).
+                const double sampler = gpu && taps == Taps::hardware
+                                           ? (std::exp2(-bits) * 3 + 2 * std::exp2(-14)) * gradient * scale
+                                           : 0.0;
+                const double bound = 0.5 * 1.05 * hessian * scale * scale + sampler + 1e-6;
+                const double err = max_abs(e[i] - t[i]);
+                worst_ratio = std::max(worst_ratio, err / bound);
+                sum2 += err * err;
+                bound2 += bound * bound;
+            }
+            const std::string who = std::string(gpu ? "GPU" : "reference") + ", " + to_string(taps);
+            CHECK_LE("isotropic smooth texture: RMS |ewa - trilinear|, " + who, std::sqrt(sum2 / lookups.size()),
+                     std::sqrt(bound2 / lookups.size()));
+            CHECK_LE("isotropic smooth texture: worst |ewa - trilinear| / its bound, " + who, worst_ratio, 1.0);
+        }
+    }
+}
+
+// A Gaussian that is too wide (small alpha) blurs, measured: standard deviation of lookups over the
+// zoneplate's band of 0.2..0.45 cycles/texel, one lookup per texel, footprint 2 x 1 texels (trilinear's
+// λ = 1, where the ellipse alone filters: below it the magnification filter takes level 0's share) on
+// level 0: M = diag(5, 2). Along v the per-axis variances are 0.1717·2 (alpha 2) and 0.2396·2 texel²
+// (alpha 0.25, nearly a flat disc); a Gaussian of those attenuates a wave of f cycles/texel by
+// exp(-2π²·var·f²), a ratio of 1.11 at f = 0.2 to 1.72 at 0.45, and more along u (variances 5/2 as large).
+// Asserted: at least 1.3 over the band.
+TEST_CASE("alpha-blurs")
+{
+    GpuCase c;
+    Gpu& device = c.gpu;
+    const int size = 256;
+    const MipChain chain = make_procedural("zoneplate", size);
+    std::vector<Lookup> lookups;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const double r = std::hypot(x + 0.5 - size / 2.0, y + 0.5 - size / 2.0);
+            if (r >= 0.2 * size && r <= 0.45 * size)
+                lookups.push_back(as_float({(x + 0.5) / size, (y + 0.5) / size, 2.0 / size, 0, 0, 1.0 / size}));
+        }
+    auto stddev = [](const std::vector<glm::dvec4>& c) {
+        double s = 0, s2 = 0;
+        for (const auto& v : c) s += v.r, s2 += v.r * v.r;
+        const double n = double(c.size());
+        return std::sqrt(std::max(0.0, s2 / n - (s / n) * (s / n)));
+    };
+    for (bool gpu : {false, true}) {
+        const SamplerOptions sharp_o = ewa_options(Wrap::repeat, Taps::manual, 2.0f);
+        const SamplerOptions wide_o = ewa_options(Wrap::repeat, Taps::manual, 0.25f);
+        const auto sharp = gpu ? device.sample(chain, lookups, sharp_o) : reference(chain, lookups, sharp_o);
+        const auto wide = gpu ? device.sample(chain, lookups, wide_o) : reference(chain, lookups, wide_o);
+        std::printf("     zoneplate std dev over the band: alpha 2 %.4f, alpha 0.25 %.4f\n", stddev(sharp), stddev(wide));
+        CHECK_GE(std::string("alpha 0.25 blurs: contrast ratio alpha 2 / alpha 0.25, ") + (gpu ? "GPU" : "reference"),
+                 stddev(sharp) / stddev(wide), 1.3);
+    }
+}
+
+// GPU vs reference on random footprints, each texture and option set with manual and hardware taps.
+void gpu_vs_reference(const std::string& texture, Wrap wrap, Taps taps, float alpha = 2.0f)
+{
+    GpuCase c;
+    const std::string name = to_string(taps);
+    check_gpu_vs_reference(c.gpu, texture, ewa_options(wrap, taps, alpha), alpha == 2.0f ? name : name + ", alpha 8", c.bits);
+}
+
+// Bias, LOD clamp (the loop cap shrinks footprints past level 3), eccentricity clamp 4.
+void gpu_vs_reference_clamps(Taps taps)
+{
+    GpuCase c;
+    SamplerOptions o = ewa_options(Wrap::repeat, taps, 0.5f, 4.0f);
+    o.lod_bias = -0.5f;
+    o.lod_max = 3.0f;
+    check_gpu_vs_reference(c.gpu, "grid", o, to_string(taps) + ", alpha 0.5, max-aniso 4, bias -0.5, lod-max 3", c.bits);
+}
+
+TEST_CASE("gpu-vs-reference-noise-manual") { gpu_vs_reference("noise", Wrap::repeat, Taps::manual); }
+TEST_CASE("gpu-vs-reference-checker-manual") { gpu_vs_reference("checker", Wrap::clamp, Taps::manual); }
+TEST_CASE("gpu-vs-reference-zoneplate-manual") { gpu_vs_reference("zoneplate", Wrap::mirror, Taps::manual); }
+TEST_CASE("gpu-vs-reference-noise-alpha-8-manual") { gpu_vs_reference("noise", Wrap::repeat, Taps::manual, 8.0f); }
+TEST_CASE("gpu-vs-reference-grid-clamps-manual") { gpu_vs_reference_clamps(Taps::manual); }
+TEST_CASE("gpu-vs-reference-noise-hardware") { gpu_vs_reference("noise", Wrap::repeat, Taps::hardware); }
+TEST_CASE("gpu-vs-reference-checker-hardware") { gpu_vs_reference("checker", Wrap::clamp, Taps::hardware); }
+TEST_CASE("gpu-vs-reference-zoneplate-hardware") { gpu_vs_reference("zoneplate", Wrap::mirror, Taps::hardware); }
+TEST_CASE("gpu-vs-reference-noise-alpha-8-hardware") { gpu_vs_reference("noise", Wrap::repeat, Taps::hardware, 8.0f); }
+TEST_CASE("gpu-vs-reference-grid-clamps-hardware") { gpu_vs_reference_clamps(Taps::hardware); }
+
+// Reported, not asserted beyond what report_hw_vs_manual checks.
+TEST_CASE("hw-vs-manual-noise") { GpuCase c; report_hw_vs_manual(c.gpu, "noise", make_procedural("noise", 256), Wrap::repeat); }
+TEST_CASE("hw-vs-manual-checker") { GpuCase c; report_hw_vs_manual(c.gpu, "checker", make_procedural("checker", 256), Wrap::clamp); }
+TEST_CASE("hw-vs-manual-zoneplate")
+{
+    GpuCase c;
+    report_hw_vs_manual(c.gpu, "zoneplate", make_procedural("zoneplate", 256), Wrap::mirror);
+}
+
+TEST_CASE("twisted-blocks-checker") { GpuCase c; check_twisted_blocks(c.gpu, "checker", 512, 64.0, 256.0, Wrap::repeat); }
+TEST_CASE("twisted-blocks-zoneplate") { GpuCase c; check_twisted_blocks(c.gpu, "zoneplate", 256, 2.0, 8.0, Wrap::repeat); }
 // The line fit can overshoot a step edge (the fitted gradient times the samples' centroid offset); each
 // level's result is clamped to the range of the texels it read. On a 0/1 checker of 2-texel squares at
 // alpha 8 (narrow weights, so the few texels near uv dominate and their centroid is off uv), small and
@@ -538,7 +632,10 @@ void check_ramp(Gpu& device, int bits) {
 // -0.021 and up to 1.018 (both backends). With the clamp every result is in [0, 1]: the reference
 // exactly, the GPU within float rounding of the blend (2 ulp). Hardware taps are a positive-weighted
 // mean of bilinear taps: inside [0, 1] by construction, checked too.
-void check_overshoot(Gpu& device) {
+TEST_CASE("overshoot")
+{
+    GpuCase c;
+    Gpu& device = c.gpu;
     const int size = 256;
     Image img = make_image(size, size);
     for (int y = 0; y < size; ++y)
@@ -568,17 +665,48 @@ void check_overshoot(Gpu& device) {
         }
 }
 
-// ---------------------------------------------------------------- non-finite and huge footprints
-
-// Runs `texfilter sample --validate` under its time limit: a shader that hangs fails the check instead of
-// blocking the test. False (and the command on stderr) if it failed.
-bool run_cli(const std::string& flags, const std::string& lookups, bool stats, test::SampleResult& result) {
-    try {
-        result = test::run_sample_command(flags, lookups, stats);
-        return true;
-    } catch (const Error& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return false;
+// Texel fetches and hardware lookups per lookup (the shader's TF_COUNT_* hooks): manual never more
+// than K² per level; hardware about a quarter of manual's fetches, as lookups.
+TEST_CASE("counts")
+{
+    GpuCase c;
+    Gpu& device = c.gpu;
+    const MipChain chain = make_procedural("noise", 256);
+    struct Case {
+        const char* name;
+        std::vector<Lookup> lookups;
+    };
+    std::vector<Case> cases = {{"random footprints", random_lookups(2048, 41)},
+                               {"isotropic 1..64 texels", isotropic_lookups(1024, 42, 0.0, 6.0)}};
+    // Anisotropic 16:1 with a minor axis of 1..4 texels: the ellipses EWA is for.
+    std::vector<Lookup> aniso;
+    std::mt19937 rng(43);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int i = 0; i < 1024; ++i) {
+        const double minor = std::exp2(2 * unit(rng)) / 256, major = 16 * minor, a = 2 * std::numbers::pi * unit(rng);
+        aniso.push_back(as_float({unit(rng), unit(rng), major * std::cos(a), major * std::sin(a), -minor * std::sin(a),
+                                  minor * std::cos(a)}));
+    }
+    cases.push_back({"anisotropic 16:1", aniso});
+    for (const Case& c : cases) {
+        std::vector<LookupStats> manual, hw;
+        device.sample(chain, c.lookups, ewa_options(Wrap::repeat, Taps::manual), &manual);
+        device.sample(chain, c.lookups, ewa_options(Wrap::repeat, Taps::hardware), &hw);
+        double fetches = 0, lookups = 0;
+        uint32_t most = 0, most_hw = 0;
+        for (size_t i = 0; i < manual.size(); ++i) {
+            fetches += manual[i].texel_fetches;
+            lookups += hw[i].hardware_lookups;
+            most = std::max(most, manual[i].texel_fetches + manual[i].hardware_lookups);
+            most_hw = std::max(most_hw, hw[i].hardware_lookups + hw[i].texel_fetches);
+        }
+        fetches /= double(manual.size()), lookups /= double(hw.size());
+        std::printf("     %s: manual %.1f texel fetches a lookup (max %u), hardware %.1f lookups (max %u)\n", c.name,
+                    fetches, most, lookups, most_hw);
+        CHECK_LE(std::string("fetches: most manual fetches in one lookup <= 2K² (") + c.name + ")", most,
+                 2.0 * kMaxTexels * kMaxTexels);
+        CHECK_LE(std::string("fetches: hardware lookups / manual fetches (") + c.name + ")", lookups / fetches,
+                 std::string(c.name).starts_with("isotropic") ? 0.6 : 0.5);
     }
 }
 
@@ -587,7 +715,8 @@ bool run_cli(const std::string& flags, const std::string& lookups, bool stats, t
 // result is finite. Documented results: NaN/±Inf gradients -> the last level with M = I, which for a
 // square power-of-two texture is its 1x1 mean; 1e30 -> the same level; 0 -> level 0, M = I (as the
 // reference); NaN uv -> 0. With --lod-max 0 a 1e30 footprint stays on level 0, shrunk to the loop cap.
-void check_non_finite() {
+TEST_CASE("non-finite")
+{
     const std::string texture = "checker";
     const MipChain chain = make_procedural(texture, 256);
     const glm::dvec4 mean(chain.levels.back().at(0, 0));
@@ -669,9 +798,9 @@ void check_non_finite() {
                  2.0 * kMaxTexels * kMaxTexels);
     }
 }
+TEST_SUITE_END();
 
-// ---------------------------------------------------------------- degenerate input, every family
-
+TEST_SUITE_BEGIN("gpu slow");
 // docs/API.md's degenerate-input table (issue 10 item 6), end to end through `texfilter sample` on both
 // backends, for every family: a 64² checker (the smallest power of two where every huge u below, 1e37 up,
 // overflows the texel coordinate u·size in float: 1e37·64 > 3.4e38; 512² gave the same rows at 8x the cost
@@ -689,7 +818,9 @@ void check_non_finite() {
 // Tolerances: 1e-5 (float vs double on footprints of a texel or flat results); hardware-tap forms add
 // the sampler's weight rounding 3·2^-bits (contrast 1, as test_hw_vs_manual); sat its 16-bit
 // quantisation 0.5/65535.
-void check_degenerate_all_families(int bits) {
+TEST_CASE("degenerate-all-families")
+{
+    const int bits = command_case();
     const int size = 64;
     const MipChain chain = make_procedural("checker", size);
     const glm::dvec4 mean(chain.levels.back().at(0, 0));
@@ -783,118 +914,4 @@ void check_degenerate_all_families(int bits) {
             CHECK_LE(what + ": max |result - table| " + worst_row, worst_table, tol);
         }
 }
-
-}  // namespace
-
-// ewa's magnification spreads its lookups by k² = the weight's per-axis variance (reference_ewa_weight_variance,
-// Simpson's rule in r²): against the closed form worked here by hand, with w(u) = e^(-αu) - e^(-αU), U = R² = 2,
-// mass = ∫w du = (1 - e^(-αU))/α - U e^(-αU), ∫u w du = (1 - (1 + αU) e^(-αU))/α² - U² e^(-αU)/2, and the
-// variance E[u]/2 = (∫u w)/(2 mass): 1/3 = U/6 as α -> 0 (w linear in u), 1/(2α) as α grows (a Gaussian). The
-// quadrature's relative error at 8192 steps h = U/8192 is of Simpson's order (α·h)⁴, 6e-8 at α = 64 (the widest
-// use, measured 1.3e-9): bound 1e-8. Below α = 1/64 the variance is α = 1/64's (the clamp).
-TEST_CASE("weight-variance") {
-    auto closed_form = [](double a) {
-        const double U = kSupport, e = std::exp(-a * U);
-        const double mass = (1 - e) / a - U * e, moment = (1 - (1 + a * U) * e) / (a * a) - 0.5 * U * U * e;
-        return 0.5 * moment / mass;
-    };
-    double worst = 0;
-    for (double a : {1.0 / 64, 0.1, 0.5, 1.0, 2.0, 8.0, 32.0, 64.0})
-        worst = std::max(worst, std::abs(reference_ewa_weight_variance(a) / closed_form(a) - 1));
-    CHECK_LE("|quadrature / closed form - 1| over alpha 1/64..64", worst, 1e-8);
-    CHECK_LE("alpha 2 (the default): |variance - 0.2097|", std::abs(reference_ewa_weight_variance(2.0) - 0.2097), 1e-4);
-    CHECK_LE("alpha 64: |variance · 2 alpha - 1| (a Gaussian: e^-128 of it cut off)",
-             std::abs(reference_ewa_weight_variance(64.0) * 128 - 1), 1e-8);
-    CHECK_LE("alpha 0: |variance - 1/3| (the clamp to 1/64)", std::abs(reference_ewa_weight_variance(0.0) - 1.0 / 3),
-             0.002);
-    CHECK_EQ(reference_ewa_weight_variance(0.0), reference_ewa_weight_variance(1.0 / 64));
-}
-
-// The level rule's variance bookkeeping (ewa.glsl, "Math"), measured through the whole filter: on a texture
-// that is a parabola along u, t = (x - c)²/S (x in level-0 texels), any filter returns (x0 - c)²/S plus its
-// kernel's second moment along u over S. The Gaussian-pixel truth's is σ²·(J·Jᵀ)_uu + 1/6 (the bilinear
-// tent); the level's is the box its texels average ((4^l - 1)/12 level-0 texels², exact on a parabola) plus
-// 4^l·v·M_uu, M = S·J·Jᵀ·S + r₀·I with r₀ = (3·4^-l - 1)/(12v) where M needs no lift: in sum v·(J·Jᵀ)_uu + 1/6,
-// alpha's own σ² = v in place of ¼. The lookup is held on one level (lodMin = lodMax = l) with the footprint's
-// smaller eigenvalue 4 level texels² there (no lift). Bound 2 %: the sampled, truncated weight's second moment
-// against the continuous v·M (σ ≈ 0.9 texel, cut at r² = R²) and the line fit's centroid correction; the rule
-// before (M = S·J·Jᵀ·S + I) is 27-36 % over on these levels.
-TEST_CASE("level-variance") {
-    const int size = 256;
-    const double c = size / 2.0, scale = c * c;
-    Image img = make_image(size, size);
-    for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x) {
-            const double t = (x + 0.5 - c) * (x + 0.5 - c) / scale;
-            img.at(x, y) = glm::vec4(float(t), float(t), float(t), 1.0f);
-        }
-    const MipChain chain = build_mip_chain(img);
-    const double v = reference_ewa_weight_variance(2.0);
-    for (int level = 1; level <= 4; ++level) {
-        SamplerOptions o = ewa_options(Wrap::clamp, Taps::manual);
-        o.lod_min = o.lod_max = float(level);
-        const double a = 2.0 * std::exp2(level), b = std::sqrt(2.0) * a; // (J·Jᵀ)_uu = 4·4^l, _vv = 8·4^l
-        double worst = 0;
-        for (double x0 : {128.0, 128.3, 129.7, 131.25}) {
-            const Lookup l{x0 / size, 0.5 + 0.37 / size, a / size, 0.0, 0.0, b / size};
-            const double excess = reference_sample(chain, o, l).r * scale - (x0 - c) * (x0 - c);
-            const double target = v * a * a + 1.0 / 6.0;
-            worst = std::max(worst, std::abs(excess / target - 1));
-        }
-        CHECK_LE("second moment along u / (v·(J·Jᵀ)_uu + 1/6) - 1, level " + std::to_string(level), worst, 0.02);
-    }
-}
-
-TEST_SUITE_BEGIN("gpu");
-
-TEST_CASE("ramp") { GpuCase c; check_ramp(c.gpu, c.bits); }
-TEST_CASE("constant") { GpuCase c; check_constant(c.gpu); }
-TEST_CASE("mipcolors") { GpuCase c; check_mipcolors(c.gpu); }
-TEST_CASE("isotropic-vs-trilinear") { GpuCase c; check_isotropic_vs_trilinear(c.gpu, c.bits); }
-TEST_CASE("alpha-blurs") { GpuCase c; check_alpha_blurs(c.gpu); }
-
-// GPU vs reference on random footprints, each texture and option set with manual and hardware taps.
-void gpu_vs_reference(const std::string& texture, Wrap wrap, Taps taps, float alpha = 2.0f)
-{
-    GpuCase c;
-    const std::string name = to_string(taps);
-    check_gpu_vs_reference(c.gpu, texture, ewa_options(wrap, taps, alpha), alpha == 2.0f ? name : name + ", alpha 8", c.bits);
-}
-// Bias, LOD clamp (the loop cap shrinks footprints past level 3), eccentricity clamp 4.
-void gpu_vs_reference_clamps(Taps taps)
-{
-    GpuCase c;
-    SamplerOptions o = ewa_options(Wrap::repeat, taps, 0.5f, 4.0f);
-    o.lod_bias = -0.5f;
-    o.lod_max = 3.0f;
-    check_gpu_vs_reference(c.gpu, "grid", o, to_string(taps) + ", alpha 0.5, max-aniso 4, bias -0.5, lod-max 3", c.bits);
-}
-TEST_CASE("gpu-vs-reference-noise-manual") { gpu_vs_reference("noise", Wrap::repeat, Taps::manual); }
-TEST_CASE("gpu-vs-reference-checker-manual") { gpu_vs_reference("checker", Wrap::clamp, Taps::manual); }
-TEST_CASE("gpu-vs-reference-zoneplate-manual") { gpu_vs_reference("zoneplate", Wrap::mirror, Taps::manual); }
-TEST_CASE("gpu-vs-reference-noise-alpha-8-manual") { gpu_vs_reference("noise", Wrap::repeat, Taps::manual, 8.0f); }
-TEST_CASE("gpu-vs-reference-grid-clamps-manual") { gpu_vs_reference_clamps(Taps::manual); }
-TEST_CASE("gpu-vs-reference-noise-hardware") { gpu_vs_reference("noise", Wrap::repeat, Taps::hardware); }
-TEST_CASE("gpu-vs-reference-checker-hardware") { gpu_vs_reference("checker", Wrap::clamp, Taps::hardware); }
-TEST_CASE("gpu-vs-reference-zoneplate-hardware") { gpu_vs_reference("zoneplate", Wrap::mirror, Taps::hardware); }
-TEST_CASE("gpu-vs-reference-noise-alpha-8-hardware") { gpu_vs_reference("noise", Wrap::repeat, Taps::hardware, 8.0f); }
-TEST_CASE("gpu-vs-reference-grid-clamps-hardware") { gpu_vs_reference_clamps(Taps::hardware); }
-
-// Reported, not asserted beyond what report_hw_vs_manual checks.
-TEST_CASE("hw-vs-manual-noise") { GpuCase c; report_hw_vs_manual(c.gpu, "noise", make_procedural("noise", 256), Wrap::repeat); }
-TEST_CASE("hw-vs-manual-checker") { GpuCase c; report_hw_vs_manual(c.gpu, "checker", make_procedural("checker", 256), Wrap::clamp); }
-TEST_CASE("hw-vs-manual-zoneplate")
-{
-    GpuCase c;
-    report_hw_vs_manual(c.gpu, "zoneplate", make_procedural("zoneplate", 256), Wrap::mirror);
-}
-TEST_CASE("twisted-blocks-checker") { GpuCase c; check_twisted_blocks(c.gpu, "checker", 512, 64.0, 256.0, Wrap::repeat); }
-TEST_CASE("twisted-blocks-zoneplate") { GpuCase c; check_twisted_blocks(c.gpu, "zoneplate", 256, 2.0, 8.0, Wrap::repeat); }
-TEST_CASE("overshoot") { GpuCase c; check_overshoot(c.gpu); }
-TEST_CASE("counts") { GpuCase c; check_counts(c.gpu); }
-TEST_CASE("non-finite") { command_case(); check_non_finite(); }
-TEST_SUITE_END();
-
-TEST_SUITE_BEGIN("gpu slow");
-TEST_CASE("degenerate-all-families") { check_degenerate_all_families(command_case()); }
 TEST_SUITE_END();
