@@ -376,19 +376,24 @@ SampleResult read_colors_csv(const std::string& path, bool stats, const std::str
 
 } // namespace
 
-namespace {
-
-// FLAGS as a shell splits them: words between blanks, single quotes keeping what they hold.
-std::vector<std::string> split_flags(const std::string& flags)
+std::vector<std::string> shell_words(const std::string& line)
 {
     std::vector<std::string> words;
     std::string word;
     bool in_word = false, quoted = false;
-    for (char c : flags) {
-        if (c == '\'') {
-            quoted = !quoted;
+    for (size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted) {
+            if (c == '\'')
+                quoted = false;
+            else
+                word += c;
+        } else if (c == '\'') {
+            quoted = in_word = true;
+        } else if (c == '\\' && i + 1 < line.size()) {
+            word += line[++i];
             in_word = true;
-        } else if ((c == ' ' || c == '\t' || c == '\n') && !quoted) {
+        } else if (c == ' ') {
             if (in_word)
                 words.push_back(word);
             word.clear();
@@ -398,18 +403,14 @@ std::vector<std::string> split_flags(const std::string& flags)
             in_word = true;
         }
     }
-    if (quoted)
-        throw Error("unbalanced quote in the flags: " + flags);
     if (in_word)
         words.push_back(word);
     return words;
 }
 
-} // namespace
-
 SampleResult run_sample(const std::string& flags, const std::string& lookups_csv, bool stats)
 {
-    std::vector<std::string> argv = split_flags(flags);
+    std::vector<std::string> argv = shell_words(flags);
     argv.push_back("--validate");
     if (!test_device().empty())
         argv.insert(argv.end(), {"--device", test_device()});

@@ -149,6 +149,10 @@ struct SampleResult {
     std::vector<LookupStats> stats; // with stats only
 };
 
+// POSIX shell words of `line`: blanks split, '...' quotes literally, a backslash outside quotes escapes the
+// next character (all that tf::shell_quote writes).
+std::vector<std::string> shell_words(const std::string& line);
+
 // The lookups of LOOKUPS_CSV filtered as `texfilter sample --validate [--device D] [--stats] FLAGS` filters
 // them (D the test device), in process through tf::sample_lookups (cli/commands.h): the same flags, checks
 // and device work, no command and no output file. Throws tf::Error naming the flags if it fails (a validation

@@ -215,35 +215,48 @@ TEST_CASE("errors-name-the-line")
 // 4. The bounds: each limit accepted, one past it refused.
 TEST_CASE("bounds")
 {
-    CHECK_EQ_TEXT(error_of_line("wait 0"), "");
-    CHECK_EQ_TEXT(error_of_line("wait 100000"), "");
-    CHECK_CONTAINS(error_at_line_3("wait 100001"), "views.txt:3: ", "0..100000");
-    CHECK_CONTAINS(error_at_line_3("wait -1"), "views.txt:3: ", "0..100000");
-    CHECK_EQ_TEXT(error_of_line("hold 0"), "");
-    CHECK_EQ_TEXT(error_of_line("hold 60000"), "");
-    CHECK_CONTAINS(error_at_line_3("hold 60001"), "views.txt:3: ", "0..60000");
-    CHECK_EQ_TEXT(error_of_line("divider 0"), "");
-    CHECK_EQ_TEXT(error_of_line("divider 1"), "");
-    CHECK_CONTAINS(error_at_line_3("divider 1.0001"), "views.txt:3: ", "0..1");
-    CHECK_CONTAINS(error_at_line_3("divider -0.0001"), "views.txt:3: ", "0..1");
-    CHECK_EQ_TEXT(error_of_line("loupe 0 0 1"), "");
-    CHECK_EQ_TEXT(error_of_line("loupe 65535 65535 64"), "");
-    CHECK_CONTAINS(error_at_line_3("loupe 0 0 0"), "views.txt:3: ", "1..64");
-    CHECK_CONTAINS(error_at_line_3("loupe 0 0 65"), "views.txt:3: ", "1..64");
-    CHECK_CONTAINS(error_at_line_3("loupe -1 0 4"), "views.txt:3: ", "pixel x '-1'");
-    CHECK_EQ_TEXT(error_of_line("resize 2x2"), "");
-    CHECK_EQ_TEXT(error_of_line("resize 8192x8192"), "");
-    CHECK_CONTAINS(error_at_line_3("resize 8194x8"), "views.txt:3: ", "[2, 8192]");
-    CHECK_CONTAINS(error_at_line_3("resize 0x8"), "views.txt:3: ", "[2, 8192]");
-    CHECK_EQ_TEXT(error_of_line("frame 0"), "");
-    CHECK_EQ_TEXT(error_of_line("frame 1073741824"), "");
-    CHECK_CONTAINS(error_at_line_3("frame -1"), "views.txt:3: ", "0..1073741824");
-    CHECK_EQ_TEXT(error_of_line("texture grid --texture-size 16384"), "");
-    CHECK_CONTAINS(error_at_line_3("texture grid --texture-size 16385"), "views.txt:3: ", "--texture-size");
-    CHECK_EQ_TEXT(error_of_line("filter aniso --probes 16"), "");
-    CHECK_CONTAINS(error_at_line_3("filter aniso --probes 17"), "views.txt:3: ", "--probes");
-    CHECK_EQ_TEXT(error_of_line("filter ground-truth --spp 4096 --pixel-filter gaussian"), "");
-    CHECK_CONTAINS(error_at_line_3("filter ground-truth --spp 4225"), "views.txt:3: ", "--spp");
+    const char* const accepted[] = {
+        "wait 0",
+        "wait 100000",
+        "hold 0",
+        "hold 60000",
+        "divider 0",
+        "divider 1",
+        "loupe 0 0 1",
+        "loupe 65535 65535 64",
+        "resize 2x2",
+        "resize 8192x8192",
+        "frame 0",
+        "frame 1073741824",
+        "texture grid --texture-size 16384",
+        "filter aniso --probes 16",
+        "filter ground-truth --spp 4096 --pixel-filter gaussian",
+    };
+    for (const char* line : accepted) {
+        INFO(line);
+        CHECK_EQ_TEXT(error_of_line(line), "");
+    }
+    // Each refused line and what its message names.
+    const char* const refused[][2] = {
+        {"wait 100001", "0..100000"},
+        {"wait -1", "0..100000"},
+        {"hold 60001", "0..60000"},
+        {"divider 1.0001", "0..1"},
+        {"divider -0.0001", "0..1"},
+        {"loupe 0 0 0", "1..64"},
+        {"loupe 0 0 65", "1..64"},
+        {"loupe -1 0 4", "pixel x '-1'"},
+        {"resize 8194x8", "[2, 8192]"},
+        {"resize 0x8", "[2, 8192]"},
+        {"frame -1", "0..1073741824"},
+        {"texture grid --texture-size 16385", "--texture-size"},
+        {"filter aniso --probes 17", "--probes"},
+        {"filter ground-truth --spp 4225", "--spp"},
+    };
+    for (const auto& [line, part] : refused) {
+        INFO(line);
+        CHECK_CONTAINS(error_at_line_3(line), "views.txt:3: ", part);
+    }
 }
 
 // 5. From a file: the same actions; a missing file names its path.

@@ -21,45 +21,11 @@ namespace {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-// POSIX shell words of `line`: blanks split, '...' quotes literally, a backslash outside quotes escapes the
-// next character (all that shell_quote writes).
-std::vector<std::string> shell_words(const std::string& line)
-{
-    std::vector<std::string> words;
-    std::string word;
-    bool in_word = false, quoted = false;
-    for (size_t i = 0; i < line.size(); ++i) {
-        const char c = line[i];
-        if (quoted) {
-            if (c == '\'')
-                quoted = false;
-            else
-                word += c;
-        } else if (c == '\'') {
-            quoted = in_word = true;
-        } else if (c == '\\' && i + 1 < line.size()) {
-            word += line[++i];
-            in_word = true;
-        } else if (c == ' ') {
-            if (in_word)
-                words.push_back(word);
-            word.clear();
-            in_word = false;
-        } else {
-            word += c;
-            in_word = true;
-        }
-    }
-    if (in_word)
-        words.push_back(word);
-    return words;
-}
-
 // What `texfilter render` accepts, plus the flags other engineers add for the viewer (--camera, --frame,
 // --view): the words after "texfilter render" must all be among them.
 Args parse_render_line(const std::string& line)
 {
-    std::vector<std::string> words = shell_words(line);
+    std::vector<std::string> words = test::shell_words(line);
     if (words.size() < 2 || words[0] != "texfilter" || words[1] != "render")
         throw Error("not a texfilter render line: " + line);
     words.erase(words.begin(), words.begin() + 2);
@@ -293,7 +259,7 @@ TEST_CASE("shell-quoting")
         expected += w + "\n";
     CHECK(output == expected, command + "\ngave\n" + output);
     CHECK(shell_quote("plain-word_1.png") == "plain-word_1.png"); // safe words stay unquoted
-    CHECK(shell_words(shell_quote("it's a 'test'")) == std::vector<std::string>{"it's a 'test'"});
+    CHECK(test::shell_words(shell_quote("it's a 'test'")) == std::vector<std::string>{"it's a 'test'"});
 }
 
 // 4. JSON: a state comes back field for field.
