@@ -38,12 +38,11 @@ double mipcolors_lod(const MipChain& mipcolors, const glm::dvec4& color, double&
     return lod;
 }
 
-std::vector<double> device_lods(const std::string& texfilter, const std::filesystem::path& work,
-                                const std::string& lookups_csv, const std::vector<Lookup>& lookups, int size)
+std::vector<double> device_lods(const std::string& lookups_csv, const std::vector<Lookup>& lookups, int size)
 {
     const MipChain colors = make_procedural("mipcolors", size);
     const std::vector<glm::dvec4> hw =
-        run_sample(texfilter, work, "--texture mipcolors --texture-size " + std::to_string(size) + " --filter hw-trilinear",
+        run_sample("--texture mipcolors --texture-size " + std::to_string(size) + " --filter hw-trilinear",
                    lookups_csv, false)
             .colors;
     const double top = double(colors.levels.size() - 1);

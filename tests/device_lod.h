@@ -35,8 +35,7 @@ double mipcolors_lod(const MipChain& mipcolors, const glm::dvec4& color, double&
 // --filter hw-trilinear` on mipcolors of size x size, decoded. Checks that every colour is a blend of two
 // neighbouring levels and every λ lies within spec_lod_range (clamped) widened by two mipmapPrecisionBits
 // steps (the LOD's accuracy and the blend fraction's quantisation).
-std::vector<double> device_lods(const std::string& texfilter, const std::filesystem::path& work,
-                                const std::string& lookups_csv, const std::vector<Lookup>& lookups, int size);
+std::vector<double> device_lods(const std::string& lookups_csv, const std::vector<Lookup>& lookups, int size);
 
 // The λ at which a function piecewise linear in λ between whole levels (trilinear, one PCF level pair)
 // takes its extremes over [min(a, b) - e, max(a, b) + e]: the ends (first, in that order) and the whole levels

@@ -45,8 +45,6 @@ namespace {
 constexpr double kUlp = 1.0 / 16777216.0; // 2^-24
 constexpr double kSupport = 2.0;         // TF_EWA_SUPPORT (R^2)
 
-std::string g_texfilter;
-std::filesystem::path g_work;
 
 std::vector<Lookup> scaled(std::vector<Lookup> ls, double x, double y)
 {
@@ -168,25 +166,11 @@ const std::vector<Lookup>& lookups()
 const std::string& lookups_path()
 {
     static const std::string path = [] {
-        g_texfilter = texfilter_path();
-        g_work = make_work_dir("sample_checks");
-        const std::string p = (g_work / "lookups.csv").string();
+        const std::string p = (test::work_dir() / "lookups.csv").string();
         write_lookups_csv(p, lookups());
         return p;
     }();
     return path;
-}
-
-const std::string& texfilter()
-{
-    lookups_path();
-    return g_texfilter;
-}
-
-const std::filesystem::path& work_dir()
-{
-    lookups_path();
-    return g_work;
 }
 
 double sub_texel_step() { return std::ldexp(1.0, -int(test_device_info().sub_texel_precision_bits)); }
@@ -205,8 +189,7 @@ std::string resource_flags(const ResourceOptions& r)
 test::SampleResult gpu_run(const Case& c)
 {
     const std::string path = lookups_path();
-    return test::run_sample(g_texfilter, g_work,
-                            "--texture " + c.texture + " --texture-size " + std::to_string(kSize) + " --wrap " +
+    return test::run_sample("--texture " + c.texture + " --texture-size " + std::to_string(kSize) + " --wrap " +
                                 to_string(c.options.wrap) + " " + c.flags + resource_flags(c.resource),
                             path, true);
 }

@@ -23,8 +23,6 @@ constexpr int kSize = 64; // texture side: small, so every run is cheap
 const std::vector<Lookup>& lookups();
 // Them as a CSV in the work directory, for `texfilter sample --lookups`.
 const std::string& lookups_path();
-const std::string& texfilter();
-const std::filesystem::path& work_dir();
 
 // The test device's sampler precision as steps: 2^-subTexelPrecisionBits, 2^-mipmapPrecisionBits.
 double sub_texel_step();

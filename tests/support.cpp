@@ -1,9 +1,11 @@
 #include "support.h"
+#include "cli/commands.h"
 #include "io/lookups_csv.h"
 #include "vulkan/loader.h"
 
 #include <algorithm>
 #include <climits>
+#include <cerrno> // program_invocation_short_name
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -22,7 +24,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The running test case's failed checks, and how many more it may report (limit_failure_lines).
+// The check reporter's own state, as doctest keeps its own: the running test case's failed checks and how
+// many more it may report (limit_failure_lines), set back by the listener as each case starts; the case's
+// name; and whether main was asked to list the named checks. No test reads or writes these but through
+// the functions declared in support.h.
 int g_failures = 0;
 int g_lines_left = INT_MAX;
 std::string g_case;         // the running test case's name
@@ -95,6 +100,39 @@ bool check_throws(bool threw, const std::string& message, const std::string& par
     const bool ok = threw && message.find(part) != std::string::npos;
     return check(ok, file, line, "throws tf::Error containing \"" + part + "\": " + expr,
                  ok ? "" : threw ? "threw \"" + message + "\"" : "threw " + message);
+}
+
+bool check_bound(const std::string& what, double measured, double bound, bool upper, const char* file, int line)
+{
+    const bool ok = upper ? measured <= bound : measured >= bound; // NaN fails
+    std::printf("%-4s %-72s %.4g (%s %.4g)\n", ok ? "ok" : "FAIL", what.c_str(), measured, upper ? "bound" : "at least",
+                bound);
+    return check(ok, file, line, what,
+                 "measured " + show(measured) + (upper ? ", bound " : ", at least ") + show(bound));
+}
+
+bool check_true(const std::string& what, bool ok, const std::string& detail, const char* file, int line)
+{
+    std::printf("%-4s %-72s %s\n", ok ? "ok" : "FAIL", what.c_str(), detail.c_str());
+    return check(ok, file, line, what, detail);
+}
+
+bool check_contains(const std::string& text, std::initializer_list<std::string> parts, const char* file, int line,
+                    const char* text_expr)
+{
+    std::string missing;
+    for (const std::string& part : parts)
+        if (text.find(part) == std::string::npos)
+            missing += (missing.empty() ? "\"" : ", \"") + part + "\"";
+    return check(missing.empty(), file, line, std::string(text_expr) + " contains every part",
+                 "\"" + text + "\" lacks " + missing);
+}
+
+bool check_eq_text(const std::string& a, const std::string& b, const char* file, int line, const char* a_text,
+                   const char* b_text)
+{
+    const bool ok = a == b;
+    return check(ok, file, line, std::string(a_text) + " == " + b_text, ok ? "" : "\"" + a + "\" vs \"" + b + "\"");
 }
 
 bool near(double a, double b, double eps) { return a == b || std::fabs(a - b) <= eps; }
@@ -226,6 +264,12 @@ fs::path make_work_dir(const std::string& name)
     return dir;
 }
 
+const fs::path& work_dir()
+{
+    static const fs::path dir = make_work_dir(program_invocation_short_name);
+    return dir;
+}
+
 namespace {
 
 // Through a volatile: GCC 12.2 at -O2/-O3 vectorises six double -> float -> double conversions in a row
@@ -287,6 +331,16 @@ void write_lookups_csv(const fs::path& path, const std::vector<Lookup>& lookups,
         throw Error("cannot write " + path.string());
 }
 
+fs::path new_file_in(const fs::path& dir, const std::string& prefix, const std::string& suffix)
+{
+    std::string name = (dir / (prefix + "XXXXXX" + suffix)).string();
+    const int fd = ::mkstemps(name.data(), int(suffix.size()));
+    if (fd < 0)
+        throw Error("cannot make a file " + name);
+    ::close(fd);
+    return name;
+}
+
 namespace {
 
 // "exit 2", or how std::system's command ended otherwise.
@@ -322,13 +376,64 @@ SampleResult read_colors_csv(const std::string& path, bool stats, const std::str
 
 } // namespace
 
-SampleResult run_sample(const std::string& texfilter, const fs::path& work, const std::string& flags,
-                        const std::string& lookups_csv, bool stats)
+std::vector<std::string> shell_words(const std::string& line)
 {
-    static int runs = 0; // one output file a run, kept until the work dir goes
-    const std::string out = (work / ("sample-" + std::to_string(runs++) + ".csv")).string();
+    std::vector<std::string> words;
+    std::string word;
+    bool in_word = false, quoted = false;
+    for (size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted) {
+            if (c == '\'')
+                quoted = false;
+            else
+                word += c;
+        } else if (c == '\'') {
+            quoted = in_word = true;
+        } else if (c == '\\' && i + 1 < line.size()) {
+            word += line[++i];
+            in_word = true;
+        } else if (c == ' ') {
+            if (in_word)
+                words.push_back(word);
+            word.clear();
+            in_word = false;
+        } else {
+            word += c;
+            in_word = true;
+        }
+    }
+    if (in_word)
+        words.push_back(word);
+    return words;
+}
+
+SampleResult run_sample(const std::string& flags, const std::string& lookups_csv, bool stats)
+{
+    std::vector<std::string> argv = shell_words(flags);
+    argv.push_back("--validate");
+    if (!test_device().empty())
+        argv.insert(argv.end(), {"--device", test_device()});
+    if (stats)
+        argv.push_back("--stats");
+    const std::vector<Lookup> lookups = read_lookups_csv(lookups_csv);
+    SampleOutput output;
+    try {
+        output = sample_lookups(argv, lookups);
+    } catch (const std::exception& e) {
+        throw Error("sample " + flags + " (in process): " + e.what());
+    }
+    if (output.colors.size() != lookups.size() || (stats && output.stats.size() != lookups.size()))
+        throw Error(std::to_string(output.colors.size()) + " colours for " + std::to_string(lookups.size()) +
+                    " lookups from sample " + flags);
+    return {std::move(output.colors), std::move(output.stats)};
+}
+
+SampleResult run_sample_command(const std::string& flags, const std::string& lookups_csv, bool stats)
+{
+    const std::string out = new_file_in(work_dir(), "sample-", ".csv").string();
     const std::string device = test_device().empty() ? "" : "--device '" + test_device() + "' ";
-    const std::string command = "timeout " + std::to_string(kSampleSeconds) + " '" + texfilter +
+    const std::string command = "timeout " + std::to_string(kSampleSeconds) + " '" + texfilter_path() +
                                 "' sample --validate " + device + (stats ? "--stats " : "") + flags + " --lookups '" +
                                 lookups_csv + "' -o '" + out + "' > /dev/null";
     if (const int status = std::system(command.c_str()); status != 0)

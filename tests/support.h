@@ -16,6 +16,7 @@
 #include <exception>
 #include <filesystem>
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,17 @@ bool check_near(const glm::dvec4& a, const glm::dvec4& b, double eps, const char
 // threw: the expression threw a tf::Error; message: what it threw (any exception).
 bool check_throws(bool threw, const std::string& message, const std::string& part, const char* file, int line,
                   const char* expr);
+
+// Measured against a bound, and named conditions: each prints one line, "ok" or "FAIL", what, the measured
+// value and its bound (or the detail), so a run shows its margins and a device's log can be read for them,
+// and is one doctest assertion naming what, measured and bound when it fails. NaN fails either bound.
+bool check_bound(const std::string& what, double measured, double bound, bool upper, const char* file, int line);
+bool check_true(const std::string& what, bool ok, const std::string& detail, const char* file, int line);
+// `text` holds every one of `parts`.
+bool check_contains(const std::string& text, std::initializer_list<std::string> parts, const char* file, int line,
+                    const char* text_expr);
+bool check_eq_text(const std::string& a, const std::string& b, const char* file, int line, const char* a_text,
+                   const char* b_text);
 
 // Equal, or at most eps apart, in every component (NaN is never near).
 bool near(double a, double b, double eps);
@@ -100,6 +112,11 @@ void run_end_of_run();
 
 // A fresh directory texfilter-<name>-<pid> in the system's temp dir, removed when the process exits.
 std::filesystem::path make_work_dir(const std::string& name);
+// This process's scratch directory, texfilter-<executable>-<pid>: made on first use, the same ever after.
+const std::filesystem::path& work_dir();
+// A new empty file PREFIX<6 characters>SUFFIX in dir, its name unique (mkstemps).
+std::filesystem::path new_file_in(const std::filesystem::path& dir, const std::string& prefix,
+                                  const std::string& suffix);
 
 // Where random_footprint_lookups draws from. Footprints are 2^o level-0 texels of a texture_size texture,
 // o in [octave_min, octave_max], at a random angle; the minor column is shorter by 2^s, s in
@@ -132,11 +149,20 @@ struct SampleResult {
     std::vector<LookupStats> stats; // with stats only
 };
 
-// Runs `texfilter sample --validate [--device D] [--stats] FLAGS --lookups LOOKUPS_CSV -o OUT` (OUT in
-// work; D the test device) under a time limit and reads one row per lookup back. Throws tf::Error naming the command line if the command
-// fails or its output is not that.
-SampleResult run_sample(const std::string& texfilter, const std::filesystem::path& work, const std::string& flags,
-                        const std::string& lookups_csv, bool stats);
+// POSIX shell words of `line`: blanks split, '...' quotes literally, a backslash outside quotes escapes the
+// next character (all that tf::shell_quote writes).
+std::vector<std::string> shell_words(const std::string& line);
+
+// The lookups of LOOKUPS_CSV filtered as `texfilter sample --validate [--device D] [--stats] FLAGS` filters
+// them (D the test device), in process through tf::sample_lookups (cli/commands.h): the same flags, checks
+// and device work, no command and no output file. Throws tf::Error naming the flags if it fails (a validation
+// message included) or gives other than one row per lookup.
+SampleResult run_sample(const std::string& flags, const std::string& lookups_csv, bool stats);
+// The command itself, for the tests of the command: `texfilter sample --validate [--device D] [--stats] FLAGS
+// --lookups LOOKUPS_CSV -o OUT` (texfilter_path(); OUT a new file in work_dir()) under a time limit (a hung
+// shader fails the test instead of blocking it), its CSV read back. Throws tf::Error naming the command line
+// if the command fails or its output is not one row per lookup.
+SampleResult run_sample_command(const std::string& flags, const std::string& lookups_csv, bool stats);
 
 } // namespace tf::test
 
@@ -154,6 +180,15 @@ SampleResult run_sample(const std::string& texfilter, const std::filesystem::pat
 // Doubles or glm::dvec4s, every component within eps.
 #define CHECK_NEAR(a, b, eps) \
     ::tf::test::check_near((a), (b), (eps), __FILE__, __LINE__, #a " ~= " #b " within " #eps)
+// measured <= bound (CHECK_LE) or measured >= bound (CHECK_GE), what a string; printed either way.
+#define CHECK_LE(what, measured, bound) ::tf::test::check_bound((what), (measured), (bound), true, __FILE__, __LINE__)
+#define CHECK_GE(what, measured, bound) ::tf::test::check_bound((what), (measured), (bound), false, __FILE__, __LINE__)
+// A named condition and what was seen (strings); printed either way.
+#define CHECK_TRUE(what, ok, detail) ::tf::test::check_true((what), bool(ok), (detail), __FILE__, __LINE__)
+// The text (a std::string) contains each of the parts that follow it.
+#define CHECK_CONTAINS(text, ...) ::tf::test::check_contains((text), {__VA_ARGS__}, __FILE__, __LINE__, #text)
+// Two strings equal.
+#define CHECK_EQ_TEXT(a, b) ::tf::test::check_eq_text((a), (b), __FILE__, __LINE__, #a, #b)
 // The expression throws tf::Error whose message contains `part`.
 #define CHECK_THROWS_WITH(expr, part)                                                             \
     do {                                                                                          \

@@ -24,13 +24,6 @@ using namespace tf;
 
 namespace {
 
-void check_bound(const char* file, int line, const std::string& what, double measured, double bound) {
-    const bool ok = measured <= bound; // NaN fails
-    std::printf("%-4s %-72s %.3g (bound %.3g)\n", ok ? "ok" : "FAIL", what.c_str(), measured, bound);
-    test::check(ok, file, line, what, test::show(measured) + " > " + test::show(bound));
-}
-#define CHECK_LE(what, measured, bound) check_bound(__FILE__, __LINE__, what, measured, bound)
-
 const Reconstruction kCubics[] = {Reconstruction::bspline, Reconstruction::catmull_rom};
 
 double max_abs(const glm::dvec4& d) { return std::max({std::abs(d.r), std::abs(d.g), std::abs(d.b), std::abs(d.a)}); }

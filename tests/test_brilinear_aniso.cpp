@@ -503,13 +503,11 @@ void reference_checks()
 // ---------------------------------------------------------------------------------------------------
 // Part 2: the GPU through `texfilter sample`.
 
-std::string g_texfilter;
-std::filesystem::path g_work;
 
 // `texfilter sample --validate --stats` of a lookups CSV on a procedural texture.
 SampleResult sample(const std::string& texture, const std::string& flags, const std::string& lookups)
 {
-    return test::run_sample(g_texfilter, g_work, "--texture " + texture + " " + flags, lookups, true);
+    return test::run_sample("--texture " + texture + " " + flags, lookups, true);
 }
 
 // Worst error over the lookups, as a ratio to each lookup's bound.
@@ -557,7 +555,7 @@ void gpu_checks()
     for (const Lookup& l : degenerate_lookups())
         lookups.push_back(l);
     lookups = test::as_float(lookups); // the reference sees the float values the GPU sees
-    const std::string path = (g_work / "lookups.csv").string();
+    const std::string path = (test::work_dir() / "lookups.csv").string();
     test::write_lookups_csv(path, lookups);
     auto flags = [](const std::string& filter, Wrap wrap) { return "--filter " + filter + " --wrap " + to_string(wrap); };
 
@@ -632,7 +630,7 @@ void gpu_checks()
     // The nearest-level tie: rho = 1 texel and a bias of 3/2 gives lambda = 1.5 exactly (level 1, the finer);
     // 1.5 + 2^-23 (the next float) must pick level 2, as ceil(d + 1/2) - 1 does in exact arithmetic.
     run_check("gpu brilinear band 0 at the tie f = 1/2 and 1/2 + 1 ulp", [&] {
-        const std::string tie = (g_work / "tie.csv").string();
+        const std::string tie = (test::work_dir() / "tie.csv").string();
         test::write_lookups_csv(tie, {{0.3, 0.6, 1.0 / 256, 0, 0, 1.0 / 256}});
         const MipChain colors = make_procedural("mipcolors", 256);
         std::string note;
@@ -655,7 +653,7 @@ void gpu_checks()
     // of ~1e-7), and the colour is level 1's. J = 2 (1 + 2^-23) texels (trilinear, brilinear's band 0.25 is
     // the same), diag(8 (1 + 2^-23), 2) for aniso (N = 4).
     run_check("gpu lod within float rounding of a level reads that level alone", [&] {
-        const std::string path = (g_work / "near-level.csv").string();
+        const std::string path = (test::work_dir() / "near-level.csv").string();
         const double t = 1.0 / 256, up = 1.0 + std::ldexp(1.0, -23);
         test::write_lookups_csv(path, {{0.3, 0.6, 2 * up * t, 0, 0, 2 * up * t}, {0.3, 0.6, 8 * up * t, 0, 0, 2 * t}});
         const SampleResult tri = sample("mipcolors", "--filter trilinear", path);
@@ -671,7 +669,7 @@ void gpu_checks()
     // LOD 1 exactly (4 fetches a probe: 16); diag(8, 3) -> N = 3, LOD log2(8/3) (24 fetches); one column
     // (64, 0) -> N = 16, LOD 2 (64 fetches); zero -> level 0, NaN -> the last level, one probe (4 fetches).
     run_check("gpu aniso known footprints: N, LOD, fetches (mipcolors)", [&] {
-        const std::string known = (g_work / "known.csv").string();
+        const std::string known = (test::work_dir() / "known.csv").string();
         const double t = 1.0 / 256;
         const std::vector<Lookup> ls = {{0.3, 0.6, 8 * t, 0, 0, 2 * t},  {0.3, 0.6, 8 * t, 0, 0, 3 * t},
                                         {0.3, 0.6, 64 * t, 0, 0, 0},     {0.3, 0.6, 0, 0, 0, 0},
@@ -785,7 +783,7 @@ void gpu_checks()
     run_check("gpu huge finite uv: manual bilinear-based forms stay finite", [&] {
         const std::vector<Lookup> huge = {{1e38, 0.5, 0.001, 0, 0, 0.001}, {-3e38, 1e38, 0.01, 0, 0, 0.02},
                                           {3.4e38, -3.4e38, 0.003, 0.002, -0.001, 0.004}};
-        const std::string huge_path = (g_work / "huge.csv").string();
+        const std::string huge_path = (test::work_dir() / "huge.csv").string();
         test::write_lookups_csv(huge_path, huge);
         for (const std::string filter : {"bilinear", "bilinear-mip", "trilinear", "brilinear", "aniso"}) {
             SampleResult r = sample("checker", flags(filter, Wrap::repeat), huge_path);
@@ -807,8 +805,6 @@ TEST_SUITE_END();
 TEST_SUITE_BEGIN("gpu");
 TEST_CASE("gpu")
 {
-    g_texfilter = test::texfilter_path();
-    g_work = test::make_work_dir("brilinear-aniso");
     gpu_checks();
 }
 TEST_SUITE_END();

@@ -278,7 +278,7 @@ TEST_CASE("moved-camera-vs-reference")
     CHECK_EQ(validation_message_count(), 0);
 }
 
-// 9. `texfilter render --camera ... --frame ...` gives the in-process render of with_camera(scene_at_frame(
+// 9. A CLI test (the command's flags): `texfilter render --camera ... --frame ...` gives the in-process render of with_camera(scene_at_frame(
 //    make_scene(...))) to the bit (PFM: float32 as rendered), on the GPU (the mesh) and on the reference (a
 //    ray-cast scene); and --camera with the scene's own camera is the render without it.
 TEST_CASE("cli-camera-and-frame")
@@ -289,8 +289,7 @@ TEST_CASE("cli-camera-and-frame")
     SamplerOptions trilinear;
     trilinear.filter = Filter::trilinear;
     auto run_render = [&](SceneKind kind, const std::string& flags) {
-        static int runs = 0;
-        std::string out = (work / ("render-" + std::to_string(runs++) + ".pfm")).string();
+        std::string out = test::new_file_in(work, "render-", ".pfm").string();
         std::string device = test::test_device().empty() ? "" : " --device '" + test::test_device() + "'";
         std::string command = "timeout 300 '" + test::texfilter_path() + "' render --validate" + device + " --scene " +
                               to_string(kind) + " --texture checker --texture-size " + std::to_string(texture_size) +

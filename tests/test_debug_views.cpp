@@ -209,7 +209,7 @@ TEST_CASE("data-fetches-vs-sample-stats")
 {
     Gpu gpu;
     const MipChain chain = make_procedural("checker", 256);
-    const std::filesystem::path work = test::make_work_dir("debug-views");
+    const std::filesystem::path& work = test::work_dir();
     test::limit_failure_lines(20);
     const std::vector<SceneData> scenes = render_scenes(gpu, chain);
     for (size_t f = 0; f < debug_filters().size(); ++f) {
@@ -224,7 +224,7 @@ TEST_CASE("data-fetches-vs-sample-stats")
         const std::string csv = (work / ("lookups-" + std::to_string(f) + ".csv")).string();
         test::write_lookups_csv(csv, lookups);
         const test::SampleResult r =
-            test::run_sample(test::texfilter_path(), work, "--texture checker " + flags_of(o), csv, true);
+            test::run_sample("--texture checker " + flags_of(o), csv, true);
         CHECK_EQ(r.stats.size(), lookups.size());
         double most = 0;
         for (size_t i = 0; i < std::min(r.stats.size(), lookups.size()); ++i) {

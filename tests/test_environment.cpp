@@ -45,7 +45,7 @@ struct Device {
 
 Device& device()
 {
-    static Device* d = [] {
+    static Device* const d = [] {
         Device* made = new Device;
         test::at_end_of_run([made] { delete made; });
         return made;

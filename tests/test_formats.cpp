@@ -191,15 +191,10 @@ TEST_SUITE_END();
 
 namespace {
 
-std::string texfilter;
-std::filesystem::path work;
-
 const std::string& lookups_path()
 {
     static const std::string path = [] {
-        texfilter = test::texfilter_path();
-        work = test::make_work_dir("formats");
-        const std::string p = (work / "lookups.csv").string();
+        const std::string p = (test::work_dir() / "lookups.csv").string();
         test::write_lookups_csv(p, test::as_float(test::random_footprint_lookups(
                                        384, 913, {.octave_max = 6.0, .max_stretch = 2.0, .texture_size = 64.0})));
         return p;
@@ -216,8 +211,8 @@ void compare_format(const std::string& format, const std::vector<std::string>& f
     const double decode = format_info(f).srgb ? srgb_decode_allowance() : 0.0;
     for (const std::string& filter : filters) {
         const std::string flags = "--texture zoneplate --texture-size 64 --format " + format + " --filter " + filter;
-        const auto gpu = test::run_sample(texfilter, work, flags, lookups_path(), false).colors;
-        const auto cpu = test::run_sample(texfilter, work, flags + " --backend reference", lookups_path(), false).colors;
+        const auto gpu = test::run_sample(flags, lookups_path(), false).colors;
+        const auto cpu = test::run_sample(flags + " --backend reference", lookups_path(), false).colors;
         double worst = 0;
         for (size_t i = 0; i < gpu.size(); ++i)
             worst = std::max(worst, test::max_channel_diff(gpu[i], cpu[i]));

@@ -473,7 +473,7 @@ TEST_CASE("srgb-table")
 
 TEST_CASE("cli-build-cpu-vs-gpu")
 {
-    // texfilter build writes what the filters read: the device's table is the host's byte for byte and
+    // A CLI test (the files the command writes): texfilter build writes what the filters read: the device's table is the host's byte for byte and
     // its levels are within the chain bound (values in [0, 1]: 1e-5).
     const std::filesystem::path work = test::make_work_dir("gpu-build-cli");
     for (const char* build : {"cpu", "gpu"}) {

@@ -42,14 +42,6 @@ struct Worst {
     void see(double v) { value = std::isnan(v) || std::isnan(value) ? NAN : std::max(value, v); }
 };
 
-// Prints a measured worst case next to its limit (the margins show in every run) and checks it.
-void within(double worst, double limit, const std::string& what, const char* file, int line)
-{
-    std::printf("  %-58s %-12.4g limit %.4g\n", what.c_str(), worst, limit);
-    tf::test::check(worst <= limit, file, line, what + " <= limit", show(worst) + " > " + show(limit));
-}
-#define CHECK_WITHIN(worst, limit, what) within((worst), (limit), (what), __FILE__, __LINE__)
-
 const char* name(PixelFilter f) { return f == PixelFilter::box ? "box" : "gaussian"; }
 
 tf::SamplerOptions truth_options(PixelFilter filter, int side, Wrap wrap)
@@ -186,12 +178,12 @@ TEST_CASE("gaussian-samples")
     // an Exp(1) variate: x^2 there has sd ~0.35 px^2 over 64 samples -> ~7e-4 on the variance, and x an
     // sd ~0.12 px -> ~2e-4 px on the mean. 0.01 is over 10 of those, and still fails a sigma 3% off
     // (variance off by 0.015) or a centre 0.01 px off.
-    CHECK_WITHIN(std::max(std::fabs(mean.x), std::fabs(mean.y)), 0.01, "gaussian: |mean - centre| (px)");
-    CHECK_WITHIN(std::max(std::fabs(var.x - sigma * sigma), std::fabs(var.y - sigma * sigma)), 0.01,
-                 "gaussian: |per-axis variance - sigma^2| (px^2)");
+    CHECK_LE("gaussian: |mean - centre| (px)", std::max(std::fabs(mean.x), std::fabs(mean.y)), 0.01);
+    CHECK_LE("gaussian: |per-axis variance - sigma^2| (px^2)",
+             std::max(std::fabs(var.x - sigma * sigma), std::fabs(var.y - sigma * sigma)), 0.01);
     // r < median_radius exactly when the radial quantile a < 1/2: 32 of the 64 radial strata, so the
     // fraction is 1/2 up to ties at the boundary; 0.01 is 41 samples.
-    CHECK_WITHIN(std::fabs(below_median / double(n) - 0.5), 0.01, "gaussian: |fraction within median radius - 1/2|");
+    CHECK_LE("gaussian: |fraction within median radius - 1/2|", std::fabs(below_median / double(n) - 0.5), 0.01);
 
     // Every sample within gaussian_reach (what tests 3 and 4 take as the Gaussian's footprint).
     Worst reach_excess{-INFINITY}; // negative: the margin left
@@ -204,7 +196,7 @@ TEST_CASE("gaussian-samples")
                 reach_excess.see(std::max(std::fabs(d.x), std::fabs(d.y)) - reach);
             }
         }
-    CHECK_WITHIN(reach_excess.value, 0.0, "gaussian: max(|dx|, |dy|) - reach (px)");
+    CHECK_LE("gaussian: max(|dx|, |dy|) - reach (px)", reach_excess.value, 0.0);
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -256,15 +248,15 @@ TEST_CASE("constant-texture")
                       std::to_string(n_blend) + " between");
             // Bilinear weights sum to 1 in double, and 256 equal floats add and divide by 256 exactly: the
             // only error is double rounding (~1e-16) before the float store. 1e-6 is a few float ulps.
-            CHECK_WITHIN(on.value, 1e-6, what + ": on the quad, |truth - constant|");
-            CHECK_WITHIN(off.value, 1e-6, what + ": off the quad, |truth - background|");
-            CHECK_WITHIN(blend.value, 1e-6, what + ": edges, distance outside [bg, constant]");
+            CHECK_LE(what + ": on the quad, |truth - constant|", on.value, 1e-6);
+            CHECK_LE(what + ": off the quad, |truth - background|", off.value, 1e-6);
+            CHECK_LE(what + ": edges, distance outside [bg, constant]", blend.value, 1e-6);
             // The scene's float constants put the edge within ~1e-6 px of the strata boundary (20.5 px
             // times a float rounding): a sample that close could land on the other side, 1/256 of the
             // contrast (0.72) -> 0.0028. A stratum's shift (16 samples) is 0.045.
             if (filter == PixelFilter::box)
-                CHECK_WITHIN(coverage.value, rgb_diff(colour, background) / 256 + 1e-6,
-                             what + ": edges, |truth - share of corners|");
+                CHECK_LE(what + ": edges, |truth - share of corners|", coverage.value,
+                         rgb_diff(colour, background) / 256 + 1e-6);
         }
 }
 
@@ -291,7 +283,7 @@ TEST_CASE("linear-ramp")
             const dvec2 uv = tf::reference_hit(scene, x + 0.5, y + 0.5).uv;
             premise.see(std::fabs(tf::reference_bilinear(chain.levels[0], uv.x, uv.y, Wrap::clamp).x - uv.x));
         }
-    CHECK_WITHIN(premise.value, 1e-9, "ramp: |bilinear(uv) - u| at pixel centres");
+    CHECK_LE("ramp: |bilinear(uv) - u| at pixel centres", premise.value, 1e-9);
 
     // Mean sample position off the centre by e px moves the result by e / (8 w) = e / 512 in u.
     // Box: the mean of 4096 jitters, each uniform over 1/64 px, is off by sd (1/64) / sqrt(12 * 4096)
@@ -316,7 +308,7 @@ TEST_CASE("linear-ramp")
                 error.see(rgb_diff(truth.at(x, y), dvec4(u)));
             }
         CHECK(used == size * size, std::to_string(used) + " pixels inside"); // zoom shows 8x8 central texels
-        CHECK_WITHIN(error.value, limit, std::string("ramp ") + name(filter) + ": |truth - u(centre)|");
+        CHECK_LE(std::string("ramp ") + name(filter) + ": |truth - u(centre)|", error.value, limit);
     }
 }
 
@@ -356,8 +348,8 @@ TEST_CASE("checker")
         }
         const std::string what = std::string("checker 4 texels/px ") + name(filter);
         std::printf("  %s: mean |truth - 1/2| %.4g (sampling noise only)\n", what.c_str(), off / double(size * size));
-        CHECK_WITHIN(error.value, filter == PixelFilter::box ? 0.01 : 0.04, what + ": |truth - 1/2|");
-        CHECK_WITHIN(std::fabs(sum / double(size * size) - 0.5), 0.002, what + ": |image mean - 1/2|");
+        CHECK_LE(what + ": |truth - 1/2|", error.value, filter == PixelFilter::box ? 0.01 : 0.04);
+        CHECK_LE(what + ": |image mean - 1/2|", std::fabs(sum / double(size * size) - 0.5), 0.002);
     }
 
     // 3 texels a pixel; the image centre (a pixel corner) at uv (1/2, 1/2), texel edge 32 of 64: every
@@ -382,8 +374,8 @@ TEST_CASE("checker")
     box_off /= size * size;
     gauss_off /= size * size;
     // Box strata at 3 texels a pixel are 3/64 texel: f moves by at most 3/32 -> sd <= 7e-4; 0.01 as above.
-    CHECK_WITHIN(box_error.value, 0.01, "checker 3 texels/px box: |truth - (1/2 + (c - 1/2)/36)|");
-    CHECK_WITHIN(gauss_error.value, 0.04, "checker 3 texels/px gaussian: |truth - 1/2|");
+    CHECK_LE("checker 3 texels/px box: |truth - (1/2 + (c - 1/2)/36)|", box_error.value, 0.01);
+    CHECK_LE("checker 3 texels/px gaussian: |truth - 1/2|", gauss_error.value, 0.04);
     // The box's mean offset is 1/72 = 0.0139 by the maths; the Gaussian's is sampling noise, at most
     // 0.8 * 0.0078 = 0.006 even for unstratified samples.
     std::printf("  checker 3 texels/px: mean |truth - 1/2|: box %.4g, gaussian %.4g\n", box_off, gauss_off);

@@ -46,15 +46,13 @@ double sub_texel_step() { return std::ldexp(1.0, -int(test::test_device_info().s
 // between the two.
 double lod_error() { return 2.0 * std::ldexp(1.0, -int(test::test_device_info().mipmap_precision_bits)); }
 
-std::string texfilter;
-std::filesystem::path work;
 
 std::vector<glm::dvec4> sample_colors(const std::string& texture, const std::string& filter, const std::string& wrap,
                                       const std::string& lookups, TextureFormat format = TextureFormat::rgba32f)
 {
     const std::string flags =
         "--texture " + texture + " --filter " + filter + " --wrap " + wrap + " --format " + to_string(format);
-    return test::run_sample(texfilter, work, flags, lookups, false).colors;
+    return test::run_sample(flags, lookups, false).colors;
 }
 
 // What the format adds to |manual - hardware| at a result of `value` (see the top of the file).
@@ -122,9 +120,7 @@ const std::vector<Lookup>& all_lookups()
 const std::string& lookups_path()
 {
     static const std::string path = [] {
-        texfilter = test::texfilter_path();
-        work = test::make_work_dir("hw-vs-manual");
-        const std::string p = (work / "lookups.csv").string();
+        const std::string p = (test::work_dir() / "lookups.csv").string();
         test::write_lookups_csv(p, all_lookups());
         return p;
     }();
@@ -173,8 +169,7 @@ void compare_bilinear(const std::string& texture, Wrap wrap, TextureFormat forma
 const std::vector<double>& hardware_lods()
 {
     static const std::vector<double> lods = [] {
-        const std::string path = lookups_path(); // sets `work`
-        return test::device_lods(test::texfilter_path(), work, path, all_lookups(), 256);
+        return test::device_lods(lookups_path(), all_lookups(), 256);
     }();
     return lods;
 }

@@ -152,7 +152,7 @@ void check_pcf_hardware(Filter hw, Filter manual)
     const int top = int(lit.levels.size()) - 1;
     const double e = 2 * mipmap_step();
     const std::vector<double> device_lods =
-        manual == Filter::trilinear ? test::device_lods(texfilter(), work_dir(), lookups_path(), ls, kSize) : std::vector<double>();
+        manual == Filter::trilinear ? test::device_lods(lookups_path(), ls, kSize) : std::vector<double>();
     test::limit_failure_lines(8);
     double worst = 0;
     int partial = 0;

@@ -13,6 +13,9 @@
 // has 9 significant digits: a float round trip). Plus the degenerate inputs' documented answers:
 // non-finite uv gives vec4(0); NaN/±Inf and huge (≥ 2^20) gradients give the coarsest level (hw-trilinear,
 // hw-aniso; hw-nearest and hw-bilinear read level 0 only), within float rounding of the 1x1 level.
+// These run the command (test::run_sample_command), not tf::sample_lookups in process: in a sanitizer build
+// UBSan is made fatal for each run, which only a child's environment can set, and the empty file's case
+// checks what the command writes.
 #include "core/procedural.h"
 #include "support.h"
 
@@ -29,8 +32,6 @@ using namespace tf;
 
 namespace {
 
-std::string texfilter;
-std::filesystem::path work;
 
 // Probes: footprints from 1/16 texel to the whole texture, up to 16:1, rotated, uv inside and outside
 // [0, 1]; then the degenerate ones.
@@ -130,8 +131,6 @@ struct Case {
 // One filter form on the random probes plus the degenerate ones, in every placement.
 void check_orders(const Case& c)
 {
-    texfilter = test::texfilter_path();
-    work = test::make_work_dir("sample-order");
     setenv("UBSAN_OPTIONS", "halt_on_error=1:print_stacktrace=1", 0); // sanitizer builds: UB fails the run
     test::limit_failure_lines(40);
     std::vector<Lookup> probes = probe_lookups(96, 2026);
@@ -141,13 +140,13 @@ void check_orders(const Case& c)
 
     std::vector<std::vector<size_t>> where;
     const std::vector<Lookup> rows = arrange(probes, where);
-    const std::string csv = (work / "orders.csv").string();
+    const std::string csv = (test::work_dir() / "orders.csv").string();
     test::write_lookups_csv(csv, rows);
     const glm::dvec4 coarsest(chain.levels.back().texels.at(0));
     const size_t first_degenerate = probes.size() - degenerate.size();
     {
         test::SampleResult r =
-            test::run_sample(texfilter, work, "--texture noise --wrap repeat --filter " + c.filter, csv, true);
+            test::run_sample_command("--texture noise --wrap repeat --filter " + c.filter, csv, true);
         int differ = 0, wrong = 0;
         double spread = 0;
         for (size_t p = 0; p < probes.size(); ++p) {
@@ -187,34 +186,6 @@ void check_orders(const Case& c)
     }
 }
 
-// A lookups file with a header and no rows: a header-only CSV from both backends, --stats too (the
-// Vulkan pass used to memcpy from a null pointer there: UBSan, which this test makes fatal for its runs).
-void check_empty()
-{
-    texfilter = test::texfilter_path();
-    work = test::make_work_dir("sample-order-empty");
-    setenv("UBSAN_OPTIONS", "halt_on_error=1:print_stacktrace=1", 0);
-    const std::string csv = (work / "empty.csv").string();
-    test::write_lookups_csv(csv, {});
-    int ok = 0, total = 0;
-    for (const char* filter : {"trilinear", "hw-aniso", "sat", "ewa --taps hardware"})
-        for (bool reference : {false, true}) {
-            ++total;
-            try {
-                test::SampleResult r = test::run_sample(texfilter, work,
-                                                        std::string("--texture checker --filter ") + filter +
-                                                            (reference ? " --backend reference" : ""),
-                                                        csv, !reference);
-                ok += CHECK(r.colors.empty() && r.stats.empty(), std::string(filter) + ": " +
-                                                                     std::to_string(r.colors.size()) + " rows");
-            } catch (const std::exception& e) {
-                CHECK(false, e.what());
-            }
-        }
-    std::printf("no lookups: %d of %d runs (vulkan with --stats, reference) write a header-only CSV -> %s\n", ok, total,
-                ok == total ? "PASS" : "FAIL");
-}
-
 } // namespace
 
 TEST_SUITE_BEGIN("gpu");
@@ -227,5 +198,29 @@ TEST_CASE("hw-aniso-4") { check_orders({"hw-aniso --aniso 4", false, true}); }
 TEST_CASE("aniso-gpu-hardware-taps") { check_orders({"aniso --taps hardware --aniso-shape gpu", false, false}); }
 TEST_CASE("aniso-feline-hardware-taps") { check_orders({"aniso --taps hardware --aniso-shape feline", false, false}); }
 TEST_CASE("ewa-hardware-taps") { check_orders({"ewa --taps hardware", false, false}); }
-TEST_CASE("no-lookups") { check_empty(); }
+
+// A lookups file with a header and no rows: a header-only CSV from both backends, --stats too (the
+// Vulkan pass used to memcpy from a null pointer there: UBSan, which this test makes fatal for its runs).
+TEST_CASE("no-lookups")
+{
+    setenv("UBSAN_OPTIONS", "halt_on_error=1:print_stacktrace=1", 0);
+    const std::string csv = (test::work_dir() / "empty.csv").string();
+    test::write_lookups_csv(csv, {});
+    int ok = 0, total = 0;
+    for (const char* filter : {"trilinear", "hw-aniso", "sat", "ewa --taps hardware"})
+        for (bool reference : {false, true}) {
+            ++total;
+            try {
+                test::SampleResult r = test::run_sample_command(std::string("--texture checker --filter ") + filter +
+                                                            (reference ? " --backend reference" : ""),
+                                                        csv, !reference);
+                ok += CHECK(r.colors.empty() && r.stats.empty(), std::string(filter) + ": " +
+                                                                     std::to_string(r.colors.size()) + " rows");
+            } catch (const std::exception& e) {
+                CHECK(false, e.what());
+            }
+        }
+    std::printf("no lookups: %d of %d runs (vulkan with --stats, reference) write a header-only CSV -> %s\n", ok, total,
+                ok == total ? "PASS" : "FAIL");
+}
 TEST_SUITE_END();

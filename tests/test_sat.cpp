@@ -44,8 +44,6 @@ using tf::test::SampleResult;
 
 namespace {
 
-std::string texfilter;
-std::filesystem::path work;
 
 std::string fmt(const char* format, double a, double b = 0, double c = 0)
 {
@@ -62,8 +60,260 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 // ---------------------------------------------------------------------------------------------------
 // (1) Host table: exact integer box sums on a 4096x4096 texture.
 
-void check_exact_box_sums()
+// ---------------------------------------------------------------------------------------------------
+// GPU runs through `texfilter sample`.
+
+// One `texfilter sample --stats` run of these lookups (written out as float) on a procedural texture.
+SampleResult sample(const std::string& texture, int size, const std::string& filter, Wrap wrap,
+                    const std::vector<Lookup>& lookups, const std::string& extra = "")
 {
+    const std::string in = test::new_file_in(test::work_dir(), "lookups-", ".csv").string();
+    test::write_lookups_csv(in, lookups);
+    const std::string flags = "--texture " + texture + " --texture-size " + std::to_string(size) + " --filter " +
+                              filter + " --wrap " + to_string(wrap) + " " + extra;
+    return test::run_sample(flags, in, true);
+}
+
+SamplerOptions sat_options(Filter filter, Wrap wrap, int boxes = 4)
+{
+    SamplerOptions o;
+    o.filter = filter;
+    o.wrap = wrap;
+    o.boxes = boxes;
+    return o;
+}
+
+// Largest spread max − min of any channel over the texture (what an edge shift can move a mean by).
+double channel_range(const Image& image)
+{
+    double range = 0;
+    for (int c = 0; c < 4; ++c) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (const glm::vec4& t : image.texels) {
+            lo = std::min(lo, double(t[c]));
+            hi = std::max(hi, double(t[c]));
+        }
+        range = std::max(range, hi - lo);
+    }
+    return range;
+}
+
+// The documented quantisation, written out here: per channel lo = the smallest value, span = largest − lo
+// rounded up to float; a texel stands for lo + round((v − lo)/span·65535)·span/65535.
+struct Levels {
+    glm::dvec4 lo{INFINITY}, span{0.0};
+    explicit Levels(const Image& image)
+    {
+        glm::dvec4 hi(-INFINITY);
+        for (const glm::vec4& t : image.texels) {
+            lo = glm::min(lo, glm::dvec4(t));
+            hi = glm::max(hi, glm::dvec4(t));
+        }
+        for (int c = 0; c < 4; ++c) {
+            float f = float(hi[c] - lo[c]);
+            span[c] = double(f) < hi[c] - lo[c] ? std::nextafter(f, INFINITY) : f;
+        }
+    }
+    glm::dvec4 operator()(const glm::vec4& t) const
+    {
+        glm::dvec4 v;
+        for (int c = 0; c < 4; ++c)
+            v[c] = span[c] == 0 ? lo[c] : lo[c] + std::round((double(t[c]) - lo[c]) / span[c] * 65535.0) * (span[c] / 65535.0);
+        return v;
+    }
+    // What ~12 float32 roundings of a mean near these values can add up to: 2e-6·(|lo| + 2·span).
+    double float_error() const
+    {
+        double m = 0;
+        for (int c = 0; c < 4; ++c)
+            m = std::max(m, std::abs(lo[c]) + 2 * span[c]);
+        return 2e-6 * m;
+    }
+};
+
+// GPU-vs-reference tolerance of one box lookup (see the top of the file): float rounding, float_error,
+// and edge shifts. centre_extra: how far (texels) the shader's float centre may lie from uv·size beyond
+// the wrap reduction (slice offsets). No quantisation term: both average the same quantised texels.
+double box_tolerance(const Image& image, const Lookup& l, double float_error, double range, double centre_extra = 0,
+                     double lod_bias = 0)
+{
+    const double w = image.width, h = image.height, m = std::exp2(lod_bias);
+    const double hx = std::min(0.5 * (std::abs(l.dudx) + std::abs(l.dudy)) * w * m, 0.5 * w);
+    const double hy = std::min(0.5 * (std::abs(l.dvdx) + std::abs(l.dvdy)) * h * m, 0.5 * h);
+    // After the wrap reduction the centre lies in [-w, 2w] (clamp), [0, 2w] (mirror), [0, w] (repeat).
+    auto edge = [&](double half, double size) { return std::exp2(-21.0) * (2 * size + centre_extra + half + 1) / half; };
+    return float_error + range * (edge(hx, w) + edge(hy, h));
+}
+
+struct Tally {
+    int checked = 0, over = 0;
+    double worst_error = 0, worst_ratio = 0;
+    void add(double error, double tolerance)
+    {
+        ++checked;
+        worst_error = std::max(worst_error, error);
+        worst_ratio = std::max(worst_ratio, error / tolerance);
+        if (!(error <= tolerance))
+            ++over;
+    }
+};
+
+// ---------------------------------------------------------------------------------------------------
+// (2) A texel-aligned box returns that rectangle's mean.
+
+// ---------------------------------------------------------------------------------------------------
+// (3) Wrap modes: random lookups, many across the border, GPU vs the reference.
+
+// Random footprints from 1/8 texel to 512 texels (256 texture) around [0, 1]^2 (the shared generator),
+// then a quarter moved right onto an edge (the box straddles it) and one in 16 many periods out.
+std::vector<Lookup> random_lookups(int count, unsigned seed)
+{
+    std::vector<Lookup> lookups = test::random_footprint_lookups(
+        count, seed, {.uv_min = -0.3, .uv_max = 1.3, .octave_min = -3.0, .octave_max = 9.0, .max_stretch = 3.0});
+    std::mt19937 rng(seed + 1);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int i = 0; i < count; ++i) {
+        Lookup& l = lookups[size_t(i)];
+        if (i % 4 == 0) // right at an edge: the box straddles it
+            l.u = std::round(l.u) + (unit(rng) - 0.5) * 0.02;
+        if (i % 4 == 1)
+            l.v = std::round(l.v) + (unit(rng) - 0.5) * 0.02;
+        if (i % 16 == 2) { // far away: many periods out
+            l.u += 1000.0 * (unit(rng) - 0.5);
+            l.v -= 100.0 * unit(rng);
+        }
+    }
+    return as_float(lookups);
+}
+
+// Does the lookup's box leave [0, 1]^2 (in uv)?
+bool crosses_border(const Lookup& l, double lod_bias)
+{
+    const double m = std::exp2(lod_bias);
+    double hu = 0.5 * (std::abs(l.dudx) + std::abs(l.dudy)) * m, hv = 0.5 * (std::abs(l.dvdx) + std::abs(l.dvdy)) * m;
+    return l.u - hu < 0 || l.u + hu > 1 || l.v - hv < 0 || l.v + hv > 1;
+}
+
+struct WrapCase { std::string texture; int size; Wrap wrap; float bias = 0; };
+
+// (3)'s lookups and its GPU run of one case (what (5a) compares sat-assembly --boxes 1 with).
+const std::vector<Lookup>& wrap_mode_lookups()
+{
+    static const std::vector<Lookup> lookups = random_lookups(2000, 2026);
+    return lookups;
+}
+
+SampleResult wrap_mode_run(const WrapCase& c)
+{
+    return sample(c.texture, c.size, "sat", c.wrap, wrap_mode_lookups(), "--lod-bias " + std::to_string(c.bias));
+}
+
+// worst_gpu_error: raised to the largest GPU-vs-reference error seen (the case's summary line).
+void check_wrap_mode(const WrapCase& c, double& worst_gpu_error)
+{
+    const std::vector<Lookup>& lookups = wrap_mode_lookups();
+    {
+        MipChain chain = make_procedural(c.texture, c.size);
+        const Image& image = chain.levels[0];
+        const double float_error = Levels(image).float_error(), range = channel_range(image);
+        SampleResult gpu = wrap_mode_run(c);
+        SamplerOptions options = sat_options(Filter::sat, c.wrap);
+        options.lod_bias = c.bias;
+        Tally inside, border;
+        double worst_large = 0; // boxes of at least 4 x 4 texels: no edge term to speak of
+        int border_count = 0;
+        unsigned most_fetches = 0;
+        for (size_t i = 0; i < lookups.size(); ++i) {
+            glm::dvec4 ref = reference_sample(chain, options, lookups[i]);
+            double e = max_channel_diff(gpu.colors[i], ref), tol = box_tolerance(image, lookups[i], float_error, range, 0, c.bias);
+            bool b = crosses_border(lookups[i], c.bias);
+            (b ? border : inside).add(e, tol);
+            border_count += b;
+            most_fetches = std::max(most_fetches, gpu.stats[i].texel_fetches);
+            const Lookup& l = lookups[i];
+            const double big = 4.0 / c.size / std::exp2(c.bias);
+            if (std::abs(l.dudx) + std::abs(l.dudy) >= big && std::abs(l.dvdx) + std::abs(l.dvdy) >= big)
+                worst_large = std::max(worst_large, e);
+            if (!(e <= tol) && border.over + inside.over <= 3)
+                CHECK(e <= tol, fmt("lookup %g: GPU vs reference %.3g > tolerance %.3g", double(i), e, tol));
+        }
+        worst_gpu_error = std::max({worst_gpu_error, inside.worst_error, border.worst_error});
+        bool ok = inside.over == 0 && border.over == 0 && border_count > 500 && most_fetches <= 128;
+        CHECK(border_count > 500 && most_fetches <= 128, fmt("%g border lookups, %g fetches", border_count, most_fetches));
+        std::printf("(3) %s %d %s, lod bias %g: %zu lookups (%d across the border): max |GPU-ref| inside %.3g, border "
+                    "%.3g, boxes >= 4x4 texels %.3g; worst error/tolerance %.3f; max fetches %u -> %s\n",
+                    c.texture.c_str(), c.size, to_string(c.wrap).c_str(), c.bias, lookups.size(), border_count,
+                    inside.worst_error, border.worst_error, worst_large, std::max(inside.worst_ratio, border.worst_ratio),
+                    most_fetches, ok ? "PASS" : "FAIL");
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// (4) Constant time: the shader's texel fetches do not depend on the footprint's size.
+
+// ---------------------------------------------------------------------------------------------------
+// (5) sat-assembly: K = 1 is sat; more boxes follow a slanted footprint more closely.
+
+// The pixel's parallelogram uv + J·(a, b), a, b in [−½, ½], integrated over the box-reconstructed
+// texture by stratified supersampling (m x m midpoints).
+glm::dvec4 parallelogram_mean(const Image& image, const Lookup& l, Wrap wrap, int m)
+{
+    glm::dvec4 sum(0.0);
+    for (int j = 0; j < m; ++j)
+        for (int i = 0; i < m; ++i) {
+            double a = (i + 0.5) / m - 0.5, b = (j + 0.5) / m - 0.5;
+            double x = (l.u + a * l.dudx + b * l.dudy) * image.width, y = (l.v + a * l.dvdx + b * l.dvdy) * image.height;
+            sum += glm::dvec4(image.at(wrap_texel((long long)std::floor(x), image.width, wrap),
+                                       wrap_texel((long long)std::floor(y), image.height, wrap)));
+        }
+    return sum / double(m * m);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// (6) NaN, Inf, zero and huge gradients (and uv) give finite, defined results.
+
+// ---------------------------------------------------------------------------------------------------
+// (7) HDR texels keep 16 bits of their own range: one 65504 texel among 0.3s (issue: the GPU gave 0
+// where the reference gave 0.3, silently). Each channel is quantised over [lo, lo + span], so the 0.3s
+// are exactly level 0 and any box mean is within 0.5/65535·span (~0.5 here) of the exact float mean,
+// plus float rounding; the GPU is within float rounding of the reference, which averages the same levels.
+
+// ---------------------------------------------------------------------------------------------------
+// (8) NaN and ±Inf texels are refused with a message naming the texel, on both backends and in build_sat.
+
+// Runs a command, returns its exit status and what it printed on stderr: (8) is a CLI test in part (the
+// command's exit status, its one message, no output file).
+int run_capturing(const std::string& command, std::string& err)
+{
+    const std::string err_path = (test::work_dir() / "stderr.txt").string();
+    const int status = std::system((command + " 2> '" + err_path + "' > /dev/null").c_str());
+    err.clear();
+    if (FILE* f = std::fopen(err_path.c_str(), "r")) {
+        char buf[4096];
+        size_t got = 0;
+        while ((got = std::fread(buf, 1, sizeof buf, f)) > 0)
+            err.append(buf, got);
+        std::fclose(f);
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+} // namespace
+
+// A case's summary line: the worst GPU-vs-reference error it saw, and its time.
+struct SatCase {
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    double worst_gpu_error = 0;
+    ~SatCase()
+    {
+        std::printf("max GPU-vs-reference error: %.3g; total %.1f s\n", worst_gpu_error, seconds_since(start));
+    }
+};
+
+TEST_SUITE_BEGIN("reference");
+TEST_CASE("exact-box-sums")
+{
+    SatCase c;
     auto start = std::chrono::steady_clock::now();
     const int n = sat_max_dimension;
     std::mt19937 rng(7);
@@ -159,111 +409,12 @@ void check_exact_box_sums()
                 boxes.size(), mismatches, double(largest), std::exp2(40.0), build_s, seconds_since(start),
                 mismatches ? "FAIL" : "PASS");
 }
+TEST_SUITE_END();
 
-// ---------------------------------------------------------------------------------------------------
-// GPU runs through `texfilter sample`.
-
-// One `texfilter sample --stats` run of these lookups (written out as float) on a procedural texture.
-SampleResult sample(const std::string& texture, int size, const std::string& filter, Wrap wrap,
-                    const std::vector<Lookup>& lookups, const std::string& extra = "")
+TEST_SUITE_BEGIN("gpu");
+TEST_CASE("aligned-boxes")
 {
-    static int run = 0;
-    const std::string in = (work / ("lookups-" + std::to_string(run++) + ".csv")).string();
-    test::write_lookups_csv(in, lookups);
-    const std::string flags = "--texture " + texture + " --texture-size " + std::to_string(size) + " --filter " +
-                              filter + " --wrap " + to_string(wrap) + " " + extra;
-    return test::run_sample(texfilter, work, flags, in, true);
-}
-
-SamplerOptions sat_options(Filter filter, Wrap wrap, int boxes = 4)
-{
-    SamplerOptions o;
-    o.filter = filter;
-    o.wrap = wrap;
-    o.boxes = boxes;
-    return o;
-}
-
-// Largest spread max − min of any channel over the texture (what an edge shift can move a mean by).
-double channel_range(const Image& image)
-{
-    double range = 0;
-    for (int c = 0; c < 4; ++c) {
-        double lo = INFINITY, hi = -INFINITY;
-        for (const glm::vec4& t : image.texels) {
-            lo = std::min(lo, double(t[c]));
-            hi = std::max(hi, double(t[c]));
-        }
-        range = std::max(range, hi - lo);
-    }
-    return range;
-}
-
-// The documented quantisation, written out here: per channel lo = the smallest value, span = largest − lo
-// rounded up to float; a texel stands for lo + round((v − lo)/span·65535)·span/65535.
-struct Levels {
-    glm::dvec4 lo{INFINITY}, span{0.0};
-    explicit Levels(const Image& image)
-    {
-        glm::dvec4 hi(-INFINITY);
-        for (const glm::vec4& t : image.texels) {
-            lo = glm::min(lo, glm::dvec4(t));
-            hi = glm::max(hi, glm::dvec4(t));
-        }
-        for (int c = 0; c < 4; ++c) {
-            float f = float(hi[c] - lo[c]);
-            span[c] = double(f) < hi[c] - lo[c] ? std::nextafter(f, INFINITY) : f;
-        }
-    }
-    glm::dvec4 operator()(const glm::vec4& t) const
-    {
-        glm::dvec4 v;
-        for (int c = 0; c < 4; ++c)
-            v[c] = span[c] == 0 ? lo[c] : lo[c] + std::round((double(t[c]) - lo[c]) / span[c] * 65535.0) * (span[c] / 65535.0);
-        return v;
-    }
-    // What ~12 float32 roundings of a mean near these values can add up to: 2e-6·(|lo| + 2·span).
-    double float_error() const
-    {
-        double m = 0;
-        for (int c = 0; c < 4; ++c)
-            m = std::max(m, std::abs(lo[c]) + 2 * span[c]);
-        return 2e-6 * m;
-    }
-};
-
-// GPU-vs-reference tolerance of one box lookup (see the top of the file): float rounding, float_error,
-// and edge shifts. centre_extra: how far (texels) the shader's float centre may lie from uv·size beyond
-// the wrap reduction (slice offsets). No quantisation term: both average the same quantised texels.
-double box_tolerance(const Image& image, const Lookup& l, double float_error, double range, double centre_extra = 0,
-                     double lod_bias = 0)
-{
-    const double w = image.width, h = image.height, m = std::exp2(lod_bias);
-    const double hx = std::min(0.5 * (std::abs(l.dudx) + std::abs(l.dudy)) * w * m, 0.5 * w);
-    const double hy = std::min(0.5 * (std::abs(l.dvdx) + std::abs(l.dvdy)) * h * m, 0.5 * h);
-    // After the wrap reduction the centre lies in [-w, 2w] (clamp), [0, 2w] (mirror), [0, w] (repeat).
-    auto edge = [&](double half, double size) { return std::exp2(-21.0) * (2 * size + centre_extra + half + 1) / half; };
-    return float_error + range * (edge(hx, w) + edge(hy, h));
-}
-
-struct Tally {
-    int checked = 0, over = 0;
-    double worst_error = 0, worst_ratio = 0;
-    void add(double error, double tolerance)
-    {
-        ++checked;
-        worst_error = std::max(worst_error, error);
-        worst_ratio = std::max(worst_ratio, error / tolerance);
-        if (!(error <= tolerance))
-            ++over;
-    }
-};
-
-// ---------------------------------------------------------------------------------------------------
-// (2) A texel-aligned box returns that rectangle's mean.
-
-void check_aligned_boxes()
-{
+    SatCase c;
     const int n = 256;
     MipChain chain = make_procedural("noise", n);
     const Image& image = chain.levels[0];
@@ -310,99 +461,17 @@ void check_aligned_boxes()
                 reference.worst_error, tally.over || tally_q.over || reference.over ? "FAIL" : "PASS");
 }
 
-// ---------------------------------------------------------------------------------------------------
-// (3) Wrap modes: random lookups, many across the border, GPU vs the reference.
-
-// Random footprints from 1/8 texel to 512 texels (256 texture) around [0, 1]^2 (the shared generator),
-// then a quarter moved right onto an edge (the box straddles it) and one in 16 many periods out.
-std::vector<Lookup> random_lookups(int count, unsigned seed)
+TEST_CASE("wrap-noise-256-repeat") { SatCase c; check_wrap_mode({"noise", 256, Wrap::repeat}, c.worst_gpu_error); }
+TEST_CASE("wrap-noise-256-clamp") { SatCase c; check_wrap_mode({"noise", 256, Wrap::clamp}, c.worst_gpu_error); }
+TEST_CASE("wrap-noise-256-mirror") { SatCase c; check_wrap_mode({"noise", 256, Wrap::mirror}, c.worst_gpu_error); }
+TEST_CASE("wrap-zoneplate-100-repeat") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::repeat}, c.worst_gpu_error); }
+TEST_CASE("wrap-zoneplate-100-clamp") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::clamp}, c.worst_gpu_error); }
+TEST_CASE("wrap-zoneplate-100-mirror") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::mirror}, c.worst_gpu_error); }
+TEST_CASE("wrap-grid-64-repeat-bias-1.5") { SatCase c; check_wrap_mode({"grid", 64, Wrap::repeat, 1.5f}, c.worst_gpu_error); }
+TEST_CASE("wrap-checker-96-clamp-bias-minus-1") { SatCase c; check_wrap_mode({"checker", 96, Wrap::clamp, -1.0f}, c.worst_gpu_error); }
+TEST_CASE("constant-time")
 {
-    std::vector<Lookup> lookups = test::random_footprint_lookups(
-        count, seed, {.uv_min = -0.3, .uv_max = 1.3, .octave_min = -3.0, .octave_max = 9.0, .max_stretch = 3.0});
-    std::mt19937 rng(seed + 1);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    for (int i = 0; i < count; ++i) {
-        Lookup& l = lookups[size_t(i)];
-        if (i % 4 == 0) // right at an edge: the box straddles it
-            l.u = std::round(l.u) + (unit(rng) - 0.5) * 0.02;
-        if (i % 4 == 1)
-            l.v = std::round(l.v) + (unit(rng) - 0.5) * 0.02;
-        if (i % 16 == 2) { // far away: many periods out
-            l.u += 1000.0 * (unit(rng) - 0.5);
-            l.v -= 100.0 * unit(rng);
-        }
-    }
-    return as_float(lookups);
-}
-
-// Does the lookup's box leave [0, 1]^2 (in uv)?
-bool crosses_border(const Lookup& l, double lod_bias)
-{
-    const double m = std::exp2(lod_bias);
-    double hu = 0.5 * (std::abs(l.dudx) + std::abs(l.dudy)) * m, hv = 0.5 * (std::abs(l.dvdx) + std::abs(l.dvdy)) * m;
-    return l.u - hu < 0 || l.u + hu > 1 || l.v - hv < 0 || l.v + hv > 1;
-}
-
-double g_worst_gpu_error = 0; // over every GPU-vs-reference comparison, for the summary line
-
-struct WrapCase { std::string texture; int size; Wrap wrap; float bias = 0; };
-
-// (3)'s lookups and its GPU run of one case (what (5a) compares sat-assembly --boxes 1 with).
-const std::vector<Lookup>& wrap_mode_lookups()
-{
-    static const std::vector<Lookup> lookups = random_lookups(2000, 2026);
-    return lookups;
-}
-
-SampleResult wrap_mode_run(const WrapCase& c)
-{
-    return sample(c.texture, c.size, "sat", c.wrap, wrap_mode_lookups(), "--lod-bias " + std::to_string(c.bias));
-}
-
-void check_wrap_mode(const WrapCase& c)
-{
-    const std::vector<Lookup>& lookups = wrap_mode_lookups();
-    {
-        MipChain chain = make_procedural(c.texture, c.size);
-        const Image& image = chain.levels[0];
-        const double float_error = Levels(image).float_error(), range = channel_range(image);
-        SampleResult gpu = wrap_mode_run(c);
-        SamplerOptions options = sat_options(Filter::sat, c.wrap);
-        options.lod_bias = c.bias;
-        Tally inside, border;
-        double worst_large = 0; // boxes of at least 4 x 4 texels: no edge term to speak of
-        int border_count = 0;
-        unsigned most_fetches = 0;
-        for (size_t i = 0; i < lookups.size(); ++i) {
-            glm::dvec4 ref = reference_sample(chain, options, lookups[i]);
-            double e = max_channel_diff(gpu.colors[i], ref), tol = box_tolerance(image, lookups[i], float_error, range, 0, c.bias);
-            bool b = crosses_border(lookups[i], c.bias);
-            (b ? border : inside).add(e, tol);
-            border_count += b;
-            most_fetches = std::max(most_fetches, gpu.stats[i].texel_fetches);
-            const Lookup& l = lookups[i];
-            const double big = 4.0 / c.size / std::exp2(c.bias);
-            if (std::abs(l.dudx) + std::abs(l.dudy) >= big && std::abs(l.dvdx) + std::abs(l.dvdy) >= big)
-                worst_large = std::max(worst_large, e);
-            if (!(e <= tol) && border.over + inside.over <= 3)
-                CHECK(e <= tol, fmt("lookup %g: GPU vs reference %.3g > tolerance %.3g", double(i), e, tol));
-        }
-        g_worst_gpu_error = std::max({g_worst_gpu_error, inside.worst_error, border.worst_error});
-        bool ok = inside.over == 0 && border.over == 0 && border_count > 500 && most_fetches <= 128;
-        CHECK(border_count > 500 && most_fetches <= 128, fmt("%g border lookups, %g fetches", border_count, most_fetches));
-        std::printf("(3) %s %d %s, lod bias %g: %zu lookups (%d across the border): max |GPU-ref| inside %.3g, border "
-                    "%.3g, boxes >= 4x4 texels %.3g; worst error/tolerance %.3f; max fetches %u -> %s\n",
-                    c.texture.c_str(), c.size, to_string(c.wrap).c_str(), c.bias, lookups.size(), border_count,
-                    inside.worst_error, border.worst_error, worst_large, std::max(inside.worst_ratio, border.worst_ratio),
-                    most_fetches, ok ? "PASS" : "FAIL");
-    }
-}
-
-// ---------------------------------------------------------------------------------------------------
-// (4) Constant time: the shader's texel fetches do not depend on the footprint's size.
-
-void check_constant_time()
-{
+    SatCase c;
     const double tiny = 1e-4 / 256, small = 1.0 / 256, huge = 0.999;
     std::vector<Lookup> centre = as_float({{0.5, 0.5, tiny, 0, 0, tiny},
                                            {0.5, 0.5, small, 0, 0, small},
@@ -427,27 +496,13 @@ void check_constant_time()
                     to_string(wrap).c_str(), lo, hi, edge_hi, ok ? "PASS" : "FAIL");
     }
 }
+TEST_SUITE_END();
 
-// ---------------------------------------------------------------------------------------------------
-// (5) sat-assembly: K = 1 is sat; more boxes follow a slanted footprint more closely.
-
-// The pixel's parallelogram uv + J·(a, b), a, b in [−½, ½], integrated over the box-reconstructed
-// texture by stratified supersampling (m x m midpoints).
-glm::dvec4 parallelogram_mean(const Image& image, const Lookup& l, Wrap wrap, int m)
+TEST_SUITE_BEGIN("gpu slow");
+TEST_CASE("assembly")
 {
-    glm::dvec4 sum(0.0);
-    for (int j = 0; j < m; ++j)
-        for (int i = 0; i < m; ++i) {
-            double a = (i + 0.5) / m - 0.5, b = (j + 0.5) / m - 0.5;
-            double x = (l.u + a * l.dudx + b * l.dudy) * image.width, y = (l.v + a * l.dvdx + b * l.dvdy) * image.height;
-            sum += glm::dvec4(image.at(wrap_texel((long long)std::floor(x), image.width, wrap),
-                                       wrap_texel((long long)std::floor(y), image.height, wrap)));
-        }
-    return sum / double(m * m);
-}
-
-void check_assembly()
-{
+    SatCase c;
+    double& worst_gpu_error = c.worst_gpu_error;
     // K = 1 against the sat runs of (3) (noise 256 repeat, clamp): bit for bit (CSV has 9 digits: a float).
     const std::vector<Lookup>& lookups = wrap_mode_lookups();
     int differ = 0;
@@ -485,7 +540,7 @@ void check_assembly()
             if (!(e <= tol) && tally.over <= 3)
                 CHECK(e <= tol, fmt("lookup %g: sat-assembly GPU vs reference %.3g > %.3g", double(i), e, tol));
         }
-        g_worst_gpu_error = std::max(g_worst_gpu_error, tally.worst_error);
+        worst_gpu_error = std::max(worst_gpu_error, tally.worst_error);
         std::printf("(5b) sat-assembly K=4 vs reference (noise 256 %s): %d lookups (%d near-isotropic skipped), "
                     "max error %.3g, worst error/tolerance %.3f -> %s\n",
                     to_string(wrap).c_str(), tally.checked, skipped, tally.worst_error, tally.worst_ratio,
@@ -525,12 +580,12 @@ void check_assembly()
                     texture.c_str(), line.c_str(), ok ? "PASS" : "FAIL");
     }
 }
+TEST_SUITE_END();
 
-// ---------------------------------------------------------------------------------------------------
-// (6) NaN, Inf, zero and huge gradients (and uv) give finite, defined results.
-
-void check_degenerate()
+TEST_SUITE_BEGIN("gpu");
+TEST_CASE("degenerate")
 {
+    SatCase c;
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = INFINITY;
     const int n = 256;
     MipChain chain = make_procedural("noise", n);
@@ -617,18 +672,13 @@ void check_degenerate()
         }
 }
 
-// ---------------------------------------------------------------------------------------------------
-// (7) HDR texels keep 16 bits of their own range: one 65504 texel among 0.3s (issue: the GPU gave 0
-// where the reference gave 0.3, silently). Each channel is quantised over [lo, lo + span], so the 0.3s
-// are exactly level 0 and any box mean is within 0.5/65535·span (~0.5 here) of the exact float mean,
-// plus float rounding; the GPU is within float rounding of the reference, which averages the same levels.
-
-void check_hdr()
+TEST_CASE("hdr")
 {
+    SatCase c;
     const int n = 64;
     Image image = make_image(n, n, glm::vec4(0.3f, 0.3f, 0.3f, 1.0f));
     image.at(37, 21) = glm::vec4(65504.0f, 65504.0f, 65504.0f, 1.0f);
-    const std::string path = (work / "hdr.pfm").string();
+    const std::string path = (test::work_dir() / "hdr.pfm").string();
     write_image(path, image);
     MipChain chain;
     chain.levels.push_back(image); // level 0 is all sat reads
@@ -654,11 +704,11 @@ void check_hdr()
     }
     lookups.push_back({0.3, 0.7, std::numeric_limits<double>::quiet_NaN(), 0, 0, 0.1}); // the whole texture
     exact.push_back(exact[3]);
-    const std::string in = (work / "hdr-lookups.csv").string();
+    const std::string in = (test::work_dir() / "hdr-lookups.csv").string();
     test::write_lookups_csv(in, lookups);
-    const SampleResult gpu = test::run_sample(texfilter, work, "--texture " + path + " --filter sat", in, false);
+    const SampleResult gpu = test::run_sample("--texture " + path + " --filter sat", in, false);
     const SampleResult cli_reference =
-        test::run_sample(texfilter, work, "--texture " + path + " --filter sat --backend reference", in, false);
+        test::run_sample("--texture " + path + " --filter sat --backend reference", in, false);
 
     const double step = double(table.scale.r) / 65535.0;
     Tally vs_exact, vs_reference;
@@ -689,30 +739,12 @@ void check_hdr()
                 vs_exact.over || vs_reference.over ? "FAIL" : "PASS");
 }
 
-// ---------------------------------------------------------------------------------------------------
-// (8) NaN and ±Inf texels are refused with a message naming the texel, on both backends and in build_sat.
-
-// Runs a command, returns its exit status and what it printed on stderr.
-int run_capturing(const std::string& command, std::string& err)
+TEST_CASE("non-finite-texels")
 {
-    const std::string err_path = (work / "stderr.txt").string();
-    const int status = std::system((command + " 2> '" + err_path + "' > /dev/null").c_str());
-    err.clear();
-    if (FILE* f = std::fopen(err_path.c_str(), "r")) {
-        char buf[4096];
-        size_t got = 0;
-        while ((got = std::fread(buf, 1, sizeof buf, f)) > 0)
-            err.append(buf, got);
-        std::fclose(f);
-    }
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-void check_non_finite_texels()
-{
+    SatCase c;
     struct Bad { float value; const char* word; };
     const Bad bad[] = {{std::numeric_limits<float>::quiet_NaN(), "NaN"}, {INFINITY, "+Inf"}, {-INFINITY, "-Inf"}};
-    const std::string in = (work / "one-lookup.csv").string();
+    const std::string in = (test::work_dir() / "one-lookup.csv").string();
     test::write_lookups_csv(in, {{0.5, 0.5, 0.1, 0, 0, 0.1}});
     int passed = 0, total = 0;
     for (const Bad& b : bad) {
@@ -725,14 +757,14 @@ void check_non_finite_texels()
         chain.levels.push_back(image);
         CHECK_THROWS_WITH(reference_sample(chain, sat_options(Filter::sat, Wrap::repeat), {0.5, 0.5, 0.1, 0, 0, 0.1}),
                           expect);
-        const std::string path = (work / (std::string("bad-") + b.word + ".pfm")).string();
+        const std::string path = (test::work_dir() / (std::string("bad-") + b.word + ".pfm")).string();
         write_image(path, image);
         for (const char* backend : {"vulkan", "reference"})
             for (const char* filter : {"sat", "sat-assembly"}) {
-                const std::string out = (work / "bad-out.csv").string();
+                const std::string out = (test::work_dir() / "bad-out.csv").string();
                 std::filesystem::remove(out);
                 std::string err;
-                const int status = run_capturing("'" + texfilter + "' sample --texture '" + path + "' --filter " +
+                const int status = run_capturing("'" + test::texfilter_path() + "' sample --texture '" + path + "' --filter " +
                                                      filter + " --backend " + backend + " --lookups '" + in +
                                                      "' -o '" + out + "'",
                                                  err);
@@ -749,46 +781,4 @@ void check_non_finite_texels()
                 "with \"texel (5, 3) is ...: every filter needs finite texels\" and no output -> %s\n",
                 passed, total, passed == total ? "PASS" : "FAIL");
 }
-
-} // namespace
-
-// texfilter and a work dir for the case; its summary line: the worst GPU-vs-reference error it saw.
-struct SatCase {
-    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-    SatCase()
-    {
-        texfilter = test::texfilter_path();
-        work = test::make_work_dir("sat");
-    }
-    ~SatCase()
-    {
-        std::printf("max GPU-vs-reference error: %.3g; total %.1f s\n", g_worst_gpu_error, seconds_since(start));
-    }
-};
-
-TEST_SUITE_BEGIN("reference");
-TEST_CASE("exact-box-sums") { SatCase c; check_exact_box_sums(); }
-TEST_SUITE_END();
-
-TEST_SUITE_BEGIN("gpu");
-TEST_CASE("aligned-boxes") { SatCase c; check_aligned_boxes(); }
-TEST_CASE("wrap-noise-256-repeat") { SatCase c; check_wrap_mode({"noise", 256, Wrap::repeat}); }
-TEST_CASE("wrap-noise-256-clamp") { SatCase c; check_wrap_mode({"noise", 256, Wrap::clamp}); }
-TEST_CASE("wrap-noise-256-mirror") { SatCase c; check_wrap_mode({"noise", 256, Wrap::mirror}); }
-TEST_CASE("wrap-zoneplate-100-repeat") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::repeat}); }
-TEST_CASE("wrap-zoneplate-100-clamp") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::clamp}); }
-TEST_CASE("wrap-zoneplate-100-mirror") { SatCase c; check_wrap_mode({"zoneplate", 100, Wrap::mirror}); }
-TEST_CASE("wrap-grid-64-repeat-bias-1.5") { SatCase c; check_wrap_mode({"grid", 64, Wrap::repeat, 1.5f}); }
-TEST_CASE("wrap-checker-96-clamp-bias-minus-1") { SatCase c; check_wrap_mode({"checker", 96, Wrap::clamp, -1.0f}); }
-TEST_CASE("constant-time") { SatCase c; check_constant_time(); }
-TEST_SUITE_END();
-
-TEST_SUITE_BEGIN("gpu slow");
-TEST_CASE("assembly") { SatCase c; check_assembly(); }
-TEST_SUITE_END();
-
-TEST_SUITE_BEGIN("gpu");
-TEST_CASE("degenerate") { SatCase c; check_degenerate(); }
-TEST_CASE("hdr") { SatCase c; check_hdr(); }
-TEST_CASE("non-finite-texels") { SatCase c; check_non_finite_texels(); }
 TEST_SUITE_END();

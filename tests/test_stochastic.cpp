@@ -29,13 +29,6 @@ using namespace tf;
 
 namespace {
 
-void check_bound(const char* file, int line, const std::string& what, double measured, double bound) {
-    const bool ok = measured <= bound; // NaN fails
-    std::printf("%-4s %-76s %.4g (bound %.4g)\n", ok ? "ok" : "FAIL", what.c_str(), measured, bound);
-    test::check(ok, file, line, what, test::show(measured) + " > " + test::show(bound));
-}
-#define CHECK_LE(what, measured, bound) check_bound(__FILE__, __LINE__, what, measured, bound)
-
 constexpr int kSize = 64; // image and texture side
 const int kFrames[] = {1, 4, 16, 64};
 
@@ -108,8 +101,8 @@ void check_rate(const char* file, int line, const std::string& what, double obse
     const double sd = relative_sd(e, n) * predicted;
     std::printf("     %s: MSE %.4g, predicted σ²/N %.4g (RMS %.4g vs %.4g)\n", what.c_str(), observed, predicted,
                 std::sqrt(observed), std::sqrt(predicted));
-    check_bound(file, line, what + ": MSE above the prediction", observed - predicted - bias2, 5.0 * sd);
-    check_bound(file, line, what + ": MSE below the prediction", predicted - observed, 5.0 * sd);
+    test::check_bound(what + ": MSE above the prediction", observed - predicted - bias2, 5.0 * sd, true, file, line);
+    test::check_bound(what + ": MSE below the prediction", predicted - observed, 5.0 * sd, true, file, line);
 }
 
 } // namespace

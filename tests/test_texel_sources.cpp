@@ -59,7 +59,6 @@ const MipChain& texture()
 }
 
 struct Work {
-    std::string texfilter;
     std::filesystem::path dir;
     std::string texture_path, lookups_path;
 };
@@ -88,7 +87,6 @@ const Work& work()
 {
     static const Work w = [] {
         Work w;
-        w.texfilter = test::texfilter_path();
         w.dir = test::make_work_dir("texel-sources");
         w.texture_path = (w.dir / "tile.pfm").string();
         write_pfm(w.texture_path, texture_level0());
@@ -132,8 +130,7 @@ const char* kWraps[] = {"repeat", "clamp", "mirror"};
 test::SampleResult gpu_run(const Family& f, Resource r)
 {
     const Work& w = work();
-    return test::run_sample(w.texfilter, w.dir,
-                            "--texture '" + w.texture_path + "' " + f.flags + " --resource " + to_string(r),
+    return test::run_sample("--texture '" + w.texture_path + "' " + f.flags + " --resource " + to_string(r),
                             w.lookups_path, true);
 }
 

@@ -23,23 +23,15 @@ std::string error_of(const std::string& text, const std::string& name = "views.t
     return "";
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-// `line` at line 3 of a script whose first two lines are good: the error must name views.txt:3 and `part`.
-void check_bad_line(const std::string& line, const std::string& part, const char* file, int at)
+// The message for `line` at line 3 of a script whose first two lines are good ("" if it parsed): a bad line's
+// names views.txt:3 and what is wrong.
+std::string error_at_line_3(const std::string& line)
 {
-    const std::string message = error_of("scene plane\n# a comment\n" + line + "\nquit\n");
-    test::check(contains(message, "views.txt:3: ") && contains(message, part), file, at,
-                "'" + line + "' is refused at views.txt:3 naming '" + part + "'", "message: " + message);
+    return error_of("scene plane\n# a comment\n" + line + "\nquit\n");
 }
-#define CHECK_BAD_LINE(line, part) check_bad_line(line, part, __FILE__, __LINE__)
 
-void check_good_line(const std::string& line, const char* file, int at)
-{
-    const std::string message = error_of(line + "\n");
-    test::check(message.empty(), file, at, "'" + line + "' is accepted", "message: " + message);
-}
-#define CHECK_GOOD_LINE(line) check_good_line(line, __FILE__, __LINE__)
+// The message for a script of `line` alone: "" for a good line.
+std::string error_of_line(const std::string& line) { return error_of(line + "\n"); }
 
 const char* const kEveryAction = R"(# every action once
 scene tunnel
@@ -142,108 +134,129 @@ TEST_CASE("comments-and-lines")
 // 3. Each bad line is refused at its own line, naming what is wrong.
 TEST_CASE("errors-name-the-line")
 {
-    CHECK_BAD_LINE("fly away", "unknown action 'fly'");
-    CHECK_BAD_LINE("scene nowhere", "nowhere");
-    CHECK_BAD_LINE("scene", "scene S");
-    CHECK_BAD_LINE("texture", "missing");
-    CHECK_BAD_LINE("texture --linear", "missing its first word before any flag (T|PATH)");
-    CHECK_BAD_LINE("filter --band 0.5", "missing its first word before any flag (F)");
-    CHECK_BAD_LINE("texture checker --texture-size 0", "--texture-size");
-    CHECK_BAD_LINE("texture checker --filter ewa", "unknown flag --filter");
+    CHECK_CONTAINS(error_at_line_3("fly away"), "views.txt:3: ", "unknown action 'fly'");
+    CHECK_CONTAINS(error_at_line_3("scene nowhere"), "views.txt:3: ", "nowhere");
+    CHECK_CONTAINS(error_at_line_3("scene"), "views.txt:3: ", "scene S");
+    CHECK_CONTAINS(error_at_line_3("texture"), "views.txt:3: ", "missing");
+    CHECK_CONTAINS(error_at_line_3("texture --linear"), "views.txt:3: ",
+                   "missing its first word before any flag (T|PATH)");
+    CHECK_CONTAINS(error_at_line_3("filter --band 0.5"), "views.txt:3: ", "missing its first word before any flag (F)");
+    CHECK_CONTAINS(error_at_line_3("texture checker --texture-size 0"), "views.txt:3: ", "--texture-size");
+    CHECK_CONTAINS(error_at_line_3("texture checker --filter ewa"), "views.txt:3: ", "unknown flag --filter");
     // A line sets the whole half or texture: a flag it does not read is refused as render refuses it, but for
     // what the viewer's own views read (the LOD view: --lod-*; the error view's truth: --spp, --pixel-filter).
-    CHECK_BAD_LINE("texture checker --linear", "--linear is not read by --texture checker");
-    CHECK_GOOD_LINE("texture not-yet-written.png"); // a file is checked when the line runs: a screenshot may write it
-    CHECK_BAD_LINE("filter trilinear --probes 4", "--probes is not read by --filter trilinear (it applies to aniso)");
-    CHECK_BAD_LINE("compare bilinear --alpha 3", "--alpha is not read by --filter bilinear (it applies to ewa)");
-    CHECK_GOOD_LINE("filter nearest --lod-bias 1");
-    CHECK_GOOD_LINE("filter trilinear --spp 16 --pixel-filter gaussian");
-    CHECK_BAD_LINE("filter ewa --alpha 0x10", "bad value for --alpha: '0x10'");
-    CHECK_BAD_LINE("wait 0x10", "'0x10' is not a whole number");
-    CHECK_BAD_LINE("divider inf", "'inf' is not a finite number");
-    CHECK_BAD_LINE("filter", "missing");
-    CHECK_BAD_LINE("filter blurry", "blurry");
-    CHECK_BAD_LINE("filter ewa --alpha 99", "--alpha");
-    CHECK_BAD_LINE("filter ewa --bogus 1", "unknown flag --bogus");
-    CHECK_BAD_LINE("filter ewa --backend reference", "unknown flag --backend"); // the viewer draws with Vulkan
-    CHECK_BAD_LINE("filter ground-truth --spp 50", "square");
-    CHECK_BAD_LINE("filter trilinear --lod-min 3 --lod-max 1", "--lod-min");
-    CHECK_BAD_LINE("filter ewa --alpha", "needs a value");
-    CHECK_BAD_LINE("compare bogus", "bogus");
-    CHECK_BAD_LINE("compare off now", "unexpected argument 'now'"); // not the single word off
-    CHECK_BAD_LINE("resize 640x", "640x");
-    CHECK_BAD_LINE("resize 641x480", "even");
-    CHECK_BAD_LINE("resize 640 480", "resize WxH");
-    CHECK_BAD_LINE("wait", "wait N");
-    CHECK_BAD_LINE("wait 1.5", "'1.5' is not a whole number");
-    CHECK_BAD_LINE("screenshot out.jpg", ".png");
-    CHECK_BAD_LINE("screenshot", "PATH.png");
-    CHECK_BAD_LINE("screenshot-ui a.png b.png", "PATH.png");
-    CHECK_BAD_LINE("quit now", "quit");
-    CHECK_BAD_LINE("camera", "reset, set, fly, turn or orbit");
-    CHECK_BAD_LINE("camera zoom 2", "unknown camera action 'zoom'");
-    CHECK_BAD_LINE("camera reset now", "camera reset");
-    CHECK_BAD_LINE("camera set 1,2,3,4", "X,Y,Z,YAW,PITCH");
-    CHECK_BAD_LINE("camera set 1,2,3,4,nan", "PITCH 'nan' is not a number"); // tf::parse_camera's words, as render --camera's
-    CHECK_BAD_LINE("camera set 0,0,0,0,90", "PITCH");
-    CHECK_BAD_LINE("camera set 1 2 3 4 5", "camera set X,Y,Z,YAW,PITCH");
-    CHECK_BAD_LINE("camera fly 1 2", "camera fly DX DY DZ");
-    CHECK_BAD_LINE("camera turn 1 x", "'x' is not a finite number");
-    CHECK_BAD_LINE("camera orbit 1 inf", "'inf' is not a finite number");
-    CHECK_BAD_LINE("animate maybe", "on or off");
-    CHECK_BAD_LINE("truth", "on|off");
-    CHECK_BAD_LINE("view depth", "unknown view 'depth'");
-    CHECK_BAD_LINE("divider half", "'half' is not a finite number");
-    CHECK_BAD_LINE("loupe 10 10", "loupe X Y ZOOM");
-    CHECK_BAD_LINE("loupe 10 10 2.5", "zoom '2.5'");
-    CHECK_BAD_LINE("cursor 1", "cursor X Y");
-    CHECK_BAD_LINE("cursor 1 y", "pixel y 'y'");
-    CHECK_BAD_LINE("minimize now", "minimize");
-    CHECK_BAD_LINE("restore 1", "restore");
-    CHECK_BAD_LINE("stage vertex", "fragment|compute");
-    CHECK_BAD_LINE("derivatives fast", "fine|coarse|ray");
-    CHECK_BAD_LINE("frame x", "frame 'x'");
+    CHECK_CONTAINS(error_at_line_3("texture checker --linear"), "views.txt:3: ",
+                   "--linear is not read by --texture checker");
+    // A file is checked when the line runs: a screenshot may write it.
+    CHECK_EQ_TEXT(error_of_line("texture not-yet-written.png"), "");
+    CHECK_CONTAINS(error_at_line_3("filter trilinear --probes 4"), "views.txt:3: ",
+                   "--probes is not read by --filter trilinear (it applies to aniso)");
+    CHECK_CONTAINS(error_at_line_3("compare bilinear --alpha 3"), "views.txt:3: ",
+                   "--alpha is not read by --filter bilinear (it applies to ewa)");
+    CHECK_EQ_TEXT(error_of_line("filter nearest --lod-bias 1"), "");
+    CHECK_EQ_TEXT(error_of_line("filter trilinear --spp 16 --pixel-filter gaussian"), "");
+    CHECK_CONTAINS(error_at_line_3("filter ewa --alpha 0x10"), "views.txt:3: ", "bad value for --alpha: '0x10'");
+    CHECK_CONTAINS(error_at_line_3("wait 0x10"), "views.txt:3: ", "'0x10' is not a whole number");
+    CHECK_CONTAINS(error_at_line_3("divider inf"), "views.txt:3: ", "'inf' is not a finite number");
+    CHECK_CONTAINS(error_at_line_3("filter"), "views.txt:3: ", "missing");
+    CHECK_CONTAINS(error_at_line_3("filter blurry"), "views.txt:3: ", "blurry");
+    CHECK_CONTAINS(error_at_line_3("filter ewa --alpha 99"), "views.txt:3: ", "--alpha");
+    CHECK_CONTAINS(error_at_line_3("filter ewa --bogus 1"), "views.txt:3: ", "unknown flag --bogus");
+    // the viewer draws with Vulkan
+    CHECK_CONTAINS(error_at_line_3("filter ewa --backend reference"), "views.txt:3: ", "unknown flag --backend");
+    CHECK_CONTAINS(error_at_line_3("filter ground-truth --spp 50"), "views.txt:3: ", "square");
+    CHECK_CONTAINS(error_at_line_3("filter trilinear --lod-min 3 --lod-max 1"), "views.txt:3: ", "--lod-min");
+    CHECK_CONTAINS(error_at_line_3("filter ewa --alpha"), "views.txt:3: ", "needs a value");
+    CHECK_CONTAINS(error_at_line_3("compare bogus"), "views.txt:3: ", "bogus");
+    // not the single word off
+    CHECK_CONTAINS(error_at_line_3("compare off now"), "views.txt:3: ", "unexpected argument 'now'");
+    CHECK_CONTAINS(error_at_line_3("resize 640x"), "views.txt:3: ", "640x");
+    CHECK_CONTAINS(error_at_line_3("resize 641x480"), "views.txt:3: ", "even");
+    CHECK_CONTAINS(error_at_line_3("resize 640 480"), "views.txt:3: ", "resize WxH");
+    CHECK_CONTAINS(error_at_line_3("wait"), "views.txt:3: ", "wait N");
+    CHECK_CONTAINS(error_at_line_3("wait 1.5"), "views.txt:3: ", "'1.5' is not a whole number");
+    CHECK_CONTAINS(error_at_line_3("screenshot out.jpg"), "views.txt:3: ", ".png");
+    CHECK_CONTAINS(error_at_line_3("screenshot"), "views.txt:3: ", "PATH.png");
+    CHECK_CONTAINS(error_at_line_3("screenshot-ui a.png b.png"), "views.txt:3: ", "PATH.png");
+    CHECK_CONTAINS(error_at_line_3("quit now"), "views.txt:3: ", "quit");
+    CHECK_CONTAINS(error_at_line_3("camera"), "views.txt:3: ", "reset, set, fly, turn or orbit");
+    CHECK_CONTAINS(error_at_line_3("camera zoom 2"), "views.txt:3: ", "unknown camera action 'zoom'");
+    CHECK_CONTAINS(error_at_line_3("camera reset now"), "views.txt:3: ", "camera reset");
+    CHECK_CONTAINS(error_at_line_3("camera set 1,2,3,4"), "views.txt:3: ", "X,Y,Z,YAW,PITCH");
+    // tf::parse_camera's words, as render --camera's
+    CHECK_CONTAINS(error_at_line_3("camera set 1,2,3,4,nan"), "views.txt:3: ", "PITCH 'nan' is not a number");
+    CHECK_CONTAINS(error_at_line_3("camera set 0,0,0,0,90"), "views.txt:3: ", "PITCH");
+    CHECK_CONTAINS(error_at_line_3("camera set 1 2 3 4 5"), "views.txt:3: ", "camera set X,Y,Z,YAW,PITCH");
+    CHECK_CONTAINS(error_at_line_3("camera fly 1 2"), "views.txt:3: ", "camera fly DX DY DZ");
+    CHECK_CONTAINS(error_at_line_3("camera turn 1 x"), "views.txt:3: ", "'x' is not a finite number");
+    CHECK_CONTAINS(error_at_line_3("camera orbit 1 inf"), "views.txt:3: ", "'inf' is not a finite number");
+    CHECK_CONTAINS(error_at_line_3("animate maybe"), "views.txt:3: ", "on or off");
+    CHECK_CONTAINS(error_at_line_3("truth"), "views.txt:3: ", "on|off");
+    CHECK_CONTAINS(error_at_line_3("view depth"), "views.txt:3: ", "unknown view 'depth'");
+    CHECK_CONTAINS(error_at_line_3("divider half"), "views.txt:3: ", "'half' is not a finite number");
+    CHECK_CONTAINS(error_at_line_3("loupe 10 10"), "views.txt:3: ", "loupe X Y ZOOM");
+    CHECK_CONTAINS(error_at_line_3("loupe 10 10 2.5"), "views.txt:3: ", "zoom '2.5'");
+    CHECK_CONTAINS(error_at_line_3("cursor 1"), "views.txt:3: ", "cursor X Y");
+    CHECK_CONTAINS(error_at_line_3("cursor 1 y"), "views.txt:3: ", "pixel y 'y'");
+    CHECK_CONTAINS(error_at_line_3("minimize now"), "views.txt:3: ", "minimize");
+    CHECK_CONTAINS(error_at_line_3("restore 1"), "views.txt:3: ", "restore");
+    CHECK_CONTAINS(error_at_line_3("stage vertex"), "views.txt:3: ", "fragment|compute");
+    CHECK_CONTAINS(error_at_line_3("derivatives fast"), "views.txt:3: ", "fine|coarse|ray");
+    CHECK_CONTAINS(error_at_line_3("frame x"), "views.txt:3: ", "frame 'x'");
 
     // Nothing may follow quit: it would never run.
     const std::string after = error_of("wait 1\nquit\n\nwait 2\n");
-    CHECK(contains(after, "views.txt:4: ") && contains(after, "after quit (line 2)"), after);
+    CHECK_CONTAINS(after, "views.txt:4: ", "after quit (line 2)");
     // The first bad line is the one named, and the file's name is what was given.
     const std::string first = error_of("wait x\nwait y\n", "/tmp/other.script");
-    CHECK(contains(first, "/tmp/other.script:1: wait: "), first);
+    CHECK_CONTAINS(first, "/tmp/other.script:1: wait: ");
 }
 
 // 4. The bounds: each limit accepted, one past it refused.
 TEST_CASE("bounds")
 {
-    CHECK_GOOD_LINE("wait 0");
-    CHECK_GOOD_LINE("wait 100000");
-    CHECK_BAD_LINE("wait 100001", "0..100000");
-    CHECK_BAD_LINE("wait -1", "0..100000");
-    CHECK_GOOD_LINE("hold 0");
-    CHECK_GOOD_LINE("hold 60000");
-    CHECK_BAD_LINE("hold 60001", "0..60000");
-    CHECK_GOOD_LINE("divider 0");
-    CHECK_GOOD_LINE("divider 1");
-    CHECK_BAD_LINE("divider 1.0001", "0..1");
-    CHECK_BAD_LINE("divider -0.0001", "0..1");
-    CHECK_GOOD_LINE("loupe 0 0 1");
-    CHECK_GOOD_LINE("loupe 65535 65535 64");
-    CHECK_BAD_LINE("loupe 0 0 0", "1..64");
-    CHECK_BAD_LINE("loupe 0 0 65", "1..64");
-    CHECK_BAD_LINE("loupe -1 0 4", "pixel x '-1'");
-    CHECK_GOOD_LINE("resize 2x2");
-    CHECK_GOOD_LINE("resize 8192x8192");
-    CHECK_BAD_LINE("resize 8194x8", "[2, 8192]");
-    CHECK_BAD_LINE("resize 0x8", "[2, 8192]");
-    CHECK_GOOD_LINE("frame 0");
-    CHECK_GOOD_LINE("frame 1073741824");
-    CHECK_BAD_LINE("frame -1", "0..1073741824");
-    CHECK_GOOD_LINE("texture grid --texture-size 16384");
-    CHECK_BAD_LINE("texture grid --texture-size 16385", "--texture-size");
-    CHECK_GOOD_LINE("filter aniso --probes 16");
-    CHECK_BAD_LINE("filter aniso --probes 17", "--probes");
-    CHECK_GOOD_LINE("filter ground-truth --spp 4096 --pixel-filter gaussian");
-    CHECK_BAD_LINE("filter ground-truth --spp 4225", "--spp");
+    const char* const accepted[] = {
+        "wait 0",
+        "wait 100000",
+        "hold 0",
+        "hold 60000",
+        "divider 0",
+        "divider 1",
+        "loupe 0 0 1",
+        "loupe 65535 65535 64",
+        "resize 2x2",
+        "resize 8192x8192",
+        "frame 0",
+        "frame 1073741824",
+        "texture grid --texture-size 16384",
+        "filter aniso --probes 16",
+        "filter ground-truth --spp 4096 --pixel-filter gaussian",
+    };
+    for (const char* line : accepted) {
+        INFO(line);
+        CHECK_EQ_TEXT(error_of_line(line), "");
+    }
+    // Each refused line and what its message names.
+    const char* const refused[][2] = {
+        {"wait 100001", "0..100000"},
+        {"wait -1", "0..100000"},
+        {"hold 60001", "0..60000"},
+        {"divider 1.0001", "0..1"},
+        {"divider -0.0001", "0..1"},
+        {"loupe 0 0 0", "1..64"},
+        {"loupe 0 0 65", "1..64"},
+        {"loupe -1 0 4", "pixel x '-1'"},
+        {"resize 8194x8", "[2, 8192]"},
+        {"resize 0x8", "[2, 8192]"},
+        {"frame -1", "0..1073741824"},
+        {"texture grid --texture-size 16385", "--texture-size"},
+        {"filter aniso --probes 17", "--probes"},
+        {"filter ground-truth --spp 4225", "--spp"},
+    };
+    for (const auto& [line, part] : refused) {
+        INFO(line);
+        CHECK_CONTAINS(error_at_line_3(line), "views.txt:3: ", part);
+    }
 }
 
 // 5. From a file: the same actions; a missing file names its path.
@@ -304,18 +317,20 @@ TEST_CASE("texture-frame-actions")
     CHECK(a[3].verb == "texture-animate" && !script_off(a[3]));
     CHECK(script_count(a[4]) == 0);
     CHECK(script_count(a[5]) == 1000000);
-    CHECK_BAD_LINE("texture-frame", "texture-frame N");
-    CHECK_BAD_LINE("texture-frame 1 2", "texture-frame N");
-    CHECK_BAD_LINE("texture-frame -1", "texture frame '-1' is not a whole number in 0..1000000");
-    CHECK_BAD_LINE("texture-frame 1000001", "0..1000000");
-    CHECK_BAD_LINE("texture-frame 2.5", "texture frame '2.5'");
-    CHECK_BAD_LINE("texture-animate", "on|off");
-    CHECK_BAD_LINE("texture-animate maybe", "on or off");
-    CHECK_BAD_LINE("texture-animte on", "unknown action 'texture-animte'");
+    CHECK_CONTAINS(error_at_line_3("texture-frame"), "views.txt:3: ", "texture-frame N");
+    CHECK_CONTAINS(error_at_line_3("texture-frame 1 2"), "views.txt:3: ", "texture-frame N");
+    CHECK_CONTAINS(error_at_line_3("texture-frame -1"), "views.txt:3: ",
+                   "texture frame '-1' is not a whole number in 0..1000000");
+    CHECK_CONTAINS(error_at_line_3("texture-frame 1000001"), "views.txt:3: ", "0..1000000");
+    CHECK_CONTAINS(error_at_line_3("texture-frame 2.5"), "views.txt:3: ", "texture frame '2.5'");
+    CHECK_CONTAINS(error_at_line_3("texture-animate"), "views.txt:3: ", "on|off");
+    CHECK_CONTAINS(error_at_line_3("texture-animate maybe"), "views.txt:3: ", "on or off");
+    CHECK_CONTAINS(error_at_line_3("texture-animte on"), "views.txt:3: ", "unknown action 'texture-animte'");
     // The camera path's frame keeps its own bounds: the two counters are not confused.
-    CHECK_GOOD_LINE("frame 1000001");
+    CHECK_EQ_TEXT(error_of_line("frame 1000001"), "");
     // The texture action takes no frame: that is texture-frame's (its words are render's texture flags).
-    CHECK_BAD_LINE("texture dynamic --texture-frame 3", "unknown flag --texture-frame");
+    CHECK_CONTAINS(error_at_line_3("texture dynamic --texture-frame 3"), "views.txt:3: ",
+                   "unknown flag --texture-frame");
 }
 
 // 8. A screenshot's files (PATH.png, .txt, .json) never replace a file the viewer did not write: each one that

@@ -21,45 +21,11 @@ namespace {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-// POSIX shell words of `line`: blanks split, '...' quotes literally, a backslash outside quotes escapes the
-// next character (all that shell_quote writes).
-std::vector<std::string> shell_words(const std::string& line)
-{
-    std::vector<std::string> words;
-    std::string word;
-    bool in_word = false, quoted = false;
-    for (size_t i = 0; i < line.size(); ++i) {
-        const char c = line[i];
-        if (quoted) {
-            if (c == '\'')
-                quoted = false;
-            else
-                word += c;
-        } else if (c == '\'') {
-            quoted = in_word = true;
-        } else if (c == '\\' && i + 1 < line.size()) {
-            word += line[++i];
-            in_word = true;
-        } else if (c == ' ') {
-            if (in_word)
-                words.push_back(word);
-            word.clear();
-            in_word = false;
-        } else {
-            word += c;
-            in_word = true;
-        }
-    }
-    if (in_word)
-        words.push_back(word);
-    return words;
-}
-
 // What `texfilter render` accepts, plus the flags other engineers add for the viewer (--camera, --frame,
 // --view): the words after "texfilter render" must all be among them.
 Args parse_render_line(const std::string& line)
 {
-    std::vector<std::string> words = shell_words(line);
+    std::vector<std::string> words = test::shell_words(line);
     if (words.size() < 2 || words[0] != "texfilter" || words[1] != "render")
         throw Error("not a texfilter render line: " + line);
     words.erase(words.begin(), words.begin() + 2);
@@ -265,8 +231,7 @@ TEST_CASE("command-line-fields")
     const Args p = parse_render_line(line);
     CHECK(!p.has("--camera") && !p.has("--frame") && !p.has("--view") && !p.has("--texture-size"), line);
     CHECK(p.has("--linear") && p.get("--texture", "") == "photos/brick wall.png", line);
-    CHECK(contains(line, "--texture 'photos/brick wall.png'"), line);
-    CHECK(contains(line, "--size 1280x720 --stage fragment --derivatives fine"), line);
+    CHECK_CONTAINS(line, "--texture 'photos/brick wall.png'", "--size 1280x720 --stage fragment --derivatives fine");
     plain.b = ViewHalf{};
     CHECK(parse_render_line(render_command_lines(plain, "shot")[1]).get("-o", "") == "shot-b");
 }
@@ -293,7 +258,7 @@ TEST_CASE("shell-quoting")
         expected += w + "\n";
     CHECK(output == expected, command + "\ngave\n" + output);
     CHECK(shell_quote("plain-word_1.png") == "plain-word_1.png"); // safe words stay unquoted
-    CHECK(shell_words(shell_quote("it's a 'test'")) == std::vector<std::string>{"it's a 'test'"});
+    CHECK(test::shell_words(shell_quote("it's a 'test'")) == std::vector<std::string>{"it's a 'test'"});
 }
 
 // 4. JSON: a state comes back field for field.
@@ -336,47 +301,54 @@ TEST_CASE("json-round-trip")
 // 5. Bad JSON and bad values: each an error naming the file and the field.
 TEST_CASE("json-errors")
 {
-    auto check_error = [](const std::string& text, const std::string& part, int line) {
-        const std::string message = json_error(text);
-        tf::test::check(contains(message, "saved.json") && contains(message, part), __FILE__, line,
-                        "refused naming '" + part + "'", "message: " + message);
-    };
-    check_error("{\"scene\": ", "not valid JSON", __LINE__);
-    check_error("[1, 2]", "expected a JSON object", __LINE__);
-    check_error(edited("\"scene\": \"slanted\"", "\"scene\": \"moon\""), "saved.json: scene: ", __LINE__);
-    check_error(edited("\"scene\": \"slanted\"", "\"scene\": 3"), "scene: expected a string", __LINE__);
-    check_error(edited("\"scene\": \"slanted\",", "\"colour\": 1, \"scene\": \"slanted\","), "colour: unknown field",
-                __LINE__);
-    check_error(edited("\"name\": \"zoneplate\"", "\"name\": \"\""), "texture.name: empty", __LINE__);
-    check_error(edited("\"size\": 128", "\"size\": 0"), "texture.size", __LINE__);
-    check_error(edited("\"linear\": false", "\"linear\": \"no\""), "texture.linear", __LINE__);
-    check_error(edited("\"memory-budget\": 0", "\"memory-budget\": -5"), "texture.memory-budget", __LINE__);
-    check_error(edited("\"stage\": \"compute\"", "\"stage\": \"vertex\""), "render.stage", __LINE__);
-    check_error(edited("\"derivatives\": \"ray\"", "\"derivatives\": \"fast\""), "render.derivatives", __LINE__);
-    check_error(edited("\"width\": 640", "\"width\": 641"), "width: must be even", __LINE__);
-    check_error(edited("\"height\": 360", "\"height\": 9000"), "height: expected a whole number in 2..8192", __LINE__);
-    check_error(edited("\"height\": 360", "\"height\": 360.5"), "height", __LINE__);
-    check_error(edited("\"filter\": \"ewa\"", "\"filter\": \"blurry\""), "a.filter", __LINE__);
-    check_error(changed([](ViewState& v) { v.a.options.alpha = 99.0f; }), "a.alpha: bad value for --alpha", __LINE__);
-    check_error(edited("\"band\": 0.25", "\"band\": \"wide\""), "a.band: bad value for --band", __LINE__);
-    check_error(edited("\"band\": 0.25", "\"band\": true"), "a.band: expected a string or a number", __LINE__);
-    check_error(edited("\"spp\": 256", "\"spp\": 200"), "a.spp", __LINE__);
-    check_error(edited("\"wrap\": \"repeat\"", "\"bogus\": 1, \"wrap\": \"repeat\""), "a.bogus: unknown field",
-                __LINE__);
-    check_error(changed([](ViewState& v) { v.a.options.lod_min = 5.0f, v.a.options.lod_max = 2.0f; }),
-                "saved.json: a: bad values: --lod-min 5 is above --lod-max 2", __LINE__);
-    check_error(edited("\"filter\": \"aniso\"", "\"filter\": \"nope\""), "b.filter", __LINE__);
-    check_error(changed([](ViewState& v) { v.divider = 1.5f; }), "divider: expected a number in 0..1", __LINE__);
-    check_error(edited("\"camera\": \"1.5,-2,0.25,90,-10\"", "\"camera\": \"1,2\""), "camera: ", __LINE__);
-    check_error(edited("\"frame\": 17", "\"frame\": -1"), "frame", __LINE__);
-    check_error(edited("\"view\": \"lod\"", "\"view\": \"depth\""), "view: unknown view 'depth'", __LINE__);
+    CHECK_CONTAINS(json_error("{\"scene\": "), "saved.json", "not valid JSON");
+    CHECK_CONTAINS(json_error("[1, 2]"), "saved.json", "expected a JSON object");
+    CHECK_CONTAINS(json_error(edited("\"scene\": \"slanted\"", "\"scene\": \"moon\"")), "saved.json",
+                   "saved.json: scene: ");
+    CHECK_CONTAINS(json_error(edited("\"scene\": \"slanted\"", "\"scene\": 3")), "saved.json",
+                   "scene: expected a string");
+    CHECK_CONTAINS(json_error(edited("\"scene\": \"slanted\",", "\"colour\": 1, \"scene\": \"slanted\",")),
+                   "saved.json", "colour: unknown field");
+    CHECK_CONTAINS(json_error(edited("\"name\": \"zoneplate\"", "\"name\": \"\"")), "saved.json",
+                   "texture.name: empty");
+    CHECK_CONTAINS(json_error(edited("\"size\": 128", "\"size\": 0")), "saved.json", "texture.size");
+    CHECK_CONTAINS(json_error(edited("\"linear\": false", "\"linear\": \"no\"")), "saved.json", "texture.linear");
+    CHECK_CONTAINS(json_error(edited("\"memory-budget\": 0", "\"memory-budget\": -5")), "saved.json",
+                   "texture.memory-budget");
+    CHECK_CONTAINS(json_error(edited("\"stage\": \"compute\"", "\"stage\": \"vertex\"")), "saved.json", "render.stage");
+    CHECK_CONTAINS(json_error(edited("\"derivatives\": \"ray\"", "\"derivatives\": \"fast\"")), "saved.json",
+                   "render.derivatives");
+    CHECK_CONTAINS(json_error(edited("\"width\": 640", "\"width\": 641")), "saved.json", "width: must be even");
+    CHECK_CONTAINS(json_error(edited("\"height\": 360", "\"height\": 9000")), "saved.json",
+                   "height: expected a whole number in 2..8192");
+    CHECK_CONTAINS(json_error(edited("\"height\": 360", "\"height\": 360.5")), "saved.json", "height");
+    CHECK_CONTAINS(json_error(edited("\"filter\": \"ewa\"", "\"filter\": \"blurry\"")), "saved.json", "a.filter");
+    CHECK_CONTAINS(json_error(changed([](ViewState& v) { v.a.options.alpha = 99.0f; })), "saved.json",
+                   "a.alpha: bad value for --alpha");
+    CHECK_CONTAINS(json_error(edited("\"band\": 0.25", "\"band\": \"wide\"")), "saved.json",
+                   "a.band: bad value for --band");
+    CHECK_CONTAINS(json_error(edited("\"band\": 0.25", "\"band\": true")), "saved.json",
+                   "a.band: expected a string or a number");
+    CHECK_CONTAINS(json_error(edited("\"spp\": 256", "\"spp\": 200")), "saved.json", "a.spp");
+    CHECK_CONTAINS(json_error(edited("\"wrap\": \"repeat\"", "\"bogus\": 1, \"wrap\": \"repeat\"")), "saved.json",
+                   "a.bogus: unknown field");
+    CHECK_CONTAINS(json_error(changed([](ViewState& v) { v.a.options.lod_min = 5.0f, v.a.options.lod_max = 2.0f; })),
+                   "saved.json", "saved.json: a: bad values: --lod-min 5 is above --lod-max 2");
+    CHECK_CONTAINS(json_error(edited("\"filter\": \"aniso\"", "\"filter\": \"nope\"")), "saved.json", "b.filter");
+    CHECK_CONTAINS(json_error(changed([](ViewState& v) { v.divider = 1.5f; })), "saved.json",
+                   "divider: expected a number in 0..1");
+    CHECK_CONTAINS(json_error(edited("\"camera\": \"1.5,-2,0.25,90,-10\"", "\"camera\": \"1,2\"")), "saved.json",
+                   "camera: ");
+    CHECK_CONTAINS(json_error(edited("\"frame\": 17", "\"frame\": -1")), "saved.json", "frame");
+    CHECK_CONTAINS(json_error(edited("\"view\": \"lod\"", "\"view\": \"depth\"")), "saved.json",
+                   "view: unknown view 'depth'");
     // Missing fields that have no default.
-    check_error("{\"scene\": \"plane\"}", "texture: missing", __LINE__);
+    CHECK_CONTAINS(json_error("{\"scene\": \"plane\"}"), "saved.json", "texture: missing");
     std::string no_a = state_to_json(example_state());
     no_a.replace(no_a.find("\"a\":"), 4, "\"z\":");
-    check_error(no_a, "z: unknown field", __LINE__);
+    CHECK_CONTAINS(json_error(no_a), "saved.json", "z: unknown field");
     // The mesh scene is rasterized in the fragment stage: compute is a conflict, named as render.
-    check_error(edited("\"scene\": \"slanted\"", "\"scene\": \"mesh\""), "render: ", __LINE__);
+    CHECK_CONTAINS(json_error(edited("\"scene\": \"slanted\"", "\"scene\": \"mesh\"")), "saved.json", "render: ");
     // A file that cannot be read names its path.
     CHECK_THROWS_WITH(read_state_file("/nonexistent/state.json"), "/nonexistent/state.json: cannot open");
 }
@@ -416,7 +388,7 @@ TEST_CASE("dynamic-texture-frame")
         if (at == std::string::npos)
             return;
         const std::string message = json_error(edited_text.replace(at, from.size(), to));
-        CHECK(contains(message, "saved.json: texture.frame: ") && contains(message, part), message);
+        CHECK_CONTAINS(message, "saved.json: texture.frame: ", part);
     };
     json_refused("\"frame\": 1000000", "\"frame\": 1000001", "0..1000000");
     json_refused("\"frame\": 1000000", "\"frame\": -1", "0..1000000");
@@ -432,8 +404,8 @@ TEST_CASE("dynamic-texture-frame")
         return std::string();
     };
     const std::string other = source_error({"--texture", "checker", "--texture-frame", "3"});
-    CHECK(contains(other, "--texture-frame applies to --texture dynamic only") && contains(other, "'checker'"), other);
-    CHECK(contains(source_error({"--texture", "dynamic", "--texture-frame", "1000001"}), "--texture-frame"));
+    CHECK_CONTAINS(other, "--texture-frame applies to --texture dynamic only", "'checker'");
+    CHECK_CONTAINS(source_error({"--texture", "dynamic", "--texture-frame", "1000001"}), "--texture-frame");
     CHECK(source_error({"--texture", "dynamic", "--texture-frame", "1000000"}).empty());
 }
 
@@ -472,8 +444,9 @@ TEST_SUITE_END();
 
 TEST_SUITE_BEGIN("gpu");
 
-// 8. The lines run: `texfilter render` accepts each (A and B, an output path a shell must quote) and
-//    writes its PNG. Frames without --camera/--frame/--view, which render does not take yet on its own.
+// 8. A CLI test (the command lines the viewer prints are its contract): `texfilter render` accepts each
+//    (A and B, an output path a shell must quote) and writes its PNG. Frames without --camera/--frame/--view,
+//    which render does not take yet on its own.
 TEST_CASE("command-lines-run")
 {
     const std::filesystem::path work = test::make_work_dir("view-state");

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 using namespace tf;
@@ -47,7 +48,7 @@ std::uint32_t pack(glm::u8vec3 c, const XwdLayout& l)
 
 glm::u8vec3 colour_at(int x, int y) { return {std::uint8_t(40 * x + 3), std::uint8_t(70 * y + 1), std::uint8_t(x * y * 17 + 200)}; }
 
-std::vector<std::uint8_t> make_xwd(const XwdLayout& l, glm::u8vec3 (*colour)(int, int) = colour_at)
+std::vector<std::uint8_t> make_xwd(const XwdLayout& l, const std::function<glm::u8vec3(int, int)>& colour = colour_at)
 {
     std::uint32_t h[xwd_field_count] = {};
     h[xwd_header_size] = std::uint32_t(xwd_header_bytes + l.window_name.size() + 1);
@@ -101,7 +102,7 @@ void write_file(const std::filesystem::path& path, const std::vector<std::uint8_
     std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
 }
 
-int wrong_pixels(const XwdImage& image, glm::u8vec3 (*colour)(int, int) = colour_at)
+int wrong_pixels(const XwdImage& image, const std::function<glm::u8vec3(int, int)>& colour = colour_at)
 {
     int wrong = 0;
     for (int y = 0; y < image.height; ++y)
@@ -110,7 +111,8 @@ int wrong_pixels(const XwdImage& image, glm::u8vec3 (*colour)(int, int) = colour
     return wrong;
 }
 
-// Runs xwd_compare ARGS; its exit status, and its stdout and stderr in `output`.
+// Runs xwd_compare ARGS; its exit status, and its stdout and stderr in `output`: the tool's own tests (its
+// exit codes and messages).
 int run_xwd_compare(const std::filesystem::path& work, const std::string& args, std::string& output)
 {
     std::string log = (work / "xwd_compare.log").string();
@@ -230,9 +232,8 @@ TEST_CASE("xwd-compare")
             picture.at(x, y) = glm::vec4(x / 5.0f, y / 3.0f, float((x * 7 + y * 3) % 10) / 9.0f, 1.0f);
     std::string png = (work / "shot.png").string();
     write_image(png, picture);
-    static Image stored;
-    stored = read_image_raw(png);
-    auto stored_colour = [](int x, int y) {
+    const Image stored = read_image_raw(png);
+    auto stored_colour = [&stored](int x, int y) {
         int px = x - 3, py = y - 2; // the shot sits at 3,2 of the dump; around it a frame of other colours
         if (px < 0 || py < 0 || px >= stored.width || py >= stored.height)
             return glm::u8vec3(x * 9, 255 - y * 9, 77);
@@ -245,12 +246,12 @@ TEST_CASE("xwd-compare")
     std::string output;
     std::string files = "'" + (work / "dump.xwd").string() + "' '" + png + "'";
     CHECK_EQ(run_xwd_compare(work, files + " --at 3,2", output), 0);
-    CHECK(output.find("max channel difference 0, 0 of 24 pixels differ") != std::string::npos, output);
+    CHECK_CONTAINS(output, "max channel difference 0, 0 of 24 pixels differ");
     CHECK_EQ(run_xwd_compare(work, files, output), 1); // 0,0: the frame, not the shot
     CHECK_EQ(run_xwd_compare(work, files + " --at 4,2", output), 1);
 
-    static int bumped_x = 5, bumped_y = 3;
-    auto bumped_colour = [](int x, int y) {
+    constexpr int bumped_x = 5, bumped_y = 3;
+    auto bumped_colour = [&stored](int x, int y) {
         int px = x - 3, py = y - 2;
         if (px < 0 || py < 0 || px >= stored.width || py >= stored.height)
             return glm::u8vec3(0);
@@ -263,19 +264,19 @@ TEST_CASE("xwd-compare")
     l.byte_order = 1;
     write_file(work / "dump.xwd", make_xwd(l, bumped_colour));
     CHECK_EQ(run_xwd_compare(work, files + " --at 3,2", output), 1);
-    CHECK(output.find("max channel difference 3, 1 of 24 pixels differ (first at 2,1") != std::string::npos, output);
+    CHECK_CONTAINS(output, "max channel difference 3, 1 of 24 pixels differ (first at 2,1");
     CHECK_EQ(run_xwd_compare(work, files + " --at 3,2 --tolerance 3", output), 0);
     CHECK_EQ(run_xwd_compare(work, files + " --at 3,2 --tolerance 2", output), 1);
 
     CHECK_EQ(run_xwd_compare(work, files + " --at 7,2", output), 2);
-    CHECK(output.find("(6x4) at 7,2 does not fit in") != std::string::npos, output);
+    CHECK_CONTAINS(output, "(6x4) at 7,2 does not fit in");
     CHECK_EQ(run_xwd_compare(work, files + " --tolerance 300", output), 2);
-    CHECK(output.find("xwd_compare: bad --tolerance '300'") != std::string::npos, output);
+    CHECK_CONTAINS(output, "xwd_compare: bad --tolerance '300'");
     CHECK_EQ(run_xwd_compare(work, files + " --at 3", output), 2);
     CHECK_EQ(run_xwd_compare(work, "'" + png + "' '" + png + "'", output), 2); // a PNG is no XWD
-    CHECK(output.find("file_version is") != std::string::npos, output);
+    CHECK_CONTAINS(output, "file_version is");
     CHECK_EQ(run_xwd_compare(work, "'" + (work / "dump.xwd").string() + "'", output), 2);
-    CHECK(output.find("usage: xwd_compare DUMP.xwd SHOT.png") != std::string::npos, output);
+    CHECK_CONTAINS(output, "usage: xwd_compare DUMP.xwd SHOT.png");
 }
 
 TEST_SUITE_END();
