@@ -499,7 +499,7 @@ TEST_CASE("mipcolors")
 // exp(-2 r²) - exp(-2 R²) on r² < R² = 2), bilinear's is in [0, ¼]; hardware taps add the sampler's
 // rounding (as check_gpu_vs_reference). The Hessian on level l is the level-0 wave bound times 4^l; the
 // bound of a lookup uses the coarser level it reads. (Before the fit, the discrete weights' centroid,
-// up to ½ texel off uv, added gradient·½·2^l: the bias of issue 10 item 11.)
+// up to ½ texel off uv, added gradient·½·2^l: the bias the fit removes.)
 TEST_CASE("isotropic-vs-trilinear")
 {
     GpuCase c;
@@ -801,7 +801,7 @@ TEST_CASE("non-finite")
 TEST_SUITE_END();
 
 TEST_SUITE_BEGIN("gpu slow");
-// docs/API.md's degenerate-input table (issue 10 item 6), end to end through `texfilter sample` on both
+// docs/API.md's degenerate-input table, end to end through `texfilter sample` on both
 // backends, for every family: a 64² checker (the smallest power of two where every huge u below, 1e37 up,
 // overflows the texel coordinate u·size in float: 1e37·64 > 3.4e38; 512² gave the same rows at 8x the cost
 // a launch), wraps repeat and clamp. Per family and wrap, every result must be finite, the GPU within the

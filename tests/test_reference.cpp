@@ -147,7 +147,7 @@ TEST_CASE("huge-and-nonfinite-uv")
     }
 }
 
-// docs/API.md's degenerate-input table (issue 10 item 6) on the reference, every family, repeat and clamp,
+// docs/API.md's degenerate-input table on the reference, every family, repeat and clamp,
 // a 512² checker (u = 3e38 overflows u·512 in float; the reference reads values past float range as the
 // ±Inf a float holds). tests/test_ewa.cpp runs the same table through `sample` on both backends.
 // - gradients 1e-30 = zero gradients (the finest level);

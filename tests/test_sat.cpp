@@ -273,7 +273,7 @@ glm::dvec4 parallelogram_mean(const Image& image, const Lookup& l, Wrap wrap, in
 // (6) NaN, Inf, zero and huge gradients (and uv) give finite, defined results.
 
 // ---------------------------------------------------------------------------------------------------
-// (7) HDR texels keep 16 bits of their own range: one 65504 texel among 0.3s (issue: the GPU gave 0
+// (7) HDR texels keep 16 bits of their own range: one 65504 texel among 0.3s (a regression guard: the GPU once gave 0
 // where the reference gave 0.3, silently). Each channel is quantised over [lo, lo + span], so the 0.3s
 // are exactly level 0 and any box mean is within 0.5/65535·span (~0.5 here) of the exact float mean,
 // plus float rounding; the GPU is within float rounding of the reference, which averages the same levels.
