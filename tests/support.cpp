@@ -1,6 +1,6 @@
 #include "support.h"
 #include "io/lookups_csv.h"
-#include "vulkan/loader.h"
+#include "vulkan/device.h"
 
 #include <algorithm>
 #include <climits>

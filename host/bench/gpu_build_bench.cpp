@@ -6,14 +6,11 @@
 #include "texture/mip.h"
 #include "texture/sat.h"
 #include "texture/threads.h"
-#include "vulkan/barriers.h"
-#include "vulkan/command_timer.h"
-#include "vulkan/dynamic_texture.h"
-#include "vulkan/frame.h"
+#include "vulkan/memory.h"
+#include "vulkan/timing.h"
 #include "vulkan/gpu_build.h"
 #include "vulkan/render.h"
-#include "vulkan/resources.h"
-#include "vulkan/upload.h"
+#include "vulkan/textures.h"
 #include <algorithm>
 #include <chrono>
 #include <cstring>

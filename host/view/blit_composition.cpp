@@ -1,6 +1,6 @@
 #include "view/blit_composition.h"
 #include "view/viewer.h"
-#include "vulkan/barriers.h"
+#include "vulkan/memory.h"
 #include <algorithm>
 #include <cmath>
 

@@ -1,5 +1,5 @@
 #include "view/compose.h"
-#include "vulkan/pipeline.h"
+#include "vulkan/pipelines.h"
 #include <cstring>
 
 #include "compose_frag.h"

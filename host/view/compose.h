@@ -4,7 +4,7 @@
 // The images live in host-visible buffers the viewer fills with the renderer's pixels.
 #include "texture/image.h"
 #include "vulkan/cleanup.h"
-#include "vulkan/resources.h"
+#include "vulkan/memory.h"
 #include <glm/glm.hpp>
 
 namespace tf {

@@ -2,7 +2,7 @@
 #include "view/viewer.h"
 #include "io/texture_source.h"
 #include "texture/error.h"
-#include "vulkan/device_memory_check.h"
+#include "vulkan/device.h"
 #include "view/frame_log.h"
 #include <cstdio>
 

@@ -1,6 +1,6 @@
 #include "view/scene_images.h"
 #include "reference/scene_cast.h"
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 #include <algorithm>
 #include <chrono>
 

@@ -2,7 +2,7 @@
 // The window's swapchain: images, views, one render pass (the scene's composition, then the UI, in one
 // subpass) and a framebuffer per image. Recreated when the window's size changes; never made at zero extent
 // (a minimised window) — the viewer waits instead.
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 #include <vector>
 
 namespace tf {

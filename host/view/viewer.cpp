@@ -1,8 +1,8 @@
 #include "view/viewer.h"
 #include "io/texture_source.h"
 #include "texture/error.h"
-#include "vulkan/barriers.h"
-#include "vulkan/readback.h"
+#include "vulkan/memory.h"
+#include "vulkan/render.h"
 #include "view/blit_composition.h"
 #include <algorithm>
 #include <cstdio>

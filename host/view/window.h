@@ -1,7 +1,7 @@
 #pragma once
 // The viewer's window: GLFW on X11 with no client API (Vulkan draws into it), and what the window system
 // tells the viewer between frames (size, minimised, files dropped, close).
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 #include <string>
 #include <vector>
 

@@ -3,12 +3,9 @@
 
 #include "harness/config.h"
 #include "texture/error.h"
-#include "vulkan/harness_shaders.h"
-#include "vulkan/harness_spirv.h"
-#include "vulkan/pipeline.h"
-#include "vulkan/render_targets.h"
-#include "vulkan/resource_images.h"
-#include "vulkan/samplers.h"
+#include "vulkan/pipelines.h"
+#include "vulkan/render.h"
+#include "vulkan/textures.h"
 #include <cstring>
 
 namespace tf {

@@ -1,6 +1,6 @@
 // The HARNESS_RESOURCE_UINT build of the harness shaders (generated/harness_uint/, on this object
 // library's include path only).
-#include "vulkan/harness_shaders.h"
+#include "vulkan/pipelines.h"
 #include "texture/error.h"
 
 #include "mesh_frag.h"
