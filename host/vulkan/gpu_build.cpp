@@ -29,14 +29,14 @@ static_assert(sizeof(BuildPush) == HARNESS_BUILD_PUSH_SIZE && sizeof(PackPush) =
 
 void compute_to_compute(VkCommandBuffer cb)
 {
-    memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+    memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT});
 }
 
 void transfer_to_compute(VkCommandBuffer cb)
 {
-    memory_barrier(cb, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+    memory_barrier(cb, {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT});
 }
 
 } // namespace
@@ -200,9 +200,7 @@ SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBu
 void record_sat_layouts(VkCommandBuffer cb, const SatBuildTarget& target)
 {
     for (VkImage image : {target.low.image, target.high.image})
-        image_barrier(cb, image, 1, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0,
-                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+        image_barrier(cb, {.image = image, .from = scope::undefined, .to = scope::compute_read_write});
 }
 
 void record_sat_build(VkCommandBuffer cb, const GpuBuildKernels& kernels, const SatBuildTarget& target)
@@ -225,12 +223,12 @@ void record_sat_build(VkCommandBuffer cb, const GpuBuildKernels& kernels, const 
         vkCmdDispatch(cb, groups[i], 1, 1);
     }
     // The range words to the host (the filters' offset and scale).
-    memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                   VK_PIPELINE_STAGE_TRANSFER_BIT);
+    memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT});
     const VkBufferCopy copy{0, 0, sat_range_words * sizeof(uint32_t)};
     vkCmdCopyBuffer(cb, target.range.buffer, target.readback.buffer, 1, &copy);
-    memory_barrier(cb, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                   VK_PIPELINE_STAGE_HOST_BIT);
+    memory_barrier(cb, {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
 }
 
 namespace {
@@ -440,97 +438,77 @@ void record_gpu_build(VkCommandBuffer cb, GpuBuild& b, Level0 level0)
     const uint32_t levels = uint32_t(t.levels);
     const VkExtent3D extent{uint32_t(t.width), uint32_t(t.height), 1};
     const bool first = level0 != Level0::written;
+    // The images' side before this build: nothing (first build), else the last frame's reads.
+    const BarrierScope previous = first ? scope::undefined : BarrierScope{shader_stages, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     if (level0 == Level0::from_staging) {
-        image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        image_barrier(cb, {.image = b.built.image, .from = scope::undefined, .to = scope::transfer_dst,
+                           .levels = levels});
         VkBufferImageCopy copy{};
         copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         copy.imageExtent = extent;
         vkCmdCopyBufferToImage(cb, b.staging.buffer, b.built.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-        image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+        image_barrier(cb, {.image = b.built.image, .from = scope::transfer_dst, .to = scope::compute_read_write,
+                           .levels = levels});
     } else {
-        memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+        memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
+                           {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT});
     }
     if (b.with_sat)
         for (VkImage image : {b.sat.low.image, b.sat.high.image}) // the last frame's reads before this build's writes
-            image_barrier(cb, image, 1, first ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                          VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-                          first ? VkPipelineStageFlags(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT) : shader_stages, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+            image_barrier(cb, {.image = image, .from = previous, .to = scope::compute_read_write});
     record_mip_build(cb, b.kernels, b.mip);
     if (b.with_sat && !b.in_place && level0 == Level0::from_staging) {
         // The table sums the texels the format stores: level 0 rounded, over the unrounded one the levels
         // were built from (the build's reads done first).
-        image_barrier(cb, b.built.image, 1, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        image_barrier(cb, {.image = b.built.image, .from = scope::compute_read_write, .to = scope::transfer_dst});
         VkBufferImageCopy rounded{};
         rounded.bufferOffset = b.rounded_offset;
         rounded.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         rounded.imageExtent = extent;
         vkCmdCopyBufferToImage(cb, b.staging.buffer, b.built.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &rounded);
-        image_barrier(cb, b.built.image, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+        image_barrier(cb, {.image = b.built.image, .from = scope::transfer_dst,
+                           .to = {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, VK_IMAGE_LAYOUT_GENERAL}});
     }
     if (b.with_sat) {
         // The build's dispatches bind every level writable (the validator counts level 0 as written).
-        memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+        memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
+                           {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT});
         record_sat_build(cb, b.kernels, b.sat);
         for (VkImage image : {b.sat.low.image, b.sat.high.image})
-            image_barrier(cb, image, 1, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                          VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                          shader_stages);
+            image_barrier(cb, {.image = image, .from = scope::compute_write, .to = scope::shader_read});
     }
     if (b.in_place) {
-        image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                      VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                      shader_stages);
+        image_barrier(cb, {.image = b.built.image, .from = scope::compute_write, .to = scope::shader_read,
+                           .levels = levels});
         return;
     }
-    const VkPipelineStageFlags before = first ? VkPipelineStageFlags(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT) : shader_stages;
-    const VkImageLayout was = first ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     if (b.pack) {
         // Level 0 as the format stores it (copied); levels 1.. stored by pack_level, the host's codes.
-        image_barrier(cb, t.chain.image, 1, was, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      before, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_IMAGE_ASPECT_COLOR_BIT, 1, 0);
+        image_barrier(cb, {.image = t.chain.image, .from = previous, .to = scope::transfer_dst});
         VkBufferImageCopy packed{};
         packed.bufferOffset = b.float_bytes;
         packed.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         packed.imageExtent = extent;
         vkCmdCopyBufferToImage(cb, b.staging.buffer, t.chain.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &packed);
-        image_barrier(cb, t.chain.image, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, shader_stages,
-                      VK_IMAGE_ASPECT_COLOR_BIT, 1, 0);
+        image_barrier(cb, {.image = t.chain.image, .from = scope::transfer_dst, .to = scope::shader_read});
         if (levels > 1) {
-            image_barrier(cb, t.chain.image, levels - 1, was, VK_IMAGE_LAYOUT_GENERAL, 0, VK_ACCESS_SHADER_WRITE_BIT,
-                          before, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_IMAGE_ASPECT_COLOR_BIT, 1, 1);
-            memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+            image_barrier(cb, {.image = t.chain.image, .from = previous, .to = scope::compute_write,
+                               .levels = levels - 1, .base_level = 1});
+            memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
+                               {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT});
             record_pack_levels(cb, b.kernels, b.pack_target, b.mip);
-            image_barrier(cb, t.chain.image, levels - 1, VK_IMAGE_LAYOUT_GENERAL,
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_SHADER_WRITE_BIT,
-                          VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, shader_stages,
-                          VK_IMAGE_ASPECT_COLOR_BIT, 1, 1);
+            image_barrier(cb, {.image = t.chain.image, .from = scope::compute_write, .to = scope::shader_read,
+                               .levels = levels - 1, .base_level = 1});
         }
-        image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                      VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                      shader_stages);
+        image_barrier(cb, {.image = b.built.image, .from = scope::compute_write, .to = scope::shader_read,
+                           .levels = levels});
         return;
     }
     // No integer stores: level 0 as the format stores it; every other level blitted (1:1, nearest: a format
     // conversion with the device's rounding).
-    image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                  VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                  VK_PIPELINE_STAGE_TRANSFER_BIT);
-    image_barrier(cb, t.chain.image, levels,
-                  first ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
-                  first ? VkPipelineStageFlags(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT) : shader_stages, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    image_barrier(cb, {.image = b.built.image, .from = scope::compute_write, .to = scope::transfer_src,
+                       .levels = levels});
+    image_barrier(cb, {.image = t.chain.image, .from = previous, .to = scope::transfer_dst, .levels = levels});
     VkBufferImageCopy packed{};
     packed.bufferOffset = b.float_bytes;
     packed.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
@@ -545,13 +523,12 @@ void record_gpu_build(VkCommandBuffer cb, GpuBuild& b, Level0 level0)
         vkCmdBlitImage(cb, b.built.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, t.chain.image,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
     }
-    image_barrier(cb, t.chain.image, levels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, shader_stages);
+    image_barrier(cb, {.image = t.chain.image, .from = scope::transfer_dst, .to = scope::shader_read,
+                       .levels = levels});
     // Leave `built` as an in-place build leaves its image, so a rebuild starts from one layout.
-    image_barrier(cb, b.built.image, levels, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                  VK_ACCESS_TRANSFER_READ_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+    image_barrier(cb, {.image = b.built.image, .from = scope::transfer_src,
+                       .to = {VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+                       .levels = levels});
 }
 
 void finish_gpu_build(GpuBuild& b, const std::string& texture_name)
@@ -622,12 +599,8 @@ void record_dynamic_frame(VkCommandBuffer cb, DynamicTexture& d, int frame)
 {
     const uint32_t levels = uint32_t(d.build.texture.levels);
     // The last frame's reads (fragment or compute) before this frame's writes; the first frame discards.
-    image_barrier(cb, d.build.built.image, levels,
-                  d.first ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                  d.first ? 0 : VK_ACCESS_SHADER_READ_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-                  d.first ? VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT
-                          : VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+    image_barrier(cb, {.image = d.build.built.image, .from = d.first ? scope::undefined : scope::shader_read,
+                       .to = scope::compute_read_write, .levels = levels});
     vkCmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_COMPUTE, d.pipeline);
     vkCmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_COMPUTE, d.layout, 0, 1, &d.set, 0, nullptr);
     const GeneratorPush push{d.size, frame};

@@ -197,29 +197,25 @@ void destroy_image(const VulkanContext& context, GpuImage& image)
     image = GpuImage{};
 }
 
-void image_barrier(VkCommandBuffer command_buffer, VkImage image, uint32_t levels, VkImageLayout from,
-                   VkImageLayout to, VkAccessFlags src_access, VkAccessFlags dst_access,
-                   VkPipelineStageFlags src_stage, VkPipelineStageFlags dst_stage, VkImageAspectFlags aspect,
-                   uint32_t layers, uint32_t base_level)
+void image_barrier(VkCommandBuffer command_buffer, const ImageBarrier& b)
 {
     VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    barrier.srcAccessMask = src_access;
-    barrier.dstAccessMask = dst_access;
-    barrier.oldLayout = from;
-    barrier.newLayout = to;
+    barrier.srcAccessMask = b.from.access;
+    barrier.dstAccessMask = b.to.access;
+    barrier.oldLayout = b.from.layout;
+    barrier.newLayout = b.to.layout;
     barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image;
-    barrier.subresourceRange = {aspect, base_level, levels, 0, layers};
-    vkCmdPipelineBarrier(command_buffer, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+    barrier.image = b.image;
+    barrier.subresourceRange = {b.aspect, b.base_level, b.levels, 0, b.layers};
+    vkCmdPipelineBarrier(command_buffer, b.from.stage, b.to.stage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 
-void memory_barrier(VkCommandBuffer command_buffer, VkAccessFlags src_access, VkAccessFlags dst_access,
-                    VkPipelineStageFlags src_stage, VkPipelineStageFlags dst_stage)
+void memory_barrier(VkCommandBuffer command_buffer, BarrierScope from, BarrierScope to)
 {
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    barrier.srcAccessMask = src_access;
-    barrier.dstAccessMask = dst_access;
-    vkCmdPipelineBarrier(command_buffer, src_stage, dst_stage, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+    barrier.srcAccessMask = from.access;
+    barrier.dstAccessMask = to.access;
+    vkCmdPipelineBarrier(command_buffer, from.stage, to.stage, 0, 1, &barrier, 0, nullptr, 0, nullptr);
 }
 
 } // namespace tf

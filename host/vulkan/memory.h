@@ -69,14 +69,43 @@ GpuImage create_image(const VulkanContext& context, VkFormat format, uint32_t wi
 void destroy_image(const VulkanContext& context, GpuImage& image); // also a half-made or empty one
 
 // Pipeline barriers, the two shapes the layer records: an image's layout change and a global memory
-// dependency.
-void image_barrier(VkCommandBuffer command_buffer, VkImage image, uint32_t levels, VkImageLayout from,
-                   VkImageLayout to, VkAccessFlags src_access, VkAccessFlags dst_access,
-                   VkPipelineStageFlags src_stage, VkPipelineStageFlags dst_stage,
-                   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT, uint32_t layers = 1,
-                   uint32_t base_level = 0); // levels [base_level, base_level + levels)
+// dependency, each described by its two sides, written with designated initialisers:
+//   image_barrier(cb, {.image = image, .from = scope::transfer_dst, .to = scope::shader_read, .levels = levels});
+//   image_barrier(cb, {.image = image, .from = {VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_IMAGE_LAYOUT_UNDEFINED},
+//                      .to = scope::transfer_dst});
+// One side of a barrier: the stages and accesses that come before it (from) or wait for it (to), and the
+// image's layout on that side (images only).
+struct BarrierScope {
+    VkPipelineStageFlags stage = VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT;
+    VkAccessFlags access = 0;
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+};
 
-void memory_barrier(VkCommandBuffer command_buffer, VkAccessFlags src_access, VkAccessFlags dst_access,
-                    VkPipelineStageFlags src_stage, VkPipelineStageFlags dst_stage);
+struct ImageBarrier {
+    VkImage image = VK_NULL_HANDLE;
+    BarrierScope from, to;
+    uint32_t levels = 1, base_level = 0; // levels [base_level, base_level + levels)
+    uint32_t layers = 1;
+    VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+};
+
+// The sides the layer's barriers name most. undefined: nothing before, contents not kept; shader_read: read
+// by the harness's fragment and compute shaders.
+namespace scope {
+constexpr BarrierScope undefined{};
+constexpr BarrierScope transfer_dst{VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
+constexpr BarrierScope transfer_src{VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+                                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+constexpr BarrierScope compute_write{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                                     VK_IMAGE_LAYOUT_GENERAL};
+constexpr BarrierScope compute_read_write{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                          VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_IMAGE_LAYOUT_GENERAL};
+constexpr BarrierScope shader_read{VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                   VK_ACCESS_SHADER_READ_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+} // namespace scope
+
+void image_barrier(VkCommandBuffer command_buffer, const ImageBarrier& barrier);
+void memory_barrier(VkCommandBuffer command_buffer, BarrierScope from, BarrierScope to);
 
 } // namespace tf

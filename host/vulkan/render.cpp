@@ -34,19 +34,25 @@ RenderTargets create_render_targets(const VulkanContext& context, uint32_t width
     return t;
 }
 
+// The color target while the pass draws into it.
+constexpr BarrierScope color_attachment{VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+
 void record_targets_for_drawing(VkCommandBuffer cb, const RenderTargets& targets)
 {
     // UNDEFINED: the previous frame's content is not needed (the whole target is redrawn or cleared).
-    image_barrier(cb, targets.color.image, 1, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                  VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT);
+    image_barrier(cb, {.image = targets.color.image,
+                       .from = {VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                VK_ACCESS_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED},
+                       .to = color_attachment});
     if (targets.depth.image)
-        image_barrier(cb, targets.depth.image, 1, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
-                      VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
-                      VK_IMAGE_ASPECT_DEPTH_BIT);
+        image_barrier(cb, {.image = targets.depth.image,
+                           .from = {VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED},
+                           .to = {VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
+                                  VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL},
+                           .aspect = VK_IMAGE_ASPECT_DEPTH_BIT});
 }
 
 void record_begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, const VkClearColorValue* background)
@@ -75,15 +81,13 @@ void record_begin_rendering(VkCommandBuffer cb, const RenderTargets& targets, co
 
 void record_targets_for_readback(VkCommandBuffer cb, const RenderTargets& targets)
 {
-    image_barrier(cb, targets.color.image, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                  VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_PIPELINE_STAGE_TRANSFER_BIT);
+    image_barrier(cb, {.image = targets.color.image, .from = color_attachment, .to = scope::transfer_src});
 }
 
 void record_host_read(VkCommandBuffer cb, VkPipelineStageFlags stage, VkAccessFlags access)
 {
-    memory_barrier(cb, access, VK_ACCESS_HOST_READ_BIT, stage, VK_PIPELINE_STAGE_HOST_BIT);
+    memory_barrier(cb, {stage, access},
+                       {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
 }
 
 void record_target_readback(VkCommandBuffer cb, const RenderTargets& targets)
@@ -106,15 +110,15 @@ std::vector<unsigned char> read_image_level(const VulkanContext& context, VkImag
     const VkAccessFlags writes = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
     const VkPipelineStageFlags stages = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
     submit_and_wait(context, [&](VkCommandBuffer cb) {
-        image_barrier(cb, image, 1, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, writes, VK_ACCESS_TRANSFER_READ_BIT,
-                      stages, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_IMAGE_ASPECT_COLOR_BIT, 1, level);
+        image_barrier(cb, {.image = image, .from = {stages, writes, layout}, .to = scope::transfer_src,
+                           .base_level = level});
         VkBufferImageCopy copy{};
         copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
         copy.imageExtent = {width, height, 1};
         vkCmdCopyImageToBuffer(cb, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.buffer, 1, &copy);
-        image_barrier(cb, image, 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, VK_ACCESS_TRANSFER_READ_BIT,
-                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, stages,
-                      VK_IMAGE_ASPECT_COLOR_BIT, 1, level);
+        image_barrier(cb, {.image = image, .from = scope::transfer_src,
+                           .to = {stages, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, layout},
+                           .base_level = level});
         record_host_read(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     });
     std::vector<unsigned char> out(bytes);
@@ -347,8 +351,8 @@ void record_dispatch(const GpuRenderer& r, VkCommandBuffer cb, VkQueryPool times
 {
     bind_pass(cb, VK_PIPELINE_BIND_POINT_COMPUTE, r.pipeline, r.pass, r.push);
     // The previous frame's writes to the pixel buffer come first (write after write).
-    memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+    memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT});
     if (timestamps)
         vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps, query);
     vkCmdDispatch(cb, (r.width + HARNESS_RENDER_TILE - 1) / HARNESS_RENDER_TILE, (r.height + HARNESS_RENDER_TILE - 1) / HARNESS_RENDER_TILE, 1);
@@ -389,8 +393,8 @@ void record_frame(const GpuRenderer& r, VkCommandBuffer cb, VkQueryPool timestam
 void record_frame_readback(const GpuRenderer& r, VkCommandBuffer cb)
 {
     if (r.kind == RenderKind::compute) {
-        memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                       VK_PIPELINE_STAGE_TRANSFER_BIT);
+        memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
+                           {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT});
         const VkBufferCopy copy{0, 0, r.pixels.size};
         vkCmdCopyBuffer(cb, r.pixels.buffer, r.pixels_readback.buffer, 1, &copy);
         record_host_read(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);

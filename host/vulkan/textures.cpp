@@ -42,15 +42,12 @@ void copy_level(const VulkanContext& context, const GpuImage& g, uint32_t levels
     copy.imageExtent = {extent.width, extent.height, 1};
     submit_and_wait(context, [&](VkCommandBuffer cb) {
         if (step.first)
-            image_barrier(cb, g.image, levels, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                          VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                          VK_PIPELINE_STAGE_TRANSFER_BIT);
+            image_barrier(cb, {.image = g.image, .from = scope::undefined, .to = scope::transfer_dst,
+                               .levels = levels});
         vkCmdCopyBufferToImage(cb, staging.buffer, g.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
         if (step.last)
-            image_barrier(cb, g.image, levels, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                          VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+            image_barrier(cb, {.image = g.image, .from = scope::transfer_dst, .to = scope::shader_read,
+                               .levels = levels});
     });
 }
 
@@ -287,10 +284,8 @@ void upload_layers(const VulkanContext& context, const GpuImage& g, const std::v
     Cleanup cleanup;
     cleanup.add([&] { destroy_buffer(context, staging); });
     submit_and_wait(context, [&](VkCommandBuffer cb) {
-        image_barrier(cb, g.image, VK_REMAINING_MIP_LEVELS, VK_IMAGE_LAYOUT_UNDEFINED,
-                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, aspect,
-                      VK_REMAINING_ARRAY_LAYERS);
+        image_barrier(cb, {.image = g.image, .from = scope::undefined, .to = scope::transfer_dst,
+                           .levels = VK_REMAINING_MIP_LEVELS, .layers = VK_REMAINING_ARRAY_LAYERS, .aspect = aspect});
     });
     for (size_t layer = 0; layer < chains.size(); ++layer)
         for (size_t l = 0; l < chains[layer].levels.size(); ++l) {
@@ -311,11 +306,8 @@ void upload_layers(const VulkanContext& context, const GpuImage& g, const std::v
             });
         }
     submit_and_wait(context, [&](VkCommandBuffer cb) {
-        image_barrier(cb, g.image, VK_REMAINING_MIP_LEVELS, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT,
-                      VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, aspect,
-                      VK_REMAINING_ARRAY_LAYERS);
+        image_barrier(cb, {.image = g.image, .from = scope::transfer_dst, .to = scope::shader_read,
+                           .levels = VK_REMAINING_MIP_LEVELS, .layers = VK_REMAINING_ARRAY_LAYERS, .aspect = aspect});
     });
 }
 
