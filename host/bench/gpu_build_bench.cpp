@@ -124,12 +124,9 @@ GpuBuildRow run_side(const VulkanContext& context, int side, int repeats, FrameT
     const GpuBuildKernels kernels = create_gpu_build_kernels(context, cleanup);
     const MipBuildTarget mip = create_mip_build_target(context, kernels, chain.image, side, side, cleanup);
     SatBuildTarget sat;
-    cleanup.add([&] {
-        destroy_image(context, sat.low);
-        destroy_image(context, sat.high);
-    });
     if (row.sat)
-        sat = create_sat_build_target(context, kernels, mip.level_views[0], side, side, cleanup);
+        sat = create_sat_build_target(context, kernels, mip.level_views[0], create_sat_images(context, side, side, cleanup),
+                                      side, side, cleanup);
     {
         Buffer staging = create_host_buffer(context, level0.texels.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         Cleanup staging_cleanup;

@@ -37,22 +37,6 @@ RenderOptions half_render(const ViewState& s, const std::string& view, const Sam
 
 bool needs_sat(const ViewState& s) { return needs_sat(s.a.options.filter) || (s.b && needs_sat(s.b->options.filter)); }
 
-void destroy_viewer(Viewer& v)
-{
-    if (v.context.device)
-        vkDeviceWaitIdle(v.context.device);
-    destroy_imgui_layer(v.context, v.imgui);
-    destroy_compose_pass(v.compose);
-    destroy_scene_images(v.images);
-    destroy_frame_objects(v);
-    destroy_swapchain(v.context, v.swapchain);
-    if (v.surface)
-        vkDestroySurfaceKHR(v.context.instance, v.surface, nullptr);
-    destroy_window(v.window);
-    v.window = nullptr;
-    destroy_context(v.context);
-}
-
 } // namespace
 
 std::string apply_state(Viewer& v, const ViewState& requested)
@@ -136,31 +120,36 @@ namespace {
 // Everything between opening the display and tearing it all down again.
 void view_until_closed(const ViewOptions& options)
 {
+    init_window_system(); // no display: one sentence, before any work
     Viewer v;
     v.options = options;
-    struct Teardown {
-        Viewer& v;
-        ~Teardown() { destroy_viewer(v); }
-    } teardown{v};
+    Cleanup teardown; // each of the viewer's objects undone, in reverse, however this is left
+    teardown.add([] { terminate_window_system(); });
 
     ContextOptions device = options.device;
     device.instance_extensions = window_instance_extensions();
     device.swapchain = true;
     v.context = create_context(device);
+    teardown.add([&] { destroy_context(v.context); });
     v.state.width = v.scene_width = options.state.width;
     v.state.height = v.scene_height = options.state.height;
     v.images.context = &v.context;
+    teardown.add([&] { destroy_scene_images(v.images); });
     apply_state(v, options.state); // the texture is checked and loaded before the window opens
 
     v.window = create_window(options.state.width, options.state.height, view_title(v));
+    teardown.add([&] { destroy_window(v.window); });
     v.surface = create_window_surface(v.context, *v.window);
+    teardown.add([&] { vkDestroySurfaceKHR(v.context.instance, v.surface, nullptr); });
     check_present_support(v.context, v.surface);
     int width = 0, height = 0;
     framebuffer_size(*v.window, width, height);
+    teardown.add([&] { destroy_swapchain(v.context, v.swapchain); }); // also a half-made one
     create_swapchain(v.context, v.surface, uint32_t(std::max(width, 2)), uint32_t(std::max(height, 2)), v.swapchain);
-    create_compose_pass(v.context, v.swapchain.render_pass, v.compose);
-    create_imgui_layer(v.context, *v.window, v.swapchain, v.imgui);
-    create_frame_objects(v);
+    create_compose_pass(v.context, v.swapchain.render_pass, v.compose, teardown);
+    create_imgui_layer(v.context, *v.window, v.swapchain, teardown);
+    create_frame_objects(v, teardown);
+    teardown.add([&] { vkDeviceWaitIdle(v.context.device); }); // first: nothing above still in use
 
     ScriptRun script;
     FrameLog log(options.frame_log);
@@ -210,7 +199,6 @@ void view_until_closed(const ViewOptions& options)
 
 int run_viewer(const ViewOptions& options)
 {
-    init_window_system(); // no display: one sentence, before any work
     view_until_closed(options);
     // After the teardown, so that a message from destroying the window's objects counts too.
     if (validation_message_count() > 0)

@@ -131,8 +131,7 @@ void create_swapchain(const VulkanContext& context, VkSurfaceKHR surface, uint32
     VkSwapchainKHR handle = VK_NULL_HANDLE;
     TF_VK(vkCreateSwapchainKHR(context.device, &info, nullptr, &handle));
     destroy_image_objects(context, s);
-    if (s.handle)
-        vkDestroySwapchainKHR(context.device, s.handle, nullptr);
+    vkDestroySwapchainKHR(context.device, s.handle, nullptr); // the old one, if any
     s.handle = handle;
     if (s.render_pass && s.format != format.format) {
         vkDestroyRenderPass(context.device, s.render_pass, nullptr);
@@ -177,12 +176,9 @@ void create_swapchain(const VulkanContext& context, VkSurfaceKHR surface, uint32
 void destroy_swapchain(const VulkanContext& context, Swapchain& s)
 {
     destroy_image_objects(context, s);
-    if (s.handle)
-        vkDestroySwapchainKHR(context.device, s.handle, nullptr);
-    if (s.render_pass)
-        vkDestroyRenderPass(context.device, s.render_pass, nullptr);
-    if (s.load_pass)
-        vkDestroyRenderPass(context.device, s.load_pass, nullptr);
+    vkDestroySwapchainKHR(context.device, s.handle, nullptr);
+    vkDestroyRenderPass(context.device, s.render_pass, nullptr);
+    vkDestroyRenderPass(context.device, s.load_pass, nullptr);
     s = Swapchain{};
 }
 

@@ -63,32 +63,25 @@ void take_dropped_files(Viewer& v)
     v.controls.message = apply_state(v, next);
 }
 
-void create_frame_objects(Viewer& v)
+void create_frame_objects(Viewer& v, Cleanup& cleanup)
 {
+    VkDevice device = v.context.device;
     VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    TF_VK(vkCreateSemaphore(v.context.device, &semaphore, nullptr, &v.acquired));
+    TF_VK(vkCreateSemaphore(device, &semaphore, nullptr, &v.acquired));
+    cleanup.add([device, s = v.acquired] { vkDestroySemaphore(device, s, nullptr); });
     VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    TF_VK(vkCreateFence(v.context.device, &fence, nullptr, &v.frame_done));
+    TF_VK(vkCreateFence(device, &fence, nullptr, &v.frame_done));
+    cleanup.add([device, f = v.frame_done] { vkDestroyFence(device, f, nullptr); });
     VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pool.queueFamilyIndex = v.context.queue_family;
-    TF_VK(vkCreateCommandPool(v.context.device, &pool, nullptr, &v.command_pool));
+    TF_VK(vkCreateCommandPool(device, &pool, nullptr, &v.command_pool));
+    cleanup.add([device, p = v.command_pool] { vkDestroyCommandPool(device, p, nullptr); }); // frees the buffer
     VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     allocate.commandPool = v.command_pool;
     allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     allocate.commandBufferCount = 1;
-    TF_VK(vkAllocateCommandBuffers(v.context.device, &allocate, &v.command_buffer));
-}
-
-void destroy_frame_objects(Viewer& v)
-{
-    VkDevice d = v.context.device;
-    if (v.command_pool)
-        vkDestroyCommandPool(d, v.command_pool, nullptr); // frees the command buffer
-    if (v.frame_done)
-        vkDestroyFence(d, v.frame_done, nullptr);
-    if (v.acquired)
-        vkDestroySemaphore(d, v.acquired, nullptr);
+    TF_VK(vkAllocateCommandBuffers(device, &allocate, &v.command_buffer));
 }
 
 namespace {
@@ -97,8 +90,7 @@ void recreate_swapchain(Viewer& v, int width, int height)
 {
     vkDeviceWaitIdle(v.context.device);
     create_swapchain(v.context, v.surface, uint32_t(width), uint32_t(height), v.swapchain);
-    if (v.imgui.started)
-        imgui_swapchain_recreated(v.swapchain);
+    imgui_swapchain_recreated(v.swapchain);
     v.window->resized = false;
     int w = int(v.swapchain.extent.width) & ~1, h = int(v.swapchain.extent.height) & ~1;
     if (w != v.scene_width || h != v.scene_height) {

@@ -71,7 +71,6 @@ struct Viewer {
     VkSurfaceKHR surface = VK_NULL_HANDLE;
     Swapchain swapchain;
     ComposePass compose;
-    ImGuiLayer imgui;
     SceneImages images;
     VkSemaphore acquired = VK_NULL_HANDLE;
     VkFence frame_done = VK_NULL_HANDLE;
@@ -113,8 +112,8 @@ void upload_compose_images(Viewer& viewer); // the halves' images into the compo
 bool moving_now(const Viewer& viewer);      // the camera moved within the settle time, or it or the texture animates
 bool images_complete(const Viewer& viewer); // every half at full size with all its samples
 void take_dropped_files(Viewer& viewer);    // a file dropped onto the window becomes the texture
-void create_frame_objects(Viewer& viewer);  // the acquire semaphore, the frame fence, the command buffer
-void destroy_frame_objects(Viewer& viewer);
+// The acquire semaphore, the frame fence, the command pool and buffer; destroyed by `cleanup`.
+void create_frame_objects(Viewer& viewer, Cleanup& cleanup);
 
 // screenshot.cpp: the frame just presented (the scene alone, or with_ui the whole window) to PNG, and beside a
 // scene screenshot PATH.txt (the texfilter render lines) and PATH.json (the state, for --state). Refused,

@@ -138,8 +138,7 @@ void record_mip_build(VkCommandBuffer cb, const GpuBuildKernels& kernels, const 
     }
 }
 
-SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBuildKernels& kernels,
-                                       VkImageView level0_view, int width, int height, Cleanup& cleanup)
+SatImages create_sat_images(const VulkanContext& context, int width, int height, Cleanup& cleanup)
 {
     if (width < 1 || height < 1 || width > sat_max_dimension || height > sat_max_dimension)
         throw Error("GPU summed-area table: texture " + std::to_string(width) + "x" + std::to_string(height) +
@@ -149,18 +148,25 @@ SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBu
         throw Error("the summed-area table of a " + std::to_string(width) + "x" + std::to_string(height) +
                     " texture needs one more texel a side than maxImageDimension2D = " +
                     std::to_string(context.info.max_image_dimension_2d));
+    const uint32_t tw = uint32_t(width) + 1, th = uint32_t(height) + 1;
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    SatImages images;
+    images.low = create_image(context, VK_FORMAT_R32G32B32A32_UINT, tw, th, 1, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+    cleanup.add([&context, image = images.low]() mutable { destroy_image(context, image); });
+    images.high = create_image(context, VK_FORMAT_R32_UINT, tw, th, 1, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+    cleanup.add([&context, image = images.high]() mutable { destroy_image(context, image); });
+    return images;
+}
+
+SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBuildKernels& kernels,
+                                       VkImageView level0_view, const SatImages& images, int width, int height,
+                                       Cleanup& cleanup)
+{
     SatBuildTarget t;
     t.width = width;
     t.height = height;
-    const uint32_t tw = uint32_t(width) + 1, th = uint32_t(height) + 1;
-    const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    Cleanup on_failure; // the images are the caller's once the target is whole
-    on_failure.add([&] {
-        destroy_image(context, t.low);
-        destroy_image(context, t.high);
-    });
-    t.low = create_image(context, VK_FORMAT_R32G32B32A32_UINT, tw, th, 1, usage, VK_IMAGE_ASPECT_COLOR_BIT);
-    t.high = create_image(context, VK_FORMAT_R32_UINT, tw, th, 1, usage, VK_IMAGE_ASPECT_COLOR_BIT);
+    t.low = images.low;
+    t.high = images.high;
     const VkDeviceSize range_bytes = sat_range_words * sizeof(uint32_t);
     t.range = create_device_buffer(context, range_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT |
@@ -171,9 +177,9 @@ SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBu
     t.set = allocate_set(context, kernels.sat_set_layout,
                          {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 3}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}}, t.pool,
                          cleanup);
-    const VkDescriptorImageInfo images[3] = {{VK_NULL_HANDLE, level0_view, VK_IMAGE_LAYOUT_GENERAL},
-                                             {VK_NULL_HANDLE, t.low.view, VK_IMAGE_LAYOUT_GENERAL},
-                                             {VK_NULL_HANDLE, t.high.view, VK_IMAGE_LAYOUT_GENERAL}};
+    const VkDescriptorImageInfo views[3] = {{VK_NULL_HANDLE, level0_view, VK_IMAGE_LAYOUT_GENERAL},
+                                            {VK_NULL_HANDLE, t.low.view, VK_IMAGE_LAYOUT_GENERAL},
+                                            {VK_NULL_HANDLE, t.high.view, VK_IMAGE_LAYOUT_GENERAL}};
     const VkDescriptorBufferInfo range{t.range.buffer, 0, range_bytes};
     VkWriteDescriptorSet writes[4];
     const uint32_t bindings[3] = {HARNESS_BUILD_BINDING_LEVEL0, HARNESS_BUILD_BINDING_SAT_LOW,
@@ -185,7 +191,7 @@ SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBu
         if (i < 3) {
             writes[i].dstBinding = bindings[i];
             writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-            writes[i].pImageInfo = &images[i];
+            writes[i].pImageInfo = &views[i];
         } else {
             writes[i].dstBinding = HARNESS_BUILD_BINDING_RANGE;
             writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -193,7 +199,6 @@ SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBu
         }
     }
     vkUpdateDescriptorSets(context.device, 4, writes, 0, nullptr);
-    on_failure.dismiss();
     return t;
 }
 
@@ -369,13 +374,12 @@ GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, in
     b.with_sat = with_sat;
     b.objects = std::make_shared<Cleanup>();
     Cleanup& objects = *b.objects;
-    Cleanup on_early_failure;
-    on_early_failure.add([&] { b.objects.reset(); });
+    Cleanup on_failure; // a half-made build undone: its texture's images and its objects
+    on_failure.add([&] { destroy_gpu_build(context, b); });
     b.kernels = create_gpu_build_kernels(context, objects);
     b.pack = !b.in_place && pack_supported(context, b.kernels, format);
     if (!b.in_place && !b.pack)
         check_features(context, vk_format(format), VK_FORMAT_FEATURE_BLIT_DST_BIT, "blit into " + to_string(format) + " images");
-    on_early_failure.dismiss();
     GpuTexture& t = b.texture;
     t.format = format;
     t.filterable = format_filterable(context, format);
@@ -383,8 +387,6 @@ GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, in
     t.height = h;
     t.levels = mip_level_count(w, h);
     const uint32_t levels = uint32_t(t.levels);
-    Cleanup on_failure;
-    on_failure.add([&] { destroy_gpu_build(context, b); });
     b.built = create_image(context, VK_FORMAT_R32G32B32A32_SFLOAT, uint32_t(w), uint32_t(h), levels,
                            gpu_build_chain_usage, VK_IMAGE_ASPECT_COLOR_BIT);
     if (b.in_place) {
@@ -400,9 +402,12 @@ GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, in
     if (b.pack)
         b.pack_target = create_pack_target(context, b.kernels, b.mip, t.chain.image, format, objects);
     if (with_sat) {
-        b.sat = create_sat_build_target(context, b.kernels, b.mip.level_views[0], w, h, objects);
-        t.sat_low = b.sat.low; // the texture's from here on
-        t.sat_high = b.sat.high;
+        Cleanup texture_images; // the texture's from here on (destroy_texture)
+        const SatImages images = create_sat_images(context, w, h, texture_images);
+        texture_images.dismiss();
+        t.sat_low = images.low;
+        t.sat_high = images.high;
+        b.sat = create_sat_build_target(context, b.kernels, b.mip.level_views[0], images, w, h, objects);
     } else {
         upload_empty_sat(context, t);
     }
@@ -548,14 +553,12 @@ GpuTexture upload_gpu_built_texture(const VulkanContext& context, const Image& l
                                     TextureFormat format)
 {
     GpuBuild b = prepare_gpu_build(context, &level0, level0.width, level0.height, with_sat, format);
-    Cleanup on_failure;
-    on_failure.add([&] { destroy_gpu_build(context, b); });
+    Cleanup cleanup;
+    cleanup.add([&] { destroy_gpu_build(context, b); });
     submit_and_wait(context, [&](VkCommandBuffer cb) { record_gpu_build(cb, b, Level0::from_staging); });
     finish_gpu_build(b);
     GpuTexture t = b.texture;
-    b.texture = GpuTexture{}; // handed on
-    b.objects.reset();
-    on_failure.dismiss();
+    b.texture = GpuTexture{}; // handed on: the build's objects go, its images stay
     return t;
 }
 
@@ -575,8 +578,7 @@ DynamicTexture create_dynamic_texture(const VulkanContext& context, int size)
     d.build = prepare_gpu_build(context, nullptr, size, size, false, TextureFormat::rgba32f);
     Cleanup on_failure;
     on_failure.add([&] { destroy_dynamic_texture(context, d); });
-    d.objects = std::make_shared<Cleanup>();
-    Cleanup& objects = *d.objects;
+    Cleanup& objects = *d.build.objects; // the generator's objects go with the build's
     d.set_layout = create_set_layout(context, {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}},
                                      objects);
     d.layout = create_push_layout(context, d.set_layout, sizeof(GeneratorPush), objects);
@@ -612,7 +614,6 @@ void record_dynamic_frame(VkCommandBuffer cb, DynamicTexture& d, int frame)
 
 void destroy_dynamic_texture(const VulkanContext& context, DynamicTexture& d)
 {
-    d.objects.reset();
     destroy_gpu_build(context, d.build);
     d = DynamicTexture{};
 }

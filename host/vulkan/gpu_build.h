@@ -62,8 +62,16 @@ MipBuildTarget create_mip_build_target(const VulkanContext& context, const GpuBu
 // After: levels 1.. written by compute shaders (the caller's barrier makes them visible to its reads).
 void record_mip_build(VkCommandBuffer command_buffer, const GpuBuildKernels& kernels, const MipBuildTarget& target);
 
-// The two table images (RGBA32UI low words, R32UI high bytes; storage + sampled), the range words and the
-// descriptor set of a SAT build reading `level0_view` (a storage view of an RGBA32F level 0, GENERAL).
+// The two table images of a width x height texture (RGBA32UI low words, R32UI high bytes, one texel more a
+// side; storage + sampled). Throws tf::Error for a side outside 1..sat_max_dimension or beyond the device's
+// maxImageDimension2D. Destroyed by `cleanup` (dismiss it to hand them on to a GpuTexture).
+struct SatImages {
+    GpuImage low, high;
+};
+SatImages create_sat_images(const VulkanContext& context, int width, int height, Cleanup& cleanup);
+
+// The range words and the descriptor set of a SAT build reading `level0_view` (a storage view of an RGBA32F
+// level 0, GENERAL) into the images of create_sat_images (low and high: copies, not owned).
 struct SatBuildTarget {
     int width = 0, height = 0;
     GpuImage low, high;
@@ -72,10 +80,10 @@ struct SatBuildTarget {
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
 };
-// Throws tf::Error for a side outside 1..sat_max_dimension. Everything but the two images goes with the
-// cleanup; the images are the caller's (destroy_image, or hand them on to a GpuTexture).
+// Everything made is destroyed by `cleanup`.
 SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBuildKernels& kernels,
-                                       VkImageView level0_view, int width, int height, Cleanup& cleanup);
+                                       VkImageView level0_view, const SatImages& images, int width, int height,
+                                       Cleanup& cleanup);
 
 // Before: level 0 written and visible to compute-shader reads, low and high in GENERAL layout (as
 // record_sat_layouts leaves them). After: both tables written by compute shaders, and the range words
@@ -128,7 +136,9 @@ struct GpuBuild {
     Buffer staging;        // level 0 as RGBA32F, then packed in the format (no staging without level 0)
     size_t float_bytes = 0;    // staging: level 0 as given at 0, packed at float_bytes,
     size_t rounded_offset = 0; // and rounded to the format (what the table sums) here
-    std::shared_ptr<Cleanup> objects; // the build's own objects (not texture's images)
+    // The build's own objects (not the texture's images, which destroy_texture destroys), and what a user of
+    // the build adds (a dynamic texture's generator): destroyed together by destroy_gpu_build.
+    std::shared_ptr<Cleanup> objects;
 };
 
 // level0: uploaded by the first record_gpu_build (null: the caller writes level 0 of `built` itself, in
@@ -167,8 +177,7 @@ struct DynamicTexture {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
     VkDescriptorPool pool = VK_NULL_HANDLE;
-    VkDescriptorSet set = VK_NULL_HANDLE;
-    std::shared_ptr<Cleanup> objects; // the generator's objects
+    VkDescriptorSet set = VK_NULL_HANDLE; // the generator's objects: in build.objects
 };
 
 // size x size (1..16384, the device's limits). No summed-area table: its range is read back after a
