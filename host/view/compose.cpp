@@ -80,7 +80,7 @@ void set_compose_image(ComposePass& p, ComposeImage which, const Image& image)
     Buffer& b = p.images[int(which)];
     const VkDeviceSize bytes = VkDeviceSize(image.width) * image.height * sizeof(glm::vec4);
     if (bytes > b.size) {
-        vkDeviceWaitIdle(p.context->device); // the last frame may still read the old buffer
+        TF_VK(vkDeviceWaitIdle(p.context->device)); // the last frame may still read the old buffer
         Buffer grown = create_host_buffer(*p.context, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         destroy_buffer(*p.context, b);
         b = grown;

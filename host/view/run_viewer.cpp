@@ -39,7 +39,7 @@ bool needs_sat(const ViewState& s) { return needs_sat(s.a.options.filter) || (s.
 
 } // namespace
 
-std::string apply_state(Viewer& v, const ViewState& requested)
+void apply_state(Viewer& v, const ViewState& requested)
 {
     SceneImages& im = v.images;
     ViewState next = requested;
@@ -54,30 +54,20 @@ std::string apply_state(Viewer& v, const ViewState& requested)
     const bool first = im.chain.levels.empty();
     if (!is_dynamic_texture(next.texture))
         next.texture.texture_frame = 0; // only the dynamic texture has frames
-    if (rebuilt_on_device(next.texture) && needs_sat(next)) {
-        const std::string problem = "the dynamic texture is rebuilt on the device every frame, without a summed-area "
-                                    "table: sat filters need a static texture (--build cpu, or another texture)";
-        if (first)
-            throw Error(problem);
-        return problem; // the previous state stays
-    }
+    if (rebuilt_on_device(next.texture) && needs_sat(next)) // the previous state stays
+        throw Error("the dynamic texture is rebuilt on the device every frame, without a summed-area table: sat "
+                    "filters need a static texture (--build cpu, or another texture)");
     if (first || !same_texture(next.texture, v.state.texture)) {
-        try {
-            DeviceLimits limits = device_limits(v.context.info);
-            // The dynamic texture's host chain (its frame now) gives the sizes and the footprint; the device
-            // makes every frame's texels itself.
-            MipChain chain = load_texture(next.texture, {needs_sat(next), &limits});
-            im.build = next.texture.build;
-            if (rebuilt_on_device(next.texture))
-                set_dynamic_texture(im, std::move(chain));
-            else
-                set_texture(im, std::move(chain));
-            v.state.texture = next.texture;
-        } catch (const Error& e) {
-            if (first)
-                throw;
-            return e.what(); // the previous texture stays
-        }
+        DeviceLimits limits = device_limits(v.context.info);
+        // The dynamic texture's host chain (its frame now) gives the sizes and the footprint; the device makes
+        // every frame's texels itself. A texture that fails throws here: the previous one stays.
+        MipChain chain = load_texture(next.texture, {needs_sat(next), &limits});
+        im.build = next.texture.build;
+        if (rebuilt_on_device(next.texture))
+            set_dynamic_texture(im, std::move(chain));
+        else
+            set_texture(im, std::move(chain));
+        v.state.texture = next.texture;
         scene_changed(v);
     } else if (rebuilt_on_device(next.texture)) {
         v.state.texture.texture_frame = next.texture.texture_frame; // built before the next frame renders
@@ -112,7 +102,6 @@ std::string apply_state(Viewer& v, const ViewState& requested)
         scene_changed(v);
     if (v.window)
         set_window_title(*v.window, view_title(v));
-    return "";
 }
 
 namespace {
@@ -149,7 +138,7 @@ void view_until_closed(const ViewOptions& options)
     create_compose_pass(v.context, v.swapchain.render_pass, v.compose, teardown);
     create_imgui_layer(v.context, *v.window, v.swapchain, teardown);
     create_frame_objects(v, teardown);
-    teardown.add([&] { vkDeviceWaitIdle(v.context.device); }); // first: nothing above still in use
+    teardown.add([&] { wait_idle_before_destroy(v.context); }); // first: nothing above still in use
 
     ScriptRun script;
     FrameLog log(options.frame_log);
@@ -192,6 +181,7 @@ void view_until_closed(const ViewOptions& options)
             }
         }
     }
+    TF_VK(vkDeviceWaitIdle(v.context.device)); // the last frame done (checked here; the teardown's wait reports)
     log.write();
 }
 

@@ -19,7 +19,7 @@ void run_action(Viewer& v, const ScriptAction& a, ScriptRun& run)
                          problem.c_str(), kept);
         }
     };
-    auto apply = [&] { report(apply_state(v, next), "the previous texture is kept"); };
+    auto apply = [&] { report(problem_of([&] { apply_state(v, next); }), "the previous texture is kept"); };
     if (verb == "scene") {
         next.scene = script_scene(a);
         v.controls.camera_set = false;
@@ -98,7 +98,7 @@ void run_action(Viewer& v, const ScriptAction& a, ScriptRun& run)
                        v.state.texture.name_or_path + ", built on the " + to_string(v.state.texture.build) + ")",
                    "it stays as it is");
     } else if (verb == "texture-frame") {
-        report(set_viewer_texture_frame(v, script_count(a)), "the frame is unchanged");
+        report(problem_of([&] { set_viewer_texture_frame(v, script_count(a)); }), "the frame is unchanged");
     } else if (verb == "divider") {
         v.state.divider = float(script_divider(a));
     } else if (verb == "loupe") {

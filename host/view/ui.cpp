@@ -286,7 +286,7 @@ void build_ui(Viewer& v)
     }
     ImGui::End();
     if (changed) {
-        std::string problem = apply_state(v, next);
+        const std::string problem = problem_of([&] { apply_state(v, next); });
         if (!problem.empty())
             v.controls.message = problem;
     }

@@ -32,13 +32,23 @@ void advance_texture_frame(Viewer& v)
     frame = frame >= max_texture_frame ? 0 : frame + 1;
 }
 
-std::string set_viewer_texture_frame(Viewer& v, int frame)
+void set_viewer_texture_frame(Viewer& v, int frame)
 {
     if (!is_dynamic_texture(v.state.texture))
-        return "texture " + v.state.texture.name_or_path + " has no frames (only the dynamic texture animates)";
+        throw Error("texture " + v.state.texture.name_or_path + " has no frames (only the dynamic texture animates)");
     ViewState next = v.state;
     next.texture.texture_frame = frame;
-    return apply_state(v, next); // --build gpu: rebuilt on the device; cpu: a new host chain
+    apply_state(v, next); // --build gpu: rebuilt on the device; cpu: a new host chain
+}
+
+std::string problem_of(const std::function<void()>& change)
+{
+    try {
+        change();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
 }
 
 // Like the camera's animation, a texture animating renders previews: each frame is a new image.
@@ -60,7 +70,7 @@ void take_dropped_files(Viewer& v)
     ViewState next = v.state;
     next.texture.name_or_path = v.window->dropped.back(); // several at once: the last one
     v.window->dropped.clear();
-    v.controls.message = apply_state(v, next);
+    v.controls.message = problem_of([&] { apply_state(v, next); });
 }
 
 void create_frame_objects(Viewer& v, Cleanup& cleanup)
@@ -88,7 +98,7 @@ namespace {
 
 void recreate_swapchain(Viewer& v, int width, int height)
 {
-    vkDeviceWaitIdle(v.context.device);
+    TF_VK(vkDeviceWaitIdle(v.context.device));
     create_swapchain(v.context, v.surface, uint32_t(width), uint32_t(height), v.swapchain);
     imgui_swapchain_recreated(v.swapchain);
     v.window->resized = false;

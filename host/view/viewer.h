@@ -14,6 +14,7 @@
 #include "scene/camera.h"
 #include <array>
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -90,8 +91,14 @@ int run_viewer(const ViewOptions& options);
 // viewer.cpp
 SceneParams current_scene(const Viewer& viewer);
 void scene_changed(Viewer& viewer); // camera, frame, size or scene: images start over, the camera counts as moving
-// Applies a new ViewState (scene, texture, filters); a texture that fails keeps the old one and returns the message.
-std::string apply_state(Viewer& viewer, const ViewState& next);
+// The view layer's one error style: what the viewer refuses throws tf::Error (a texture that does not load,
+// a sat filter on the dynamic texture, a texture without frames), with the previous state kept. Before the
+// window opens the error ends the viewer; afterwards the callers that go on (the UI, keys, a dropped file,
+// the script) show its message: problem_of.
+// Applies a new ViewState (scene, texture, filters).
+void apply_state(Viewer& viewer, const ViewState& next);
+// Runs `change`: its tf::Error's message, or "" when it went through.
+std::string problem_of(const std::function<void()>& change);
 // Renders and presents one frame; with_ui false: the scene alone (screenshots). Returns false when there
 // was nothing to present to (minimised).
 // capture (or null): the presented image is also copied there (screenshots).
@@ -105,8 +112,8 @@ bool rebuilt_on_device(const TextureSource& texture);
 bool texture_animates(const Viewer& viewer); // rebuilt on the device and animating
 // The next texture frame (after max_texture_frame, 0 again): the halves re-render at the next draw_frame.
 void advance_texture_frame(Viewer& viewer);
-// A problem (for the UI and the script's stderr) when the texture has no frames; else sets it, "".
-std::string set_viewer_texture_frame(Viewer& viewer, int frame);
+// Throws tf::Error when the texture has no frames.
+void set_viewer_texture_frame(Viewer& viewer, int frame);
 
 void upload_compose_images(Viewer& viewer); // the halves' images into the composition pass's buffers
 bool moving_now(const Viewer& viewer);      // the camera moved within the settle time, or it or the texture animates

@@ -9,6 +9,7 @@
 //   it once the object is whole, so a half-made object is undone and a whole one kept.
 // - An object remade in place while it lives (a swapchain, the viewer's texture) has one destroy for
 //   whatever it holds, registered once by its owner (the viewer's teardown).
+// Steps run from a destructor, so they never throw (wait_idle_before_destroy reports a failure instead).
 #include <functional>
 #include <vector>
 

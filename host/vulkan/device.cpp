@@ -79,9 +79,9 @@ const char* validation_layer = "VK_LAYER_KHRONOS_validation";
 bool has_validation_layer()
 {
     uint32_t count = 0;
-    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    TF_VK(vkEnumerateInstanceLayerProperties(&count, nullptr));
     std::vector<VkLayerProperties> layers(count);
-    vkEnumerateInstanceLayerProperties(&count, layers.data());
+    TF_VK(vkEnumerateInstanceLayerProperties(&count, layers.data()));
     return std::any_of(layers.begin(), layers.end(),
                        [](const VkLayerProperties& l) { return std::strcmp(l.layerName, validation_layer) == 0; });
 }
@@ -95,7 +95,7 @@ VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger,
 {
     load_vulkan();
     uint32_t loader_version = 0;
-    vkEnumerateInstanceVersion(&loader_version);
+    TF_VK(vkEnumerateInstanceVersion(&loader_version));
     if (VK_API_VERSION_MINOR(loader_version) < 3 && VK_API_VERSION_MAJOR(loader_version) == 1)
         throw Error("the Vulkan loader supports Vulkan " + version_string(loader_version) + "; texfilter needs 1.3");
     if (validate && !has_validation_layer())
@@ -323,6 +323,14 @@ void vk_check(VkResult result, const char* what)
         throw Error(std::string("Vulkan call failed (VkResult ") + std::to_string(int(result)) + "): " + what);
 }
 
+void wait_idle_before_destroy(const VulkanContext& context) noexcept
+{
+    const VkResult result = vkDeviceWaitIdle(context.device);
+    if (result != VK_SUCCESS)
+        std::fprintf(stderr, "texfilter: vkDeviceWaitIdle failed (VkResult %d) before destroying the device's objects\n",
+                     int(result));
+}
+
 std::string version_string(uint32_t version)
 {
     return std::to_string(VK_API_VERSION_MAJOR(version)) + "." + std::to_string(VK_API_VERSION_MINOR(version)) +
@@ -339,9 +347,9 @@ VulkanContext create_context(const ContextOptions& options)
     std::vector<DeviceInfo> devices = list_devices(context.instance);
     context.info = devices[size_t(select_device(devices, options.device))];
     uint32_t count = 0;
-    vkEnumeratePhysicalDevices(context.instance, &count, nullptr);
+    TF_VK(vkEnumeratePhysicalDevices(context.instance, &count, nullptr));
     std::vector<VkPhysicalDevice> physicals(count);
-    vkEnumeratePhysicalDevices(context.instance, &count, physicals.data());
+    TF_VK(vkEnumeratePhysicalDevices(context.instance, &count, physicals.data()));
     context.physical = physicals[size_t(context.info.index)];
     context.queue_family = uint32_t(find_queue_family(context.physical));
 
@@ -389,7 +397,7 @@ VulkanContext create_context(const ContextOptions& options)
 void destroy_context(VulkanContext& context)
 {
     if (context.device) {
-        vkDeviceWaitIdle(context.device);
+        wait_idle_before_destroy(context);
         if (context.command_pool)
             vkDestroyCommandPool(context.device, context.command_pool, nullptr);
         vkDestroyDevice(context.device, nullptr);

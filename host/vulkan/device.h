@@ -80,9 +80,12 @@ struct VulkanContext {
     VkCommandPool command_pool = VK_NULL_HANDLE;
 };
 
-// Throws tf::Error when a Vulkan call fails, naming the call and the result.
+// Throws tf::Error when a Vulkan call fails, naming the call and the result: the layer's one error style.
 void vk_check(VkResult result, const char* what);
 #define TF_VK(call) ::tf::vk_check((call), #call)
+// vkDeviceWaitIdle in a destroy, which runs from a Cleanup step and must not throw: a failure (a lost
+// device) is reported on stderr and the destroy goes on (nothing can still be running on a lost device).
+void wait_idle_before_destroy(const VulkanContext& context) noexcept;
 
 // Instance only (for listing devices). Throws tf::Error with one sentence if there is no loader/driver.
 VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger,
