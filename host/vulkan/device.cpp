@@ -90,6 +90,21 @@ bool has_validation_layer()
 
 int validation_message_count() { return validation_messages; }
 
+namespace {
+
+// Warnings and errors of every type, counted and printed by on_validation_message.
+VkDebugUtilsMessengerCreateInfoEXT messenger_create_info()
+{
+    VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    info.pfnUserCallback = on_validation_message;
+    return info;
+}
+
+} // namespace
+
 VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger,
                            const std::vector<std::string>& extensions)
 {
@@ -106,13 +121,7 @@ VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger,
     app.pApplicationName = "texfilter";
     app.apiVersion = VK_API_VERSION_1_3;
     const char* debug_extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
-    VkDebugUtilsMessengerCreateInfoEXT messenger_info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    messenger_info.messageSeverity =
-        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    messenger_info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                                 VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                                 VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    messenger_info.pfnUserCallback = on_validation_message;
+    VkDebugUtilsMessengerCreateInfoEXT messenger_info = messenger_create_info();
 
     const VkValidationFeatureEnableEXT sync_enable = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
     VkValidationFeaturesEXT sync_features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
@@ -211,6 +220,82 @@ int find_queue_family(VkPhysicalDevice physical)
     return -1;
 }
 
+namespace {
+
+// The largest DEVICE_LOCAL heap, where textures go.
+void find_texture_heap(VkPhysicalDevice physical, DeviceInfo& d)
+{
+    VkPhysicalDeviceMemoryProperties memory{};
+    vkGetPhysicalDeviceMemoryProperties(physical, &memory);
+    for (uint32_t h = 0; h < memory.memoryHeapCount; ++h)
+        if ((memory.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) &&
+            memory.memoryHeaps[h].size > d.device_local_heap_size) {
+            d.device_local_heap_size = memory.memoryHeaps[h].size;
+            d.device_local_heap_index = h;
+        }
+}
+
+// What texfilter needs to know of one device: properties, limits, features, the texture heap, the queue's
+// timestamps, and whether it can run texfilter at all.
+DeviceInfo describe_device(VkPhysicalDevice physical, int index)
+{
+    VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    driver.pNext = &maintenance3;
+    VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+    subgroup.pNext = &driver;
+    VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    properties.pNext = &subgroup;
+    vkGetPhysicalDeviceProperties2(physical, &properties);
+    VkPhysicalDeviceFeatures features{};
+    vkGetPhysicalDeviceFeatures(physical, &features);
+    VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    features2.pNext = &features12;
+    if (properties.properties.apiVersion >= VK_API_VERSION_1_2)
+        vkGetPhysicalDeviceFeatures2(physical, &features2);
+    const VkPhysicalDeviceLimits& limits = properties.properties.limits;
+
+    DeviceInfo d;
+    d.index = index;
+    d.name = properties.properties.deviceName;
+    d.type = type_name(properties.properties.deviceType);
+    d.driver_name = driver.driverName;
+    d.driver_info = driver.driverInfo;
+    d.driver_id = driver.driverID;
+    d.api_version = properties.properties.apiVersion;
+    d.driver_version = properties.properties.driverVersion;
+    d.sub_texel_precision_bits = limits.subTexelPrecisionBits;
+    d.mipmap_precision_bits = limits.mipmapPrecisionBits;
+    d.sub_pixel_precision_bits = limits.subPixelPrecisionBits;
+    d.max_sampler_anisotropy = limits.maxSamplerAnisotropy;
+    d.max_sampler_lod_bias = limits.maxSamplerLodBias;
+    d.max_image_dimension_2d = limits.maxImageDimension2D;
+    d.max_image_dimension_cube = limits.maxImageDimensionCube;
+    d.subgroup_size = subgroup.subgroupSize;
+    bool quad = (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_QUAD_BIT) != 0;
+    d.quad_ops_fragment = quad && (subgroup.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT);
+    // The compute render also votes (subgroupAny: whether a subgroup's quads must share a missed lane's uv).
+    const bool vote = (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_VOTE_BIT) != 0;
+    d.quad_ops_compute = quad && vote && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
+    d.sampler_anisotropy = features.samplerAnisotropy == VK_TRUE;
+    d.shader_float64 = features.shaderFloat64 == VK_TRUE;
+    d.storage_image_extended_formats = features.shaderStorageImageExtendedFormats == VK_TRUE;
+    d.sampled_image_array_non_uniform_indexing = features12.shaderSampledImageArrayNonUniformIndexing == VK_TRUE;
+    d.runtime_descriptor_array = features12.runtimeDescriptorArray == VK_TRUE;
+    d.sampled_image_array_dynamic_indexing = features.shaderSampledImageArrayDynamicIndexing == VK_TRUE;
+    d.timestamp_period_ns = limits.timestampPeriod;
+    d.max_memory_allocation_size = maintenance3.maxMemoryAllocationSize;
+    find_texture_heap(physical, d);
+    if (int family = find_queue_family(physical); family >= 0)
+        d.timestamp_valid_bits = queue_family_timestamp_bits(physical, uint32_t(family));
+    d.why_not_usable = usability_problem(physical, d);
+    d.usable = d.why_not_usable.empty();
+    return d;
+}
+
+} // namespace
+
 std::vector<DeviceInfo> list_devices(VkInstance instance)
 {
     uint32_t count = 0;
@@ -218,68 +303,8 @@ std::vector<DeviceInfo> list_devices(VkInstance instance)
     std::vector<VkPhysicalDevice> physicals(count);
     TF_VK(vkEnumeratePhysicalDevices(instance, &count, physicals.data()));
     std::vector<DeviceInfo> devices;
-    for (uint32_t i = 0; i < count; ++i) {
-        VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
-        VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-        driver.pNext = &maintenance3;
-        VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
-        subgroup.pNext = &driver;
-        VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
-        properties.pNext = &subgroup;
-        vkGetPhysicalDeviceProperties2(physicals[i], &properties);
-        VkPhysicalDeviceFeatures features{};
-        vkGetPhysicalDeviceFeatures(physicals[i], &features);
-        VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-        VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-        features2.pNext = &features12;
-        if (properties.properties.apiVersion >= VK_API_VERSION_1_2)
-            vkGetPhysicalDeviceFeatures2(physicals[i], &features2);
-        const VkPhysicalDeviceLimits& limits = properties.properties.limits;
-
-        DeviceInfo d;
-        d.index = int(i);
-        d.name = properties.properties.deviceName;
-        d.type = type_name(properties.properties.deviceType);
-        d.driver_name = driver.driverName;
-        d.driver_info = driver.driverInfo;
-        d.driver_id = driver.driverID;
-        d.api_version = properties.properties.apiVersion;
-        d.driver_version = properties.properties.driverVersion;
-        d.sub_texel_precision_bits = limits.subTexelPrecisionBits;
-        d.mipmap_precision_bits = limits.mipmapPrecisionBits;
-        d.sub_pixel_precision_bits = limits.subPixelPrecisionBits;
-        d.max_sampler_anisotropy = limits.maxSamplerAnisotropy;
-        d.max_sampler_lod_bias = limits.maxSamplerLodBias;
-        d.max_image_dimension_2d = limits.maxImageDimension2D;
-        d.max_image_dimension_cube = limits.maxImageDimensionCube;
-        d.subgroup_size = subgroup.subgroupSize;
-        bool quad = (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_QUAD_BIT) != 0;
-        d.quad_ops_fragment = quad && (subgroup.supportedStages & VK_SHADER_STAGE_FRAGMENT_BIT);
-        // The compute render also votes (subgroupAny: whether a subgroup's quads must share a missed lane's uv).
-        const bool vote = (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_VOTE_BIT) != 0;
-        d.quad_ops_compute = quad && vote && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
-        d.sampler_anisotropy = features.samplerAnisotropy == VK_TRUE;
-        d.shader_float64 = features.shaderFloat64 == VK_TRUE;
-        d.storage_image_extended_formats = features.shaderStorageImageExtendedFormats == VK_TRUE;
-        d.sampled_image_array_non_uniform_indexing = features12.shaderSampledImageArrayNonUniformIndexing == VK_TRUE;
-        d.runtime_descriptor_array = features12.runtimeDescriptorArray == VK_TRUE;
-        d.sampled_image_array_dynamic_indexing = features.shaderSampledImageArrayDynamicIndexing == VK_TRUE;
-        d.timestamp_period_ns = limits.timestampPeriod;
-        d.max_memory_allocation_size = maintenance3.maxMemoryAllocationSize;
-        VkPhysicalDeviceMemoryProperties memory{};
-        vkGetPhysicalDeviceMemoryProperties(physicals[i], &memory);
-        for (uint32_t h = 0; h < memory.memoryHeapCount; ++h)
-            if ((memory.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) &&
-                memory.memoryHeaps[h].size > d.device_local_heap_size) {
-                d.device_local_heap_size = memory.memoryHeaps[h].size;
-                d.device_local_heap_index = h;
-            }
-        if (int family = find_queue_family(physicals[i]); family >= 0)
-            d.timestamp_valid_bits = queue_family_timestamp_bits(physicals[i], uint32_t(family));
-        d.why_not_usable = usability_problem(physicals[i], d);
-        d.usable = d.why_not_usable.empty();
-        devices.push_back(d);
-    }
+    for (uint32_t i = 0; i < count; ++i)
+        devices.push_back(describe_device(physicals[i], int(i)));
     return devices;
 }
 

@@ -355,6 +355,31 @@ void check_features(const VulkanContext& context, VkFormat format, VkFormatFeatu
 
 constexpr VkPipelineStageFlags shader_stages = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 
+// Staging: level 0 as RGBA32F (what the levels are built from: as given, like build_mip_chain); for another
+// format, level 0 as the format stores it, then (with a table) its rounded texels as RGBA32F, which the table
+// sums (as load_texture's quantise_chain does before build_sat).
+void fill_staging(const VulkanContext& context, GpuBuild& b, const Image& level0, Cleanup& objects)
+{
+    const TextureFormat format = b.texture.format;
+    const size_t texels = level0.texels.size();
+    b.float_bytes = texels * sizeof(glm::vec4);
+    const size_t packed_bytes = b.in_place ? 0 : texels * texel_bytes(format);
+    b.rounded_offset = b.float_bytes + (packed_bytes + 15) / 16 * 16;
+    const size_t total = b.in_place ? b.float_bytes : b.rounded_offset + (b.with_sat ? b.float_bytes : 0);
+    b.staging = create_host_buffer(context, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    objects.add([&context, buffer = b.staging]() mutable { destroy_buffer(context, buffer); });
+    advise_huge_pages(b.staging.mapped, total);
+    char* bytes = static_cast<char*>(b.staging.mapped);
+    std::memcpy(bytes, level0.texels.data(), b.float_bytes);
+    if (!b.in_place)
+        pack_texels(level0.texels.data(), texels, format, bytes + b.float_bytes);
+    if (!b.in_place && b.with_sat) {
+        glm::vec4* rounded = reinterpret_cast<glm::vec4*>(bytes + b.rounded_offset);
+        for (size_t i = 0; i < texels; ++i)
+            rounded[i] = quantise_texel(level0.texels[i], format);
+    }
+}
+
 } // namespace
 
 GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, int w, int h, bool with_sat,
@@ -411,114 +436,92 @@ GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, in
     } else {
         upload_empty_sat(context, t);
     }
-    if (level0) {
-        // Staging: level 0 as RGBA32F (what the levels are built from: as given, like build_mip_chain); for
-        // another format, level 0 as the format stores it, then (with a table) its rounded texels as RGBA32F,
-        // which the table sums (as load_texture's quantise_chain does before build_sat).
-        const size_t texels = level0->texels.size();
-        b.float_bytes = texels * sizeof(glm::vec4);
-        const size_t packed_bytes = b.in_place ? 0 : texels * texel_bytes(format);
-        b.rounded_offset = b.float_bytes + (packed_bytes + 15) / 16 * 16;
-        const size_t total = b.in_place ? b.float_bytes : b.rounded_offset + (with_sat ? b.float_bytes : 0);
-        b.staging = create_host_buffer(context, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-        objects.add([&context, buffer = b.staging]() mutable { destroy_buffer(context, buffer); });
-        advise_huge_pages(b.staging.mapped, total);
-        char* bytes = static_cast<char*>(b.staging.mapped);
-        std::memcpy(bytes, level0->texels.data(), b.float_bytes);
-        if (!b.in_place)
-            pack_texels(level0->texels.data(), texels, format, bytes + b.float_bytes);
-        if (!b.in_place && with_sat) {
-            glm::vec4* rounded = reinterpret_cast<glm::vec4*>(bytes + b.rounded_offset);
-            for (size_t i = 0; i < texels; ++i)
-                rounded[i] = quantise_texel(level0->texels[i], format);
-        }
-    }
+    if (level0)
+        fill_staging(context, b, *level0, objects);
     on_failure.dismiss();
     return b;
 }
 
-void record_gpu_build(VkCommandBuffer cb, GpuBuild& b, Level0 level0)
+namespace {
+
+// Level 0 (RGBA32F, or as the format stores it) from the staging buffer at `offset` into `image`, in
+// TRANSFER_DST_OPTIMAL.
+void copy_level0(VkCommandBuffer cb, const GpuBuild& b, VkDeviceSize offset, VkImage image)
 {
-    const GpuTexture& t = b.texture;
-    const uint32_t levels = uint32_t(t.levels);
-    const VkExtent3D extent{uint32_t(t.width), uint32_t(t.height), 1};
-    const bool first = level0 != Level0::written;
-    // The images' side before this build: nothing (first build), else the last frame's reads.
-    const BarrierScope previous = first ? scope::undefined : BarrierScope{shader_stages, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    if (level0 == Level0::from_staging) {
-        image_barrier(cb, {.image = b.built.image, .from = scope::undefined, .to = scope::transfer_dst,
-                           .levels = levels});
-        VkBufferImageCopy copy{};
-        copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        copy.imageExtent = extent;
-        vkCmdCopyBufferToImage(cb, b.staging.buffer, b.built.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-        image_barrier(cb, {.image = b.built.image, .from = scope::transfer_dst, .to = scope::compute_read_write,
-                           .levels = levels});
-    } else {
+    VkBufferImageCopy copy{};
+    copy.bufferOffset = offset;
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {uint32_t(b.texture.width), uint32_t(b.texture.height), 1};
+    vkCmdCopyBufferToImage(cb, b.staging.buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+}
+
+// `built` in GENERAL with level 0 visible to the build's compute reads: copied from the staging buffer, or
+// as the caller's compute shader just wrote it.
+void record_level0(VkCommandBuffer cb, const GpuBuild& b, Level0 level0)
+{
+    const uint32_t levels = uint32_t(b.texture.levels);
+    if (level0 != Level0::from_staging) {
         memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
                            {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT});
+        return;
     }
-    if (b.with_sat)
-        for (VkImage image : {b.sat.low.image, b.sat.high.image}) // the last frame's reads before this build's writes
-            image_barrier(cb, {.image = image, .from = previous, .to = scope::compute_read_write});
-    record_mip_build(cb, b.kernels, b.mip);
-    if (b.with_sat && !b.in_place && level0 == Level0::from_staging) {
+    image_barrier(cb, {.image = b.built.image, .from = scope::undefined, .to = scope::transfer_dst, .levels = levels});
+    copy_level0(cb, b, 0, b.built.image);
+    image_barrier(cb, {.image = b.built.image, .from = scope::transfer_dst, .to = scope::compute_read_write,
+                       .levels = levels});
+}
+
+// The summed-area table, after the MIP build.
+void record_table(VkCommandBuffer cb, const GpuBuild& b, Level0 level0)
+{
+    if (!b.in_place && level0 == Level0::from_staging) {
         // The table sums the texels the format stores: level 0 rounded, over the unrounded one the levels
         // were built from (the build's reads done first).
         image_barrier(cb, {.image = b.built.image, .from = scope::compute_read_write, .to = scope::transfer_dst});
-        VkBufferImageCopy rounded{};
-        rounded.bufferOffset = b.rounded_offset;
-        rounded.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        rounded.imageExtent = extent;
-        vkCmdCopyBufferToImage(cb, b.staging.buffer, b.built.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &rounded);
+        copy_level0(cb, b, b.rounded_offset, b.built.image);
         image_barrier(cb, {.image = b.built.image, .from = scope::transfer_dst,
                            .to = {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, VK_IMAGE_LAYOUT_GENERAL}});
     }
-    if (b.with_sat) {
-        // The build's dispatches bind every level writable (the validator counts level 0 as written).
+    // The build's dispatches bind every level writable (the validator counts level 0 as written).
+    memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT});
+    record_sat_build(cb, b.kernels, b.sat);
+    for (VkImage image : {b.sat.low.image, b.sat.high.image})
+        image_barrier(cb, {.image = image, .from = scope::compute_write, .to = scope::shader_read});
+}
+
+// The format's image: level 0 as the format stores it (copied), levels 1.. stored by pack_level with the
+// host's codes.
+void record_packed_levels(VkCommandBuffer cb, const GpuBuild& b, BarrierScope previous)
+{
+    const GpuTexture& t = b.texture;
+    const uint32_t levels = uint32_t(t.levels);
+    image_barrier(cb, {.image = t.chain.image, .from = previous, .to = scope::transfer_dst});
+    copy_level0(cb, b, b.float_bytes, t.chain.image);
+    image_barrier(cb, {.image = t.chain.image, .from = scope::transfer_dst, .to = scope::shader_read});
+    if (levels > 1) {
+        image_barrier(cb, {.image = t.chain.image, .from = previous, .to = scope::compute_write,
+                           .levels = levels - 1, .base_level = 1});
         memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
-                           {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT});
-        record_sat_build(cb, b.kernels, b.sat);
-        for (VkImage image : {b.sat.low.image, b.sat.high.image})
-            image_barrier(cb, {.image = image, .from = scope::compute_write, .to = scope::shader_read});
+                           {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT});
+        record_pack_levels(cb, b.kernels, b.pack_target, b.mip);
+        image_barrier(cb, {.image = t.chain.image, .from = scope::compute_write, .to = scope::shader_read,
+                           .levels = levels - 1, .base_level = 1});
     }
-    if (b.in_place) {
-        image_barrier(cb, {.image = b.built.image, .from = scope::compute_write, .to = scope::shader_read,
-                           .levels = levels});
-        return;
-    }
-    if (b.pack) {
-        // Level 0 as the format stores it (copied); levels 1.. stored by pack_level, the host's codes.
-        image_barrier(cb, {.image = t.chain.image, .from = previous, .to = scope::transfer_dst});
-        VkBufferImageCopy packed{};
-        packed.bufferOffset = b.float_bytes;
-        packed.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        packed.imageExtent = extent;
-        vkCmdCopyBufferToImage(cb, b.staging.buffer, t.chain.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &packed);
-        image_barrier(cb, {.image = t.chain.image, .from = scope::transfer_dst, .to = scope::shader_read});
-        if (levels > 1) {
-            image_barrier(cb, {.image = t.chain.image, .from = previous, .to = scope::compute_write,
-                               .levels = levels - 1, .base_level = 1});
-            memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT},
-                               {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT});
-            record_pack_levels(cb, b.kernels, b.pack_target, b.mip);
-            image_barrier(cb, {.image = t.chain.image, .from = scope::compute_write, .to = scope::shader_read,
-                               .levels = levels - 1, .base_level = 1});
-        }
-        image_barrier(cb, {.image = b.built.image, .from = scope::compute_write, .to = scope::shader_read,
-                           .levels = levels});
-        return;
-    }
-    // No integer stores: level 0 as the format stores it; every other level blitted (1:1, nearest: a format
-    // conversion with the device's rounding).
+    image_barrier(cb, {.image = b.built.image, .from = scope::compute_write, .to = scope::shader_read,
+                       .levels = levels});
+}
+
+// No integer stores: level 0 as the format stores it; every other level blitted (1:1, nearest: a format
+// conversion with the device's rounding).
+void record_blitted_levels(VkCommandBuffer cb, const GpuBuild& b, BarrierScope previous)
+{
+    const GpuTexture& t = b.texture;
+    const uint32_t levels = uint32_t(t.levels);
     image_barrier(cb, {.image = b.built.image, .from = scope::compute_write, .to = scope::transfer_src,
                        .levels = levels});
     image_barrier(cb, {.image = t.chain.image, .from = previous, .to = scope::transfer_dst, .levels = levels});
-    VkBufferImageCopy packed{};
-    packed.bufferOffset = b.float_bytes;
-    packed.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    packed.imageExtent = extent;
-    vkCmdCopyBufferToImage(cb, b.staging.buffer, t.chain.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &packed);
+    copy_level0(cb, b, b.float_bytes, t.chain.image);
     for (uint32_t l = 1; l < levels; ++l) {
         const int32_t lw = std::max(1, t.width >> l), lh = std::max(1, t.height >> l);
         VkImageBlit blit{};
@@ -528,12 +531,34 @@ void record_gpu_build(VkCommandBuffer cb, GpuBuild& b, Level0 level0)
         vkCmdBlitImage(cb, b.built.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, t.chain.image,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
     }
-    image_barrier(cb, {.image = t.chain.image, .from = scope::transfer_dst, .to = scope::shader_read,
-                       .levels = levels});
+    image_barrier(cb, {.image = t.chain.image, .from = scope::transfer_dst, .to = scope::shader_read, .levels = levels});
     // Leave `built` as an in-place build leaves its image, so a rebuild starts from one layout.
     image_barrier(cb, {.image = b.built.image, .from = scope::transfer_src,
                        .to = {VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
                        .levels = levels});
+}
+
+} // namespace
+
+void record_gpu_build(VkCommandBuffer cb, GpuBuild& b, Level0 level0)
+{
+    // The images' side before this build: nothing (first build), else the last frame's reads.
+    const bool first = level0 != Level0::written;
+    const BarrierScope previous = first ? scope::undefined : BarrierScope{shader_stages, 0, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    record_level0(cb, b, level0);
+    if (b.with_sat)
+        for (VkImage image : {b.sat.low.image, b.sat.high.image}) // the last frame's reads before this build's writes
+            image_barrier(cb, {.image = image, .from = previous, .to = scope::compute_read_write});
+    record_mip_build(cb, b.kernels, b.mip);
+    if (b.with_sat)
+        record_table(cb, b, level0);
+    if (b.in_place)
+        image_barrier(cb, {.image = b.built.image, .from = scope::compute_write, .to = scope::shader_read,
+                           .levels = uint32_t(b.texture.levels)});
+    else if (b.pack)
+        record_packed_levels(cb, b, previous);
+    else
+        record_blitted_levels(cb, b, previous);
 }
 
 void finish_gpu_build(GpuBuild& b, const std::string& texture_name)

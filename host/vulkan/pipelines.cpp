@@ -90,6 +90,61 @@ VkPipeline create_compute_pipeline(const VulkanContext& context, ShaderCode code
     return pipeline;
 }
 
+namespace {
+
+// The fixed-function state of the harness's graphics pipelines: no culling or blending, a depth test where
+// there is a depth target, the viewport fixed to the description's size (or dynamic, size 0), dynamic
+// rendering unless a render pass is given. Filled in place (fill_graphics_states): the infos point at members.
+struct GraphicsStates {
+    VkPipelineVertexInputStateCreateInfo no_vertices{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    VkViewport viewport{};
+    VkRect2D scissor{};
+    VkPipelineViewportStateCreateInfo viewport_state{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    VkDynamicState dynamic_states[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    VkPipelineDepthStencilStateCreateInfo depth_state{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    VkPipelineColorBlendAttachmentState blend_attachment{};
+    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    bool fixed_viewport = false;
+};
+
+void fill_graphics_states(const GraphicsPipelineDesc& desc, GraphicsStates& s)
+{
+    s.assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    s.viewport = {0.0f, 0.0f, float(desc.width), float(desc.height), 0.0f, 1.0f};
+    s.scissor = {{0, 0}, {desc.width, desc.height}};
+    s.viewport_state.viewportCount = 1;
+    s.viewport_state.scissorCount = 1;
+    s.fixed_viewport = desc.width && desc.height;
+    if (s.fixed_viewport) {
+        s.viewport_state.pViewports = &s.viewport;
+        s.viewport_state.pScissors = &s.scissor;
+    } else {
+        s.dynamic.dynamicStateCount = 2;
+        s.dynamic.pDynamicStates = s.dynamic_states;
+    }
+    s.raster.polygonMode = VK_POLYGON_MODE_FILL;
+    s.raster.cullMode = VK_CULL_MODE_NONE;
+    s.raster.lineWidth = 1.0f;
+    s.multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    const bool depth = desc.depth_format != VK_FORMAT_UNDEFINED;
+    s.depth_state.depthTestEnable = s.depth_state.depthWriteEnable = depth ? VK_TRUE : VK_FALSE;
+    s.depth_state.depthCompareOp = VK_COMPARE_OP_LESS;
+    s.blend_attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                        VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    s.blend.attachmentCount = 1;
+    s.blend.pAttachments = &s.blend_attachment;
+    s.rendering.colorAttachmentCount = 1;
+    s.rendering.pColorAttachmentFormats = &desc.color_format;
+    s.rendering.depthAttachmentFormat = desc.depth_format;
+}
+
+} // namespace
+
 VkPipeline create_graphics_pipeline(const VulkanContext& context, const GraphicsPipelineDesc& desc,
                                     VkPipelineLayout layout, FilterVariant filter, Cleanup& cleanup)
 {
@@ -102,59 +157,22 @@ VkPipeline create_graphics_pipeline(const VulkanContext& context, const Graphics
     VkPipelineShaderStageCreateInfo stages[2] = {
         shader_stage(VK_SHADER_STAGE_VERTEX_BIT, vert, nullptr),
         shader_stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag.module, frag.info)};
-
-    const bool depth = desc.depth_format != VK_FORMAT_UNDEFINED;
-    VkPipelineVertexInputStateCreateInfo no_vertices{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkViewport viewport{0.0f, 0.0f, float(desc.width), float(desc.height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {desc.width, desc.height}};
-    VkPipelineViewportStateCreateInfo viewport_state{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-    viewport_state.viewportCount = 1;
-    viewport_state.scissorCount = 1;
-    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    const bool fixed_viewport = desc.width && desc.height;
-    if (fixed_viewport) {
-        viewport_state.pViewports = &viewport;
-        viewport_state.pScissors = &scissor;
-    } else {
-        dynamic.dynamicStateCount = 2;
-        dynamic.pDynamicStates = dynamic_states;
-    }
-    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    VkPipelineDepthStencilStateCreateInfo depth_state{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depth_state.depthTestEnable = depth_state.depthWriteEnable = depth ? VK_TRUE : VK_FALSE;
-    depth_state.depthCompareOp = VK_COMPARE_OP_LESS;
-    VkPipelineColorBlendAttachmentState blend_attachment{};
-    blend_attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                      VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = 1;
-    blend.pAttachments = &blend_attachment;
-    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachmentFormats = &desc.color_format;
-    rendering.depthAttachmentFormat = desc.depth_format;
+    GraphicsStates states;
+    fill_graphics_states(desc, states);
 
     VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-    info.pNext = desc.render_pass ? nullptr : &rendering;
+    info.pNext = desc.render_pass ? nullptr : &states.rendering;
     info.renderPass = desc.render_pass;
-    info.pDynamicState = fixed_viewport ? nullptr : &dynamic;
+    info.pDynamicState = states.fixed_viewport ? nullptr : &states.dynamic;
     info.stageCount = 2;
     info.pStages = stages;
-    info.pVertexInputState = desc.vertex_input ? desc.vertex_input : &no_vertices;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport_state;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pDepthStencilState = &depth_state;
-    info.pColorBlendState = &blend;
+    info.pVertexInputState = desc.vertex_input ? desc.vertex_input : &states.no_vertices;
+    info.pInputAssemblyState = &states.assembly;
+    info.pViewportState = &states.viewport_state;
+    info.pRasterizationState = &states.raster;
+    info.pMultisampleState = &states.multisample;
+    info.pDepthStencilState = &states.depth_state;
+    info.pColorBlendState = &states.blend;
     info.layout = layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     TF_VK(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
@@ -294,14 +312,20 @@ std::vector<Instruction> instructions(const std::vector<uint32_t>& words)
 }
 
 // The interface the sample pass of `resource` gives the shader (see the header); throws naming the first mismatch.
-void check_interface(const std::vector<uint32_t>& words, const std::string& name, Resource resource)
-{
-    const std::vector<Instruction> module = instructions(words);
+// What check_interface reads of a module: its decorations, the types resources are declared with, and
+// whether it has the entry point.
+struct ModuleInterface {
     std::map<uint32_t, uint32_t> binding, set, type_of_pointer, storage_of_pointer;
     std::map<uint32_t, Instruction> types;
     std::map<uint32_t, uint32_t> largest_offset; // struct id -> largest member Offset
     std::map<uint32_t, bool> buffer_block;
     bool entry = false;
+};
+
+ModuleInterface read_interface(const std::vector<Instruction>& module)
+{
+    ModuleInterface m;
+    auto& [binding, set, type_of_pointer, storage_of_pointer, types, largest_offset, buffer_block, entry] = m;
     for (const Instruction& in : module) {
         if (in.opcode == OpEntryPoint && in.count >= 3 && in.operands[0] == ExecutionModelGLCompute &&
             std::strncmp(reinterpret_cast<const char*>(&in.operands[2]), "main", 5) == 0)
@@ -322,32 +346,47 @@ void check_interface(const std::vector<uint32_t>& words, const std::string& name
             type_of_pointer[in.operands[0]] = in.operands[2];
         }
     }
+    return m;
+}
+
+// The descriptor type (and 2D array or not) a resource variable of `storage` and pointee `type` declares.
+Declared declared_resource(const ModuleInterface& m, uint32_t storage, uint32_t type)
+{
+    const std::map<uint32_t, Instruction>& types = m.types;
+    auto t = types.find(type);
+    while (t != types.end() && (t->second.opcode == OpTypeArray || t->second.opcode == OpTypeRuntimeArray))
+        t = types.find(t->second.operands[1]);
+    const uint32_t op = t == types.end() ? 0 : t->second.opcode;
+    // OpTypeImage's operands: result, sampled type, Dim, Depth, Arrayed (4), MS, Sampled (6: 1 sampled, 2 storage)
+    auto layered = [&](uint32_t image) {
+        auto i = types.find(image);
+        return i != types.end() && i->second.opcode == OpTypeImage && i->second.count > 4 && i->second.operands[4] == 1;
+    };
+    if (storage == StorageUniformConstant && op == OpTypeSampledImage)
+        return {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, layered(t->second.operands[1])};
+    if (storage == StorageUniformConstant && op == OpTypeImage)
+        return {t->second.count > 6 && t->second.operands[6] == 2 ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
+                                                                   : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
+                layered(t->first)};
+    if (storage == StorageUniformConstant && op == OpTypeSampler)
+        return {VK_DESCRIPTOR_TYPE_SAMPLER};
+    if (op == OpTypeStruct && storage == StorageStorageBuffer)
+        return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+    if (op == OpTypeStruct && storage == StorageUniform) {
+        auto block = m.buffer_block.find(t->first);
+        return {block != m.buffer_block.end() && block->second ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
+                                                               : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
+    }
+    return {};
+}
+
+void check_interface(const std::vector<uint32_t>& words, const std::string& name, Resource resource)
+{
+    const std::vector<Instruction> module = instructions(words);
+    ModuleInterface m = read_interface(module);
+    auto& [binding, set, type_of_pointer, storage_of_pointer, types, largest_offset, buffer_block, entry] = m;
     if (!entry)
         throw Error(name + ": has no GLCompute entry point named 'main' (the sample pass's compute shader)");
-    auto declared = [&](uint32_t storage, uint32_t type) -> Declared {
-        auto t = types.find(type);
-        while (t != types.end() && (t->second.opcode == OpTypeArray || t->second.opcode == OpTypeRuntimeArray))
-            t = types.find(t->second.operands[1]);
-        const uint32_t op = t == types.end() ? 0 : t->second.opcode;
-        // OpTypeImage's operands: result, sampled type, Dim, Depth, Arrayed (4), MS, Sampled (6: 1 sampled, 2 storage)
-        auto layered = [&](uint32_t image) {
-            auto i = types.find(image);
-            return i != types.end() && i->second.opcode == OpTypeImage && i->second.count > 4 && i->second.operands[4] == 1;
-        };
-        if (storage == StorageUniformConstant && op == OpTypeSampledImage)
-            return {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, layered(t->second.operands[1])};
-        if (storage == StorageUniformConstant && op == OpTypeImage)
-            return {t->second.count > 6 && t->second.operands[6] == 2 ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
-                                                                       : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
-                    layered(t->first)};
-        if (storage == StorageUniformConstant && op == OpTypeSampler)
-            return {VK_DESCRIPTOR_TYPE_SAMPLER};
-        if (op == OpTypeStruct && storage == StorageStorageBuffer)
-            return {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
-        if (op == OpTypeStruct && storage == StorageUniform)
-            return {buffer_block[t->first] ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
-        return {};
-    };
     const std::map<uint32_t, PassBinding> expected_bindings = sample_pass_bindings(resource);
     const std::string pass = "the sample pass of --resource " + to_string(resource);
     const std::string build = " (--resource " + to_string(resource) +
@@ -370,7 +409,7 @@ void check_interface(const std::vector<uint32_t>& words, const std::string& name
         const auto expected = expected_bindings.find(binding[id]);
         if (expected == expected_bindings.end())
             throw Error(name + ": a resource at " + where + ", which " + pass + " does not bind" + build);
-        const Declared found = declared(storage, pointee);
+        const Declared found = declared_resource(m, storage, pointee);
         const PassBinding& want = expected->second;
         if (found.type != want.type || found.layered != want.layered)
             throw Error(name + ": " + where + " is " + to_string(found.type, found.layered) + "; " + pass +

@@ -162,21 +162,7 @@ VkDescriptorSet allocate_set(const VulkanContext& context, VkDescriptorSetLayout
     std::vector<VkDescriptorPoolSize> sizes;
     for (auto [type, count] : counts)
         sizes.push_back({type, count});
-    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pool_info.maxSets = 1;
-    pool_info.poolSizeCount = uint32_t(sizes.size());
-    pool_info.pPoolSizes = sizes.data();
-    VkDevice device = context.device;
-    TF_VK(vkCreateDescriptorPool(device, &pool_info, nullptr, &pool));
-    VkDescriptorPool created = pool;
-    cleanup.add([=] { vkDestroyDescriptorPool(device, created, nullptr); }); // frees the set too
-    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocate.descriptorPool = pool;
-    allocate.descriptorSetCount = 1;
-    allocate.pSetLayouts = &layout;
-    VkDescriptorSet set = VK_NULL_HANDLE;
-    TF_VK(vkAllocateDescriptorSets(device, &allocate, &set));
-    return set;
+    return allocate_set(context, layout, sizes, pool, cleanup);
 }
 
 VkWriteDescriptorSet write_descriptor(VkDescriptorSet set, uint32_t binding, VkDescriptorType type)

@@ -41,6 +41,29 @@ std::vector<glm::vec4> gpu_sample_with_shader(const VulkanContext& context, cons
         prelude);
 }
 
+namespace {
+
+// The work groups of `count` lookups: hw-* lookups take a whole subgroup each, laid out as 2x2 quads (see
+// sample.comp.glsl). Throws where the device's subgroups cannot hold the quads or one pass cannot run them.
+VkExtent2D sample_groups(const VulkanContext& context, const SamplerOptions& options, size_t count)
+{
+    const bool quads = HARNESS_SAMPLE_IN_QUADS(int(options.filter));
+    const uint32_t subgroup = context.info.subgroup_size;
+    if (quads && (subgroup == 0 || subgroup % 4 != 0 || HARNESS_SAMPLE_LOCAL_SIZE % subgroup != 0))
+        throw Error("sample --filter " + to_string(options.filter) + " gives each lookup a subgroup of 2x2 quads, "
+                    "which subgroups of " + std::to_string(subgroup) + " invocations on " + context.info.name +
+                    " cannot hold");
+    const uint64_t invocations = uint64_t(count) * (quads ? subgroup : 1);
+    const uint64_t groups = (invocations + HARNESS_SAMPLE_LOCAL_SIZE - 1) / HARNESS_SAMPLE_LOCAL_SIZE;
+    const uint32_t groups_x = uint32_t(std::min<uint64_t>(groups, 65535)); // maxComputeWorkGroupCount >= 65535
+    const uint64_t groups_y = (groups + groups_x - 1) / groups_x;
+    if (groups_y > 65535 || groups * HARNESS_SAMPLE_LOCAL_SIZE > UINT32_MAX) // invocation indices are 32-bit
+        throw Error(std::to_string(count) + " lookups are more than one sample pass can run");
+    return {groups_x, uint32_t(groups_y)};
+}
+
+} // namespace
+
 std::vector<glm::vec4> run_sample_pass(const VulkanContext& context, const std::vector<Lookup>& lookups,
                                        const SamplerOptions& options, std::vector<LookupStats>* stats,
                                        ShaderCode code, const MakeSamplePass& make_pass,
@@ -52,19 +75,7 @@ std::vector<glm::vec4> run_sample_pass(const VulkanContext& context, const std::
             stats->clear();
         return {};
     }
-    // hw-* lookups take a whole subgroup each, laid out as 2x2 quads (see sample.comp.glsl).
-    const bool quads = HARNESS_SAMPLE_IN_QUADS(int(options.filter));
-    const uint32_t subgroup = context.info.subgroup_size;
-    if (quads && (subgroup == 0 || subgroup % 4 != 0 || HARNESS_SAMPLE_LOCAL_SIZE % subgroup != 0))
-        throw Error("sample --filter " + to_string(options.filter) + " gives each lookup a subgroup of 2x2 quads, "
-                    "which subgroups of " + std::to_string(subgroup) + " invocations on " + context.info.name +
-                    " cannot hold");
-    const uint64_t invocations = uint64_t(lookups.size()) * (quads ? subgroup : 1);
-    const uint64_t groups = (invocations + HARNESS_SAMPLE_LOCAL_SIZE - 1) / HARNESS_SAMPLE_LOCAL_SIZE;
-    const uint32_t groups_x = uint32_t(std::min<uint64_t>(groups, 65535)); // maxComputeWorkGroupCount >= 65535
-    const uint64_t groups_y = (groups + groups_x - 1) / groups_x;
-    if (groups_y > 65535 || groups * HARNESS_SAMPLE_LOCAL_SIZE > UINT32_MAX) // invocation indices are 32-bit
-        throw Error(std::to_string(lookups.size()) + " lookups are more than one sample pass can run");
+    const VkExtent2D groups = sample_groups(context, options, lookups.size());
     Cleanup cleanup;
     const uint32_t count = uint32_t(lookups.size());
     auto storage = [&](VkDeviceSize bytes) {
@@ -99,7 +110,7 @@ std::vector<glm::vec4> run_sample_pass(const VulkanContext& context, const std::
             if (prelude && f == 0)
                 prelude(cb);
             bind_pass(cb, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline, pass, push);
-            vkCmdDispatch(cb, groups_x, uint32_t(groups_y), 1);
+            vkCmdDispatch(cb, groups.width, groups.height, 1);
             record_host_read(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
         });
         std::memcpy(results.data(), output.mapped, results.size() * sizeof(glm::vec4));
@@ -115,13 +126,14 @@ std::vector<glm::vec4> run_sample_pass(const VulkanContext& context, const std::
     return results;
 }
 
-Pass create_resource_pass(const VulkanContext& context, const GpuResources& resources, const HarnessVariant& variant,
-                          const SamplerOptions& options, const ResourceOptions& resource, VkShaderStageFlags stages,
-                          const std::vector<PassBuffer>& buffers, Cleanup& cleanup)
+namespace {
+
+// The filter's sampler (hw-* state, or trilinear with the wrap mode for hardware taps), as for the combined
+// kind; shadow adds the depth comparison (Vulkan compares each texel before filtering).
+VkSampler resource_sampler(const VulkanContext& context, const GpuResources& resources, const SamplerOptions& options,
+                           const ResourceOptions& resource, Cleanup& cleanup)
 {
     VkDevice device = context.device;
-    // The filter's sampler (hw-* state, or trilinear with the wrap mode for hardware taps), as for the
-    // combined kind; shadow adds the depth comparison (Vulkan compares each texel before filtering).
     VkSamplerCreateInfo info = sampler_create_info(context, options, resources.levels);
     if (resource.resource == Resource::shadow) {
         info.compareEnable = VK_TRUE;
@@ -136,9 +148,13 @@ Pass create_resource_pass(const VulkanContext& context, const GpuResources& reso
     VkSampler sampler = VK_NULL_HANDLE;
     TF_VK(vkCreateSampler(device, &info, nullptr, &sampler));
     cleanup.add([=] { vkDestroySampler(device, sampler, nullptr); });
-    // The SAT placeholders (1x1 zeros) with the base texture's own pass samplers.
-    const PassSamplers base = create_pass_samplers(context, resources.base, options, cleanup);
+    return sampler;
+}
 
+// What the kind binds at HARNESS_BINDING_TEXTURE: one image, or the bindless array.
+std::vector<VkDescriptorImageInfo> resource_textures(const GpuResources& resources, const HarnessVariant& variant,
+                                                    const ResourceOptions& resource, VkSampler sampler)
+{
     const VkImageLayout read = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     const VkSampler texture_sampler = variant.separate_sampler ? VK_NULL_HANDLE : sampler;
     std::vector<VkDescriptorImageInfo> textures;
@@ -160,6 +176,21 @@ Pass create_resource_pass(const VulkanContext& context, const GpuResources& reso
         throw Error("--resource " + to_string(resource.resource) + ": the shader binds " +
                     std::to_string(variant.texture_count) + " textures, the resource holds " +
                     std::to_string(textures.size()));
+    return textures;
+}
+
+} // namespace
+
+Pass create_resource_pass(const VulkanContext& context, const GpuResources& resources, const HarnessVariant& variant,
+                          const SamplerOptions& options, const ResourceOptions& resource, VkShaderStageFlags stages,
+                          const std::vector<PassBuffer>& buffers, Cleanup& cleanup)
+{
+    const VkSampler sampler = resource_sampler(context, resources, options, resource, cleanup);
+    // The SAT placeholders (1x1 zeros) with the base texture's own pass samplers.
+    const PassSamplers base = create_pass_samplers(context, resources.base, options, cleanup);
+
+    const VkImageLayout read = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    const std::vector<VkDescriptorImageInfo> textures = resource_textures(resources, variant, resource, sampler);
     // The summed-area table as the kind declares it (filter_select.glsl): usampler2D, utexture2D for the
     // separate kinds, arrays of one layer (views of the same images) for the array kinds.
     VkDescriptorImageInfo low = base.infos[1], high = base.infos[2];
