@@ -201,6 +201,25 @@ std::vector<uint32_t> specialize_spirv(ShaderCode code, FilterVariant variant)
     return out;
 }
 
+ShaderCode harness_shader_uint(HarnessShader shader)
+{
+    auto code = [](SpirvWords w) { return ShaderCode{w.words, w.bytes}; };
+    switch (shader) {
+    case HarnessShader::render_frag: return code(render_frag_spirv_uint());
+    case HarnessShader::render_comp: return code(render_comp_spirv_uint());
+    case HarnessShader::mesh_frag: return code(mesh_frag_spirv_uint());
+    case HarnessShader::sample_comp: return code(sample_comp_spirv_uint());
+    case HarnessShader::render_vert: // the vertex stages read no texture: one build serves every binding
+    case HarnessShader::mesh_vert:
+    case HarnessShader::minimal_comp:
+        break;
+    case HarnessShader::minimal_trilinear_comp: // reads a float sampler2D: the bench runs it on float formats only
+        throw Error("the minimal trilinear pass reads a float texture, not an integer one");
+        break;
+    }
+    return harness_shader(shader, TextureFormat::rgba32f);
+}
+
 ShaderCode harness_shader(HarnessShader shader, TextureFormat format)
 {
     if (format_info(format).integer)

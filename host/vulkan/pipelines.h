@@ -135,9 +135,12 @@ enum class HarnessShader { render_vert, render_frag, render_comp, mesh_vert, mes
 
 ShaderCode harness_shader(HarnessShader shader, TextureFormat format);
 
-// The HARNESS_RESOURCE_UINT build (harness_shaders_uint.cpp, its own object library: the generated
-// headers have the same names as the combined build's).
+// The HARNESS_RESOURCE_UINT build: the four shaders that read the texture, each embedded as a variant.
 ShaderCode harness_shader_uint(HarnessShader shader);
+SpirvWords render_frag_spirv_uint();
+SpirvWords render_comp_spirv_uint();
+SpirvWords mesh_frag_spirv_uint();
+SpirvWords sample_comp_spirv_uint();
 
 // Which harness shader a resource kind runs and what it binds at HARNESS_BINDING_TEXTURE (and, for the
 // kinds with a separate sampler, HARNESS_BINDING_SAMPLER): the one place that choice is made, so that a
