@@ -124,9 +124,11 @@ GpuBuildRow run_side(const VulkanContext& context, int side, int repeats, FrameT
     const GpuBuildKernels kernels = create_gpu_build_kernels(context, cleanup);
     const MipBuildTarget mip = create_mip_build_target(context, kernels, chain.image, side, side, cleanup);
     SatBuildTarget sat;
-    if (row.sat)
-        sat = create_sat_build_target(context, kernels, mip.level_views[0], create_sat_images(context, side, side, cleanup),
-                                      side, side, cleanup);
+    if (row.sat) {
+        SatImages images = create_sat_images(context, side, side);
+        cleanup.add([&context, images]() mutable { destroy_sat_images(context, images); });
+        sat = create_sat_build_target(context, kernels, mip.level_views[0], images, side, side, cleanup);
+    }
     {
         Buffer staging = create_host_buffer(context, level0.texels.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         Cleanup staging_cleanup;

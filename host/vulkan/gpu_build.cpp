@@ -138,7 +138,7 @@ void record_mip_build(VkCommandBuffer cb, const GpuBuildKernels& kernels, const 
     }
 }
 
-SatImages create_sat_images(const VulkanContext& context, int width, int height, Cleanup& cleanup)
+SatImages create_sat_images(const VulkanContext& context, int width, int height)
 {
     if (width < 1 || height < 1 || width > sat_max_dimension || height > sat_max_dimension)
         throw Error("GPU summed-area table: texture " + std::to_string(width) + "x" + std::to_string(height) +
@@ -151,11 +151,18 @@ SatImages create_sat_images(const VulkanContext& context, int width, int height,
     const uint32_t tw = uint32_t(width) + 1, th = uint32_t(height) + 1;
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     SatImages images;
+    Cleanup on_failure;
+    on_failure.add([&] { destroy_sat_images(context, images); });
     images.low = create_image(context, VK_FORMAT_R32G32B32A32_UINT, tw, th, 1, usage, VK_IMAGE_ASPECT_COLOR_BIT);
-    cleanup.add([&context, image = images.low]() mutable { destroy_image(context, image); });
     images.high = create_image(context, VK_FORMAT_R32_UINT, tw, th, 1, usage, VK_IMAGE_ASPECT_COLOR_BIT);
-    cleanup.add([&context, image = images.high]() mutable { destroy_image(context, image); });
+    on_failure.dismiss();
     return images;
+}
+
+void destroy_sat_images(const VulkanContext& context, SatImages& images)
+{
+    destroy_image(context, images.low);
+    destroy_image(context, images.high);
 }
 
 SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBuildKernels& kernels,
@@ -427,9 +434,7 @@ GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, in
     if (b.pack)
         b.pack_target = create_pack_target(context, b.kernels, b.mip, t.chain.image, format, objects);
     if (with_sat) {
-        Cleanup texture_images; // the texture's from here on (destroy_texture)
-        const SatImages images = create_sat_images(context, w, h, texture_images);
-        texture_images.dismiss();
+        const SatImages images = create_sat_images(context, w, h); // the texture's (destroy_texture)
         t.sat_low = images.low;
         t.sat_high = images.high;
         b.sat = create_sat_build_target(context, b.kernels, b.mip.level_views[0], images, w, h, objects);

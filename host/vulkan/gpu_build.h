@@ -64,11 +64,12 @@ void record_mip_build(VkCommandBuffer command_buffer, const GpuBuildKernels& ker
 
 // The two table images of a width x height texture (RGBA32UI low words, R32UI high bytes, one texel more a
 // side; storage + sampled). Throws tf::Error for a side outside 1..sat_max_dimension or beyond the device's
-// maxImageDimension2D. Destroyed by `cleanup` (dismiss it to hand them on to a GpuTexture).
+// maxImageDimension2D. The caller's, as create_image's image is (destroy_sat_images, or a GpuTexture's).
 struct SatImages {
     GpuImage low, high;
 };
-SatImages create_sat_images(const VulkanContext& context, int width, int height, Cleanup& cleanup);
+SatImages create_sat_images(const VulkanContext& context, int width, int height);
+void destroy_sat_images(const VulkanContext& context, SatImages& images);
 
 // The range words and the descriptor set of a SAT build reading `level0_view` (a storage view of an RGBA32F
 // level 0, GENERAL) into the images of create_sat_images (low and high: copies, not owned).
