@@ -6,6 +6,7 @@
 #include "core/lookup.h"
 #include "scene/scene.h"
 #include "vulkan/device.h"
+#include "vulkan/gpu_build.h"
 #include "vulkan/pipelines.h"
 #include "vulkan/textures.h"
 #include <glm/vec4.hpp>

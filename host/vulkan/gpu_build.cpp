@@ -579,6 +579,14 @@ void destroy_gpu_build(const VulkanContext& context, GpuBuild& b)
     b = GpuBuild{};
 }
 
+GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format,
+                          TextureBuild build)
+{
+    if (build == TextureBuild::gpu)
+        return upload_gpu_built_texture(context, chain.levels.at(0), with_sat, format);
+    return upload_texture(context, chain, with_sat, format);
+}
+
 GpuTexture upload_gpu_built_texture(const VulkanContext& context, const Image& level0, bool with_sat,
                                     TextureFormat format)
 {

@@ -1,6 +1,7 @@
 #pragma once
 // MIP chains and summed-area tables built on the device (build_mip.comp.glsl, build_sat.comp.glsl), a
 // texture uploaded as level 0 and built there, and the dynamic texture made on the device every frame.
+#include "core/texture_build.h"
 #include "core/texture_format.h"
 #include "texture/mip.h"
 #include "texture/sat.h"
@@ -123,7 +124,7 @@ void read_sat_range(const SatBuildTarget& target, const std::string& texture_nam
 // a submission with what fills level 0 and what filters the result: prepare_gpu_build makes the images and
 // the build's objects, record_gpu_build records the build (any number of times: a dynamic texture is
 // rebuilt every frame), finish_gpu_build reads the table's range once a submission has completed.
-// upload_gpu_built_texture (textures.h) is the three in one submission.
+// upload_gpu_built_texture (below) is the three in one submission.
 struct GpuBuild {
     GpuTexture texture;  // what the filters bind; its chain is `built` itself for RGBA32F
     GpuImage built;      // RGBA32F, every level, storage: where the levels are built
@@ -165,6 +166,29 @@ void finish_gpu_build(GpuBuild& build, const std::string& texture_name = "");
 
 // Destroys the texture and the build's objects.
 void destroy_gpu_build(const VulkanContext& context, GpuBuild& build);
+
+// upload_texture (textures.h) where the texture is built as `build` says (--build).
+// build = gpu: only chain.levels[0] is read (the rest may be missing); it is uploaded as RGBA32F and the
+// device builds every other level (and the summed-area table, with_sat) in one submission
+// (upload_gpu_built_texture). RGBA32F textures are built in place; other float formats in an RGBA32F
+// intermediate, each level then blitted into the format (the blit encodes sRGB: sRGB storage images are
+// not writable on most devices). Throws tf::Error as upload_texture, as check_gpu_build, and when the
+// device cannot store RGBA32F or blit into the format.
+GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format,
+                          TextureBuild build);
+GpuTexture upload_gpu_built_texture(const VulkanContext& context, const Image& level0, bool with_sat,
+                                    TextureFormat format);
+
+// Uploads the texture as `build` says, runs body(texture) and destroys it again, also when body throws.
+template <typename Body>
+auto with_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format,
+                  TextureBuild build, Body&& body)
+{
+    GpuTexture texture = upload_texture(context, chain, with_sat, format, build);
+    Cleanup cleanup;
+    cleanup.add([&] { destroy_texture(context, texture); });
+    return body(texture);
+}
 
 // The "dynamic" procedural texture made on the device every frame: a compute shader writes level 0
 // (dynamic_texture.comp.glsl, tf::dynamic_texture's integers), the GPU build completes the chain, and the

@@ -142,14 +142,6 @@ GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, b
     return t;
 }
 
-GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format,
-                          TextureBuild build)
-{
-    if (build == TextureBuild::gpu)
-        return upload_gpu_built_texture(context, chain.levels.at(0), with_sat, format);
-    return upload_texture(context, chain, with_sat, format);
-}
-
 GpuTexture upload_streamed_texture(const VulkanContext& context, int width, int height,
                                    const std::function<void(glm::vec4* texels)>& fill_level0)
 {

@@ -4,7 +4,6 @@
 #include "core/filter.h"
 #include "core/resource.h"
 #include "core/texel_sources.h"
-#include "core/texture_build.h"
 #include "core/texture_format.h"
 #include "texture/mip.h"
 #include "vulkan/cleanup.h"
@@ -35,17 +34,6 @@ struct GpuTexture {
 GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat,
                           TextureFormat format = TextureFormat::rgba32f);
 
-// build = gpu: only chain.levels[0] is read (the rest may be missing); it is uploaded as RGBA32F and the
-// device builds every other level (and the summed-area table, with_sat) in one submission
-// (gpu_build.cpp). RGBA32F textures are built in place; other float formats in an RGBA32F
-// intermediate, each level then blitted into the format (the blit encodes sRGB: sRGB storage images are
-// not writable on most devices). Throws tf::Error as upload_texture, as check_gpu_build, and when the
-// device cannot store RGBA32F or blit into the format.
-GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format,
-                          TextureBuild build);
-GpuTexture upload_gpu_built_texture(const VulkanContext& context, const Image& level0, bool with_sat,
-                                    TextureFormat format);
-
 // The same chain without a MipChain on the host (no summed-area table): fill_level0 writes level 0, width x
 // height linear RGBA texels, straight into the staging buffer (an image decoder, say); after each level is
 // copied, the next is built over it in place (downsample_into). So the host holds one level's bytes beside
@@ -59,17 +47,8 @@ void destroy_texture(const VulkanContext& context, GpuTexture& texture);
 // stays valid for every filter).
 void upload_empty_sat(const VulkanContext& context, GpuTexture& texture);
 
-// Uploads the texture, runs body(texture) and destroys it again, also when body throws.
-template <typename Body>
-auto with_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format,
-                  TextureBuild build, Body&& body)
-{
-    GpuTexture texture = upload_texture(context, chain, with_sat, format, build);
-    Cleanup cleanup;
-    cleanup.add([&] { destroy_texture(context, texture); });
-    return body(texture);
-}
-
+// Uploads the texture, runs body(texture) and destroys it again, also when body throws (with a TextureBuild:
+// gpu_build.h).
 template <typename Body>
 auto with_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format,
                   Body&& body)
