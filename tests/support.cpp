@@ -1,7 +1,7 @@
 #include "support.h"
 #include "cli/commands.h"
 #include "io/lookups_csv.h"
-#include "vulkan/loader.h"
+#include "vulkan/device.h"
 
 #include <algorithm>
 #include <climits>

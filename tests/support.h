@@ -11,7 +11,7 @@
 #include "texture/error.h"
 #include "core/lookup_stats.h"
 #include "reference/reference.h"
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 
 #include <exception>
 #include <filesystem>

@@ -11,7 +11,6 @@
 #include "scene/scene.h"
 #include "vulkan/backend.h"
 #include "vulkan/render.h"
-#include "vulkan/render_pipeline.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -9,7 +9,7 @@
 #include "texture/image.h"
 #include "texture/mip.h"
 #include "vulkan/backend.h"
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 
 #include <algorithm>
 #include <cmath>

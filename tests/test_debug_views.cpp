@@ -17,7 +17,7 @@
 #include "scene/scene.h"
 #include "vulkan/backend.h"
 #include "vulkan/render.h"
-#include "vulkan/upload.h"
+#include "vulkan/textures.h"
 #include <cmath>
 #include <cstdio>
 

@@ -29,7 +29,7 @@
 #include "vulkan/cleanup.h"
 #include "vulkan/environment.h"
 #include "vulkan/render.h"
-#include "vulkan/upload.h"
+#include "vulkan/textures.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

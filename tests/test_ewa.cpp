@@ -13,7 +13,7 @@
 #include "core/procedural.h"
 #include "reference/reference.h"
 #include "support.h"
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 
 #include <algorithm>
 #include <cmath>

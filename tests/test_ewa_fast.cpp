@@ -10,7 +10,7 @@
 #include "sample_checks.h"
 #include "support.h"
 #include "vulkan/backend.h"
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 
 #include <algorithm>
 #include <cmath>

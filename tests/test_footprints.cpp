@@ -5,7 +5,7 @@
 #include "support.h"
 #include "texture/image.h"
 #include "texture/mip.h"
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 
 #include <algorithm>
 #include <cmath>

@@ -20,11 +20,9 @@
 #include "texture/mip.h"
 #include "texture/sat.h"
 #include "vulkan/backend.h"
-#include "vulkan/dynamic_texture.h"
 #include "vulkan/gpu_build.h"
-#include "vulkan/gpu_built_texture.h"
-#include "vulkan/readback.h"
-#include "vulkan/upload.h"
+#include "vulkan/render.h"
+#include "vulkan/textures.h"
 #include "io/pfm.h"
 #include <glm/gtc/packing.hpp>
 #include <cmath>

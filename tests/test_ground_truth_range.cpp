@@ -9,7 +9,6 @@
 #include "reference/ground_truth.h"
 #include "scene/scene.h"
 #include "vulkan/backend.h"
-#include "vulkan/pass.h"
 #include "vulkan/render.h"
 #include <algorithm>
 #include <cmath>

@@ -18,7 +18,7 @@
 #include "device_lod.h"
 #include "sample_checks.h"
 #include "support.h"
-#include "vulkan/resource_images.h"
+#include "vulkan/textures.h"
 
 #include <algorithm>
 #include <cmath>

@@ -29,8 +29,7 @@
 #include "reference/resources.h"
 #include "support.h"
 #include "texture/error.h"
-#include "vulkan/harness_variant.h"
-#include "vulkan/spirv_module.h"
+#include "vulkan/pipelines.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -15,10 +15,9 @@
 #include "scene/scene.h"
 #include "support.h"
 #include "vulkan/backend.h"
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 #include "vulkan/render.h"
-#include "vulkan/render_pipeline.h"
-#include "vulkan/upload.h"
+#include "vulkan/textures.h"
 
 #include <cmath>
 #include <cstdio>

@@ -4,9 +4,8 @@
 #include "bench/stochastic_bench.h"
 #include "core/analytic_texture.h"
 #include "core/diff.h"
-#include "vulkan/render_pipeline.h"
-#include "texture/error.h"
 #include "vulkan/render.h"
+#include "texture/error.h"
 #include "io/pfm.h"
 #include "reference/render.h"
 #include <algorithm>

@@ -8,10 +8,10 @@
 // plots and an HTML page. The goals of docs/BENCHMARKS.md are checked and reported, never asserted.
 #include "bench/metrics.h"
 #include "core/filter.h"
-#include "vulkan/frame_timer.h"
+#include "vulkan/timing.h"
 #include "scene/scene.h"
 #include "io/texture_source.h"
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 #include <cmath>
 #include <map>
 #include <string>
@@ -42,7 +42,7 @@ struct BenchConfig {
     // Timed frames only: each pixel the mean of this many lookups spread over it (RenderOptions::lookups), so that
     // a GPU's filter time stands above the harness's per-pixel cost; images, errors and fetch counts use 1.
     int lookups_per_pixel = 1;
-    FrameTimer timer = FrameTimer::timestamps; // the wall clock on CPU devices (see vulkan/frame_timer.h)
+    FrameTimer timer = FrameTimer::timestamps; // the wall clock on CPU devices (see vulkan/timing.h)
     std::vector<SceneKind> scenes;
     std::vector<BenchFilter> filters;
 };

@@ -5,9 +5,9 @@
 #include "io/environment_source.h"
 #include "io/pfm.h"
 #include "reference/env_render.h"
-#include "vulkan/device_memory_check.h"
+#include "vulkan/device.h"
 #include "vulkan/environment.h"
-#include "vulkan/frame_timer.h"
+#include "vulkan/timing.h"
 #include <cmath>
 #include <cstdio>
 #include <filesystem>

@@ -2,7 +2,6 @@
 #include "bench/metrics.h"
 #include "reference/render.h"
 #include "vulkan/render.h"
-#include "vulkan/render_pipeline.h"
 
 namespace tf {
 

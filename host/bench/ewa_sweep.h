@@ -3,7 +3,7 @@
 // footprint size"): the minify scene at 1 .. 64 level-0 texels a pixel, each form's PSNR against the
 // Gaussian-pixel truth of that scene (the truth EWA approximates). EwaSweepPoint is in bench/bench.h.
 #include "bench/bench.h"
-#include "vulkan/upload.h"
+#include "vulkan/textures.h"
 #include <vector>
 
 namespace tf {

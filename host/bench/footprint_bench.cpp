@@ -6,7 +6,7 @@
 #include "reference/reference.h"
 #include "texture/error.h"
 #include "texture/threads.h"
-#include "vulkan/device_memory_check.h"
+#include "vulkan/device.h"
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

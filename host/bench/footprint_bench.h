@@ -14,8 +14,8 @@
 #include "io/texture_source.h"
 #include "texture/image.h"
 #include "texture/mip.h"
-#include "vulkan/context.h"
-#include "vulkan/upload.h"
+#include "vulkan/device.h"
+#include "vulkan/textures.h"
 #include <cmath>
 #include <cstdint>
 #include <functional>

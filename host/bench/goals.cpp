@@ -143,7 +143,7 @@ bool ewa_beats_hw_aniso(const BenchRun& run, const std::string& label, std::stri
 }
 
 // Brilinear, which exists to read fewer texels, faster than trilinear on every scene both ran on
-// (median frame times of one interleaved run: frame_timer.h).
+// (median frame times of one interleaved run: timing.h).
 BenchGoal brilinear_every_scene(const BenchRun& run)
 {
     BenchGoal goal{"brilinear faster than trilinear on every scene", "", "", ""};

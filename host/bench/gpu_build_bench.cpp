@@ -6,14 +6,11 @@
 #include "texture/mip.h"
 #include "texture/sat.h"
 #include "texture/threads.h"
-#include "vulkan/barriers.h"
-#include "vulkan/command_timer.h"
-#include "vulkan/dynamic_texture.h"
-#include "vulkan/frame.h"
+#include "vulkan/memory.h"
+#include "vulkan/timing.h"
 #include "vulkan/gpu_build.h"
 #include "vulkan/render.h"
-#include "vulkan/resources.h"
-#include "vulkan/upload.h"
+#include "vulkan/textures.h"
 #include <algorithm>
 #include <chrono>
 #include <cstring>
@@ -60,9 +57,10 @@ constexpr VkDeviceSize copy_chunk = VkDeviceSize(256) << 20; // the copy's sourc
 // most the level's size from a buffer of at most copy_chunk bytes.
 void record_copy(VkCommandBuffer cb, const Buffer& source, VkImage image, int side, double bytes)
 {
-    image_barrier(cb, image, 1, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                  VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    image_barrier(cb, {.image = image,
+                       .from = {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                                VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_GENERAL},
+                       .to = scope::transfer_dst});
     const VkDeviceSize row = VkDeviceSize(side) * sizeof(glm::vec4);
     const VkDeviceSize chunk_rows = std::max<VkDeviceSize>(1, std::min<VkDeviceSize>(source.size / row, VkDeviceSize(side)));
     for (VkDeviceSize left = VkDeviceSize(bytes / double(row)); left > 0;) {
@@ -73,17 +71,14 @@ void record_copy(VkCommandBuffer cb, const Buffer& source, VkImage image, int si
         vkCmdCopyBufferToImage(cb, source.buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
         left -= rows;
     }
-    image_barrier(cb, image, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+    image_barrier(cb, {.image = image, .from = scope::transfer_dst, .to = scope::compute_read_write});
 }
 
 void visible_to_compute(VkCommandBuffer cb)
 {
-    memory_barrier(cb, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
-                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+    memory_barrier(cb, {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                        VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT});
 }
 
 GpuBuildRow run_side(const VulkanContext& context, int side, int repeats, FrameTimer timer)
@@ -129,29 +124,25 @@ GpuBuildRow run_side(const VulkanContext& context, int side, int repeats, FrameT
     const GpuBuildKernels kernels = create_gpu_build_kernels(context, cleanup);
     const MipBuildTarget mip = create_mip_build_target(context, kernels, chain.image, side, side, cleanup);
     SatBuildTarget sat;
-    cleanup.add([&] {
-        destroy_image(context, sat.low);
-        destroy_image(context, sat.high);
-    });
-    if (row.sat)
-        sat = create_sat_build_target(context, kernels, mip.level_views[0], side, side, cleanup);
+    if (row.sat) {
+        SatImages images = create_sat_images(context, side, side);
+        cleanup.add([&context, images]() mutable { destroy_sat_images(context, images); });
+        sat = create_sat_build_target(context, kernels, mip.level_views[0], images, side, side, cleanup);
+    }
     {
         Buffer staging = create_host_buffer(context, level0.texels.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         Cleanup staging_cleanup;
         staging_cleanup.add([&] { destroy_buffer(context, staging); });
         std::memcpy(staging.mapped, level0.texels.data(), level0.texels.size() * sizeof(glm::vec4));
         submit_and_wait(context, [&](VkCommandBuffer cb) {
-            image_barrier(cb, chain.image, uint32_t(row.levels), VK_IMAGE_LAYOUT_UNDEFINED,
-                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT,
-                          VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+            image_barrier(cb, {.image = chain.image, .from = scope::undefined, .to = scope::transfer_dst,
+                               .levels = uint32_t(row.levels)});
             VkBufferImageCopy region{};
             region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             region.imageExtent = {uint32_t(side), uint32_t(side), 1};
             vkCmdCopyBufferToImage(cb, staging.buffer, chain.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-            image_barrier(cb, chain.image, uint32_t(row.levels), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                          VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                          VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+            image_barrier(cb, {.image = chain.image, .from = scope::transfer_dst, .to = scope::compute_read_write,
+                               .levels = uint32_t(row.levels)});
             if (row.sat)
                 record_sat_layouts(cb, sat);
         });
@@ -175,8 +166,8 @@ GpuBuildRow run_side(const VulkanContext& context, int side, int repeats, FrameT
         if (t->bytes <= 0)
             continue;
         t->device_copy_ms = median(time_commands(context, [&](VkCommandBuffer cb) {
-            memory_barrier(cb, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                           VK_PIPELINE_STAGE_TRANSFER_BIT);
+            memory_barrier(cb, {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                               {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT});
             record_copy(cb, source, chain.image, side, t->bytes / 2);
         }, warmup, repeats, timer));
     }

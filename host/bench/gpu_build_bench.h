@@ -4,8 +4,8 @@
 // side; and the dynamic texture, generated, rebuilt and filtered in one submission a frame, beside the same
 // frame with a static texture. A benchmark: printed, never asserted on.
 #include "core/memory_budget.h"
-#include "vulkan/context.h"
-#include "vulkan/frame_timer.h"
+#include "vulkan/device.h"
+#include "vulkan/timing.h"
 #include <string>
 #include <vector>
 

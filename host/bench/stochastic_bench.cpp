@@ -1,8 +1,7 @@
 #include "bench/stochastic_bench.h"
 #include "bench/metrics.h"
-#include "vulkan/frame_timer.h"
+#include "vulkan/timing.h"
 #include "vulkan/render.h"
-#include "vulkan/render_pipeline.h"
 #include <algorithm>
 #include <cstdio>
 

@@ -4,7 +4,7 @@
 // error of the mean of the first 1, 4, 16 and 64 frames against the scene's box and Gaussian truths, beside the
 // deterministic filter's own row.
 #include "bench/bench.h"
-#include "vulkan/upload.h"
+#include "vulkan/textures.h"
 #include <vector>
 
 namespace tf {

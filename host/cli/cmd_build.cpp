@@ -10,10 +10,9 @@
 #include "io/pfm.h"
 #include "texture/error.h"
 #include "texture/sat.h"
-#include "vulkan/device_memory_check.h"
-#include "vulkan/readback.h"
-#include "vulkan/texture_format_support.h"
-#include "vulkan/upload.h"
+#include "vulkan/device.h"
+#include "vulkan/render.h"
+#include "vulkan/textures.h"
 #include <cstdio>
 #include <cstring>
 #include <fstream>

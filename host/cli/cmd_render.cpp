@@ -6,7 +6,7 @@
 #include "vulkan/environment.h"
 #include "io/environment_source.h"
 #include "reference/env_render.h"
-#include "vulkan/texture_format_support.h"
+#include "vulkan/device.h"
 #include "io/image_io.h"
 #include "io/output_path.h"
 #include "io/pfm.h"

@@ -4,9 +4,9 @@
 #include "cli/sample_resource.h"
 #include "core/texel_sources.h"
 #include "vulkan/backend.h"
-#include "vulkan/sample_resource.h"
-#include "vulkan/spirv_module.h"
-#include "vulkan/texture_format_support.h"
+#include "vulkan/sample.h"
+#include "vulkan/pipelines.h"
+#include "vulkan/device.h"
 #include "io/lookups_csv.h"
 #include "io/output_path.h"
 #include "io/text_file.h"
@@ -39,7 +39,7 @@ void print_stats(const std::vector<LookupStats>& stats)
     summary("hardware lookups", &LookupStats::hardware_lookups);
 }
 
-// --spirv FILE: the lookup shader read and checked (vulkan/spirv_module.h) before any work; empty without it.
+// --spirv FILE: the lookup shader read and checked (vulkan/pipelines.h) before any work; empty without it.
 std::vector<uint32_t> sample_spirv_from(const Args& args, Backend backend, const ResourceOptions& resource,
                                         const TextureSource& source)
 {

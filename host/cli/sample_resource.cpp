@@ -5,8 +5,8 @@
 #include "reference/resources.h"
 #include "texture/error.h"
 #include "vulkan/cleanup.h"
-#include "vulkan/harness_variant.h"
-#include "vulkan/sample_resource.h"
+#include "vulkan/pipelines.h"
+#include "vulkan/sample.h"
 
 namespace tf {
 

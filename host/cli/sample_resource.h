@@ -8,7 +8,7 @@
 #include "core/resource.h"
 #include "flags/args.h"
 #include "flags/cli_common.h"
-#include "vulkan/pipeline.h"
+#include "vulkan/pipelines.h"
 #include <glm/vec4.hpp>
 #include <vector>
 

@@ -1,7 +1,7 @@
 #include "flags/cli_common.h"
 #include "core/analytic_texture.h"
 #include "core/environment.h"
-#include "vulkan/device_memory_check.h"
+#include "vulkan/device.h"
 #include "texture/error.h"
 #include "core/memory_budget.h"
 #include "core/numbers.h"

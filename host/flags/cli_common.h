@@ -5,7 +5,7 @@
 #include "core/filter.h"
 #include "scene/scene.h"
 #include "io/texture_source.h"
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 #include <memory>
 #include <vector>
 

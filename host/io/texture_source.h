@@ -41,7 +41,7 @@ std::string procedural_texture_names();
 void check_texture_name(const std::string& name_or_path);
 
 // The animated procedural texture: the only one with frames (--texture-frame), rebuilt every frame on the
-// device by the viewer with --build gpu (vulkan/dynamic_texture.h).
+// device by the viewer with --build gpu (vulkan/gpu_build.h).
 bool is_dynamic_texture(const TextureSource& source);
 constexpr int max_texture_frame = 1000000;
 

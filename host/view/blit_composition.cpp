@@ -1,6 +1,6 @@
 #include "view/blit_composition.h"
 #include "view/viewer.h"
-#include "vulkan/barriers.h"
+#include "vulkan/memory.h"
 #include <algorithm>
 #include <cmath>
 
@@ -47,16 +47,16 @@ bool can_blit(const Viewer& v)
 
 void record_blit_composition(VkCommandBuffer cb, const Viewer& v, VkImage target, bool with_loupe)
 {
-    image_barrier(cb, target, 1, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    image_barrier(cb, {.image = target, .from = {VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_IMAGE_LAYOUT_UNDEFINED},
+                       .to = scope::transfer_dst});
     const VkExtent2D extent = v.swapchain.extent;
     if (extent.width != uint32_t(v.scene_width) || extent.height != uint32_t(v.scene_height)) {
         // An odd last column or row beyond the scene's even size: black, as the composition pass leaves it.
         VkClearColorValue black{{0.0f, 0.0f, 0.0f, 1.0f}};
         VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         vkCmdClearColorImage(cb, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &range);
-        memory_barrier(cb, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_PIPELINE_STAGE_TRANSFER_BIT);
+        memory_barrier(cb, {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                           {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
     }
     const glm::dvec2 full(v.scene_width, v.scene_height);
     const int divider = divider_column(v);
@@ -69,14 +69,14 @@ void record_blit_composition(VkCommandBuffer cb, const Viewer& v, VkImage target
         const double zoom = std::max(1, v.controls.loupe_zoom);
         const glm::dvec2 d0 = glm::max(c - r, glm::dvec2(0.0)), d1 = glm::min(c + r, full);
         const HalfImage& half = v.images.has_b && c.x >= divider ? v.images.b : v.images.a;
-        memory_barrier(cb, VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_PIPELINE_STAGE_TRANSFER_BIT);
+        memory_barrier(cb, {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                           {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
         blit_region(cb, v, half, target, d0, d1, c + (d0 - c) / zoom, c + (d1 - c) / zoom);
     }
-    image_barrier(cb, target, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  VK_ACCESS_TRANSFER_WRITE_BIT,
-                  VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT);
+    image_barrier(cb, {.image = target, .from = scope::transfer_dst,
+                       .to = {VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                              VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                              VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}});
 }
 
 } // namespace tf

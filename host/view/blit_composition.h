@@ -4,7 +4,7 @@
 // the loupe a magnifying blit. On a CPU rasterizer this costs a tenth of the composition pass (a full-window
 // fragment shader), which is what keeps a moving camera interactive. The composition pass remains for what
 // blits cannot do: the error view, the compute stage's pixel buffers, an accumulated ground truth.
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 
 namespace tf {
 

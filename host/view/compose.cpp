@@ -1,5 +1,5 @@
 #include "view/compose.h"
-#include "vulkan/pipeline.h"
+#include "vulkan/pipelines.h"
 #include <cstring>
 
 #include "compose_frag.h"
@@ -27,10 +27,9 @@ void write_image_descriptors(ComposePass& p)
 
 } // namespace
 
-void create_compose_pass(const VulkanContext& context, VkRenderPass render_pass, ComposePass& p)
+void create_compose_pass(const VulkanContext& context, VkRenderPass render_pass, ComposePass& p, Cleanup& cleanup)
 {
     VkDevice device = context.device;
-    Cleanup& cleanup = p.cleanup;
     p.context = &context;
     VkDescriptorSetLayoutBinding bindings[3];
     for (uint32_t i = 0; i < 3; ++i)
@@ -69,19 +68,11 @@ void create_compose_pass(const VulkanContext& context, VkRenderPass render_pass,
     desc.render_pass = render_pass; // viewport and scissor: dynamic
     p.pipeline = create_graphics_pipeline(context, desc, p.layout, Filter::nearest, cleanup);
 
-    for (Buffer& b : p.images) // one pixel each until the viewer fills them
+    for (Buffer& b : p.images) { // one pixel each until the viewer fills them
         b = create_host_buffer(context, sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        cleanup.add([&context, &b] { destroy_buffer(context, b); }); // the buffer set_compose_image left
+    }
     write_image_descriptors(p);
-}
-
-void destroy_compose_pass(ComposePass& p)
-{
-    if (!p.context)
-        return;
-    for (Buffer& b : p.images)
-        destroy_buffer(*p.context, b);
-    Cleanup run; // the pipeline and its layouts, now rather than with the struct
-    std::swap(run.steps, p.cleanup.steps);
 }
 
 void set_compose_image(ComposePass& p, ComposeImage which, const Image& image)
@@ -89,7 +80,7 @@ void set_compose_image(ComposePass& p, ComposeImage which, const Image& image)
     Buffer& b = p.images[int(which)];
     const VkDeviceSize bytes = VkDeviceSize(image.width) * image.height * sizeof(glm::vec4);
     if (bytes > b.size) {
-        vkDeviceWaitIdle(p.context->device); // the last frame may still read the old buffer
+        TF_VK(vkDeviceWaitIdle(p.context->device)); // the last frame may still read the old buffer
         Buffer grown = create_host_buffer(*p.context, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         destroy_buffer(*p.context, b);
         b = grown;

@@ -4,7 +4,7 @@
 // The images live in host-visible buffers the viewer fills with the renderer's pixels.
 #include "texture/image.h"
 #include "vulkan/cleanup.h"
-#include "vulkan/resources.h"
+#include "vulkan/memory.h"
 #include <glm/glm.hpp>
 
 namespace tf {
@@ -30,12 +30,11 @@ struct ComposePass {
     VkPipeline pipeline = VK_NULL_HANDLE;
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
-    Buffer images[3];
-    Cleanup cleanup; // the objects above but the buffers; run by destroy_compose_pass
+    Buffer images[3]; // grown by set_compose_image
 };
 
-void create_compose_pass(const VulkanContext& context, VkRenderPass render_pass, ComposePass& pass);
-void destroy_compose_pass(ComposePass& pass);
+// Everything made (the buffers as they are then) is destroyed by `cleanup`; `pass` stays where it is until then.
+void create_compose_pass(const VulkanContext& context, VkRenderPass render_pass, ComposePass& pass, Cleanup& cleanup);
 // Copies `image` into the pass's buffer for `which`, growing it when needed (waits for the device first:
 // the viewer keeps one frame in flight).
 void set_compose_image(ComposePass& pass, ComposeImage which, const Image& image);

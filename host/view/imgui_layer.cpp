@@ -19,16 +19,17 @@ void check_result(VkResult result) { vk_check(result, "Dear ImGui's Vulkan backe
 
 } // namespace
 
-void create_imgui_layer(const VulkanContext& context, Window& window, const Swapchain& swapchain, ImGuiLayer& layer)
+void create_imgui_layer(const VulkanContext& context, Window& window, const Swapchain& swapchain, Cleanup& cleanup)
 {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
+    cleanup.add([] { ImGui::DestroyContext(); });
     ImGui::GetIO().IniFilename = nullptr; // no imgui.ini written into the user's directory
     ImGui::StyleColorsDark();
-    layer.started = true;
     if (!ImGui_ImplVulkan_LoadFunctions(load_function, const_cast<VulkanContext*>(&context)))
         throw Error("view: Dear ImGui's Vulkan backend could not load its Vulkan entry points");
-    layer.glfw_started = ImGui_ImplGlfw_InitForVulkan(window.handle, true);
+    if (ImGui_ImplGlfw_InitForVulkan(window.handle, true))
+        cleanup.add([] { ImGui_ImplGlfw_Shutdown(); });
 
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
     VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -36,7 +37,9 @@ void create_imgui_layer(const VulkanContext& context, Window& window, const Swap
     pool.maxSets = 4;
     pool.poolSizeCount = 1;
     pool.pPoolSizes = &size;
-    TF_VK(vkCreateDescriptorPool(context.device, &pool, nullptr, &layer.pool));
+    VkDescriptorPool descriptor_pool = VK_NULL_HANDLE; // the font texture's descriptor
+    TF_VK(vkCreateDescriptorPool(context.device, &pool, nullptr, &descriptor_pool));
+    cleanup.add([device = context.device, descriptor_pool] { vkDestroyDescriptorPool(device, descriptor_pool, nullptr); });
 
     ImGui_ImplVulkan_InitInfo info{};
     info.Instance = context.instance;
@@ -44,31 +47,16 @@ void create_imgui_layer(const VulkanContext& context, Window& window, const Swap
     info.Device = context.device;
     info.QueueFamily = context.queue_family;
     info.Queue = context.queue;
-    info.DescriptorPool = layer.pool;
+    info.DescriptorPool = descriptor_pool;
     info.MinImageCount = swapchain.min_image_count;
     info.ImageCount = uint32_t(swapchain.images.size());
     info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
     info.CheckVkResultFn = check_result;
-    layer.vulkan_started = ImGui_ImplVulkan_Init(&info, swapchain.render_pass);
-    if (!layer.vulkan_started)
+    if (!ImGui_ImplVulkan_Init(&info, swapchain.render_pass))
         throw Error("view: Dear ImGui's Vulkan backend did not start");
+    cleanup.add([] { ImGui_ImplVulkan_Shutdown(); });
     submit_and_wait(context, [](VkCommandBuffer cb) { ImGui_ImplVulkan_CreateFontsTexture(cb); });
     ImGui_ImplVulkan_DestroyFontUploadObjects();
-}
-
-void destroy_imgui_layer(const VulkanContext& context, ImGuiLayer& layer)
-{
-    if (context.device)
-        vkDeviceWaitIdle(context.device);
-    if (layer.vulkan_started)
-        ImGui_ImplVulkan_Shutdown();
-    if (layer.glfw_started)
-        ImGui_ImplGlfw_Shutdown();
-    if (layer.started)
-        ImGui::DestroyContext();
-    if (layer.pool)
-        vkDestroyDescriptorPool(context.device, layer.pool, nullptr);
-    layer = ImGuiLayer{};
 }
 
 void imgui_swapchain_recreated(const Swapchain& swapchain) { ImGui_ImplVulkan_SetMinImageCount(swapchain.min_image_count); }

@@ -4,18 +4,13 @@
 // are compiled here with IMGUI_IMPL_VULKAN_NO_PROTOTYPES and fed volk's entry points.
 #include "view/swapchain.h"
 #include "view/window.h"
+#include "vulkan/cleanup.h"
 
 namespace tf {
 
-struct ImGuiLayer {
-    VkDescriptorPool pool = VK_NULL_HANDLE; // the font texture's descriptor
-    bool started = false;        // the ImGui context
-    bool glfw_started = false;   // its GLFW backend
-    bool vulkan_started = false; // its Vulkan backend: each undone only if it was done
-};
-
-void create_imgui_layer(const VulkanContext& context, Window& window, const Swapchain& swapchain, ImGuiLayer& layer);
-void destroy_imgui_layer(const VulkanContext& context, ImGuiLayer& layer);
+// The ImGui context, its GLFW and Vulkan backends and the font texture's descriptor pool, each undone by
+// `cleanup` (the device idle first: the caller's).
+void create_imgui_layer(const VulkanContext& context, Window& window, const Swapchain& swapchain, Cleanup& cleanup);
 void imgui_swapchain_recreated(const Swapchain& swapchain);
 void imgui_begin_frame(); // then ImGui:: calls
 void imgui_end_frame();   // ImGui::Render

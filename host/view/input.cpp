@@ -42,7 +42,8 @@ void handle_input(Viewer& v, double seconds)
         if (step != 0 && is_dynamic_texture(v.state.texture)) {
             v.controls.texture_animate = false;
             const int frame = v.state.texture.texture_frame + step;
-            v.controls.message = set_viewer_texture_frame(v, frame < 0 ? max_texture_frame : frame % (max_texture_frame + 1));
+            const int wrapped = frame < 0 ? max_texture_frame : frame % (max_texture_frame + 1);
+            v.controls.message = problem_of([&] { set_viewer_texture_frame(v, wrapped); });
         }
         if (ImGui::IsKeyPressed(GLFW_KEY_L))
             v.controls.loupe = !v.controls.loupe;

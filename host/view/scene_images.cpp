@@ -1,6 +1,6 @@
 #include "view/scene_images.h"
 #include "reference/scene_cast.h"
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 #include <algorithm>
 #include <chrono>
 
@@ -49,7 +49,7 @@ SceneParams scaled_scene(const SceneParams& scene, int scale)
 
 void destroy_dynamic(SceneImages& images)
 {
-    if (images.dynamic && images.context)
+    if (images.dynamic)
         destroy_dynamic_texture(*images.context, *images.dynamic);
     images.dynamic.reset();
     images.dynamic_frame = -1;
@@ -84,8 +84,7 @@ void destroy_scene_images(SceneImages& images)
 {
     for (HalfImage* h : {&images.a, &images.b, &images.truth, &images.stats})
         h->renderers.clear();
-    if (images.context)
-        destroy_texture(*images.context, images.texture);
+    destroy_texture(*images.context, images.texture);
     destroy_dynamic(images);
     images.texture_has_sat = false;
 }

@@ -12,8 +12,8 @@
 #include "scene/scene.h"
 #include "texture/mip.h"
 #include "vulkan/render.h"
-#include "vulkan/dynamic_texture.h"
-#include "vulkan/upload.h"
+#include "vulkan/gpu_build.h"
+#include "vulkan/textures.h"
 #include <map>
 #include <memory>
 #include <optional>

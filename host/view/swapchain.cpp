@@ -59,6 +59,56 @@ void destroy_image_objects(const VulkanContext& context, Swapchain& s)
     s.images.clear();
 }
 
+// Blits put the scene on the window (a fraction of a full-screen pass's cost on a CPU rasterizer); where the
+// surface or format does not take them, the composition pass does it all.
+bool takes_blits(const VulkanContext& context, const VkSurfaceCapabilitiesKHR& caps, VkFormat format)
+{
+    VkFormatProperties features{};
+    vkGetPhysicalDeviceFormatProperties(context.physical, format, &features);
+    return (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT) &&
+           (features.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT);
+}
+
+VkExtent2D surface_extent(const VkSurfaceCapabilitiesKHR& caps, uint32_t width, uint32_t height)
+{
+    VkExtent2D extent{width, height};
+    if (caps.currentExtent.width != UINT32_MAX)
+        extent = caps.currentExtent; // X11: the window's size, which the surface dictates
+    extent.width = std::clamp(extent.width, caps.minImageExtent.width, caps.maxImageExtent.width);
+    extent.height = std::clamp(extent.height, caps.minImageExtent.height, caps.maxImageExtent.height);
+    return extent;
+}
+
+// Each image's view, framebuffer and `rendered` semaphore (destroy_image_objects undoes them).
+void create_image_objects(const VulkanContext& context, Swapchain& s)
+{
+    uint32_t count = 0;
+    TF_VK(vkGetSwapchainImagesKHR(context.device, s.handle, &count, nullptr));
+    s.images.resize(count);
+    TF_VK(vkGetSwapchainImagesKHR(context.device, s.handle, &count, s.images.data()));
+    for (VkImage image : s.images) {
+        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        view.image = image;
+        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        view.format = s.format;
+        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        s.views.push_back(VK_NULL_HANDLE);
+        TF_VK(vkCreateImageView(context.device, &view, nullptr, &s.views.back()));
+        VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+        fb.renderPass = s.render_pass;
+        fb.attachmentCount = 1;
+        fb.pAttachments = &s.views.back();
+        fb.width = s.extent.width;
+        fb.height = s.extent.height;
+        fb.layers = 1;
+        s.framebuffers.push_back(VK_NULL_HANDLE);
+        TF_VK(vkCreateFramebuffer(context.device, &fb, nullptr, &s.framebuffers.back()));
+        VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+        s.rendered.push_back(VK_NULL_HANDLE);
+        TF_VK(vkCreateSemaphore(context.device, &semaphore, nullptr, &s.rendered.back()));
+    }
+}
+
 } // namespace
 
 void check_present_support(const VulkanContext& context, VkSurfaceKHR surface)
@@ -94,19 +144,10 @@ void create_swapchain(const VulkanContext& context, VkSurfaceKHR surface, uint32
         throw Error("view: the window's surface on " + context.info.name +
                     " cannot be copied from (no TRANSFER_SRC usage): screenshots need it");
     VkSurfaceFormatKHR format = choose_surface_format(context, surface);
-    // Blits put the scene on the window (a fraction of a full-screen pass's cost on a CPU rasterizer); where the
-    // surface or format does not take them, the composition pass does it all.
-    VkFormatProperties features{};
-    vkGetPhysicalDeviceFormatProperties(context.physical, format.format, &features);
-    s.blit_target = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT) &&
-                    (features.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT);
+    s.blit_target = takes_blits(context, caps, format.format);
     if (s.blit_target)
         usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    VkExtent2D extent{width, height};
-    if (caps.currentExtent.width != UINT32_MAX)
-        extent = caps.currentExtent; // X11: the window's size, which the surface dictates
-    extent.width = std::clamp(extent.width, caps.minImageExtent.width, caps.maxImageExtent.width);
-    extent.height = std::clamp(extent.height, caps.minImageExtent.height, caps.maxImageExtent.height);
+    const VkExtent2D extent = surface_extent(caps, width, height);
     uint32_t images = std::max(caps.minImageCount, 2u);
     if (caps.maxImageCount)
         images = std::min(images, caps.maxImageCount);
@@ -131,8 +172,7 @@ void create_swapchain(const VulkanContext& context, VkSurfaceKHR surface, uint32
     VkSwapchainKHR handle = VK_NULL_HANDLE;
     TF_VK(vkCreateSwapchainKHR(context.device, &info, nullptr, &handle));
     destroy_image_objects(context, s);
-    if (s.handle)
-        vkDestroySwapchainKHR(context.device, s.handle, nullptr);
+    vkDestroySwapchainKHR(context.device, s.handle, nullptr); // the old one, if any
     s.handle = handle;
     if (s.render_pass && s.format != format.format) {
         vkDestroyRenderPass(context.device, s.render_pass, nullptr);
@@ -146,43 +186,15 @@ void create_swapchain(const VulkanContext& context, VkSurfaceKHR surface, uint32
         s.render_pass = create_render_pass(context, s.format, false);
         s.load_pass = create_render_pass(context, s.format, true);
     }
-
-    uint32_t count = 0;
-    TF_VK(vkGetSwapchainImagesKHR(context.device, s.handle, &count, nullptr));
-    s.images.resize(count);
-    TF_VK(vkGetSwapchainImagesKHR(context.device, s.handle, &count, s.images.data()));
-    for (VkImage image : s.images) {
-        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-        view.image = image;
-        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-        view.format = s.format;
-        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        s.views.push_back(VK_NULL_HANDLE);
-        TF_VK(vkCreateImageView(context.device, &view, nullptr, &s.views.back()));
-        VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        fb.renderPass = s.render_pass;
-        fb.attachmentCount = 1;
-        fb.pAttachments = &s.views.back();
-        fb.width = extent.width;
-        fb.height = extent.height;
-        fb.layers = 1;
-        s.framebuffers.push_back(VK_NULL_HANDLE);
-        TF_VK(vkCreateFramebuffer(context.device, &fb, nullptr, &s.framebuffers.back()));
-        VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-        s.rendered.push_back(VK_NULL_HANDLE);
-        TF_VK(vkCreateSemaphore(context.device, &semaphore, nullptr, &s.rendered.back()));
-    }
+    create_image_objects(context, s);
 }
 
 void destroy_swapchain(const VulkanContext& context, Swapchain& s)
 {
     destroy_image_objects(context, s);
-    if (s.handle)
-        vkDestroySwapchainKHR(context.device, s.handle, nullptr);
-    if (s.render_pass)
-        vkDestroyRenderPass(context.device, s.render_pass, nullptr);
-    if (s.load_pass)
-        vkDestroyRenderPass(context.device, s.load_pass, nullptr);
+    vkDestroySwapchainKHR(context.device, s.handle, nullptr);
+    vkDestroyRenderPass(context.device, s.render_pass, nullptr);
+    vkDestroyRenderPass(context.device, s.load_pass, nullptr);
     s = Swapchain{};
 }
 

@@ -2,7 +2,7 @@
 // The window's swapchain: images, views, one render pass (the scene's composition, then the UI, in one
 // subpass) and a framebuffer per image. Recreated when the window's size changes; never made at zero extent
 // (a minimised window) — the viewer waits instead.
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 #include <vector>
 
 namespace tf {
@@ -31,7 +31,8 @@ VkSurfaceFormatKHR choose_surface_format(const VulkanContext& context, VkSurface
 // allows). The images can be copied from (screenshots). Throws tf::Error naming what the surface lacks.
 void create_swapchain(const VulkanContext& context, VkSurfaceKHR surface, uint32_t width, uint32_t height,
                       Swapchain& swapchain);
-void destroy_swapchain(const VulkanContext& context, Swapchain& swapchain); // everything, render pass included
+// Everything, render passes included: the viewer registers it in its Cleanup once, after the first create.
+void destroy_swapchain(const VulkanContext& context, Swapchain& swapchain);
 
 // Throws unless the context's queue can present to the surface.
 void check_present_support(const VulkanContext& context, VkSurfaceKHR surface);

@@ -191,6 +191,123 @@ void overlays(Viewer& v)
 
 } // namespace
 
+namespace {
+
+// The texture: its name or path, its size, its frame (the dynamic texture), and the last problem.
+bool texture_widgets(Viewer& v, ViewState& next)
+{
+    bool changed = false;
+    // The field is filled with the loaded texture whenever that changes (load, a drop, a script).
+    char* texture = v.controls.texture_field.data();
+    if (v.controls.texture_shown != v.state.texture.name_or_path) {
+        std::snprintf(texture, v.controls.texture_field.size(), "%s", v.state.texture.name_or_path.c_str());
+        v.controls.texture_shown = v.state.texture.name_or_path;
+    }
+    ImGui::InputText("texture", texture, v.controls.texture_field.size());
+    ImGui::SliderInt("texture size", &next.texture.procedural_size, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::Button("load") || next.texture.procedural_size != v.state.texture.procedural_size) {
+        next.texture.name_or_path = texture;
+        changed = true;
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("(or drop an image file on the window)");
+    if (is_dynamic_texture(v.state.texture)) { // its frame; with --build gpu it animates, rebuilt on the device
+        if (rebuilt_on_device(v.state.texture))
+            ImGui::Checkbox("animate the texture (T)", &v.controls.texture_animate);
+        int frame = next.texture.texture_frame;
+        if (ImGui::InputInt("texture frame", &frame) && frame != next.texture.texture_frame) {
+            next.texture.texture_frame = std::clamp(frame, 0, max_texture_frame);
+            v.controls.texture_animate = false; // a frame chosen is a frame to look at
+            changed = true;
+        }
+    }
+    if (!v.controls.message.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", v.controls.message.c_str());
+    return changed;
+}
+
+// How the scene is rendered and shown: stage, derivatives, debug view.
+bool render_widgets(Viewer& v, ViewState& next)
+{
+    bool changed = false;
+    changed |= enum_combo("stage", next.render.stage, 0, 1, stage_name);
+    changed |= enum_combo("derivatives", next.render.gradients, HARNESS_GRADIENTS_FINE, HARNESS_GRADIENTS_CONE,
+                          gradients_name);
+    const char* views[] = {"color", "lod", "anisotropy", "fetches", "error"};
+    if (ImGui::BeginCombo("view", next.view.c_str())) {
+        for (const char* name : views)
+            if (ImGui::Selectable(name, next.view == name)) {
+                next.view = name;
+                changed = true;
+            }
+        ImGui::EndCombo();
+    }
+    if (next.view == "error")
+        ImGui::SliderFloat("error scale", &v.controls.error_max, 0.001f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    return changed;
+}
+
+// Filter A, and B beside it: another filter or the ground truth.
+bool halves_widgets(Viewer& v, ViewState& next)
+{
+    bool changed = false;
+    if (ImGui::CollapsingHeader("filter A", ImGuiTreeNodeFlags_DefaultOpen))
+        changed |= filter_widgets("a", next.a.options);
+    bool compare = next.b.has_value() && !v.controls.truth;
+    if (ImGui::Checkbox("compare with B", &compare)) {
+        v.controls.truth = false;
+        if (compare)
+            next.b = next.b.value_or(ViewHalf{next.a.options});
+        else
+            next.b.reset();
+        changed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Checkbox("ground truth", &v.controls.truth)) {
+        if (!v.controls.truth)
+            next.b.reset();
+        changed = true;
+    }
+    if (compare && next.b && ImGui::CollapsingHeader("filter B", ImGuiTreeNodeFlags_DefaultOpen))
+        changed |= filter_widgets("b", next.b->options);
+    return changed;
+}
+
+// The camera, the loupe and the footprint overlay.
+bool camera_widgets(Viewer& v, ViewState& next)
+{
+    bool changed = false;
+    if (ImGui::CollapsingHeader("camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Checkbox("orbit (else fly)", &v.controls.orbit);
+        ImGui::SameLine();
+        if (ImGui::Button("reset")) {
+            v.controls.camera_set = false;
+            next.frame = 0;
+            changed = true;
+            scene_changed(v);
+        }
+        ImGui::Checkbox("animate along the camera path", &v.controls.animate);
+        ImGui::TextDisabled("WASD/QE fly, drag: turn (orbit), wheel: forward");
+        ImGui::Checkbox("loupe", &v.controls.loupe);
+        ImGui::SameLine();
+        ImGui::SliderInt("zoom", &v.controls.loupe_zoom, 2, 32);
+        ImGui::Checkbox("footprint under the cursor", &v.controls.footprint);
+    }
+    return changed;
+}
+
+void screenshot_widgets(Viewer& v)
+{
+    char* shot = v.controls.screenshot_field.data();
+    ImGui::InputText("##shot", shot, v.controls.screenshot_field.size());
+    ImGui::SameLine();
+    if (ImGui::Button("screenshot")) {
+        v.controls.pending_screenshot = shot; // taken between frames, not inside this one
+    }
+}
+
+} // namespace
+
 void build_ui(Viewer& v)
 {
     hud(v);
@@ -202,91 +319,15 @@ void build_ui(Viewer& v)
     ImGui::SetNextWindowBgAlpha(0.85f);
     if (ImGui::Begin("texfilter")) {
         changed |= enum_combo("scene", next.scene, 0, int(SceneKind::mesh), scene_name);
-        // The field is filled with the loaded texture whenever that changes (load, a drop, a script).
-        char* texture = v.controls.texture_field.data();
-        if (v.controls.texture_shown != v.state.texture.name_or_path) {
-            std::snprintf(texture, v.controls.texture_field.size(), "%s", v.state.texture.name_or_path.c_str());
-            v.controls.texture_shown = v.state.texture.name_or_path;
-        }
-        ImGui::InputText("texture", texture, v.controls.texture_field.size());
-        ImGui::SliderInt("texture size", &next.texture.procedural_size, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
-        if (ImGui::Button("load") || next.texture.procedural_size != v.state.texture.procedural_size) {
-            next.texture.name_or_path = texture;
-            changed = true;
-        }
-        ImGui::SameLine();
-        ImGui::TextDisabled("(or drop an image file on the window)");
-        if (is_dynamic_texture(v.state.texture)) { // its frame; with --build gpu it animates, rebuilt on the device
-            if (rebuilt_on_device(v.state.texture))
-                ImGui::Checkbox("animate the texture (T)", &v.controls.texture_animate);
-            int frame = next.texture.texture_frame;
-            if (ImGui::InputInt("texture frame", &frame) && frame != next.texture.texture_frame) {
-                next.texture.texture_frame = std::clamp(frame, 0, max_texture_frame);
-                v.controls.texture_animate = false; // a frame chosen is a frame to look at
-                changed = true;
-            }
-        }
-        if (!v.controls.message.empty())
-            ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", v.controls.message.c_str());
-        changed |= enum_combo("stage", next.render.stage, 0, 1, stage_name);
-        changed |= enum_combo("derivatives", next.render.gradients, HARNESS_GRADIENTS_FINE, HARNESS_GRADIENTS_CONE,
-                              gradients_name);
-        const char* views[] = {"color", "lod", "anisotropy", "fetches", "error"};
-        if (ImGui::BeginCombo("view", next.view.c_str())) {
-            for (const char* name : views)
-                if (ImGui::Selectable(name, next.view == name)) {
-                    next.view = name;
-                    changed = true;
-                }
-            ImGui::EndCombo();
-        }
-        if (next.view == "error")
-            ImGui::SliderFloat("error scale", &v.controls.error_max, 0.001f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
-        if (ImGui::CollapsingHeader("filter A", ImGuiTreeNodeFlags_DefaultOpen))
-            changed |= filter_widgets("a", next.a.options);
-        bool compare = next.b.has_value() && !v.controls.truth;
-        if (ImGui::Checkbox("compare with B", &compare)) {
-            v.controls.truth = false;
-            if (compare)
-                next.b = next.b.value_or(ViewHalf{next.a.options});
-            else
-                next.b.reset();
-            changed = true;
-        }
-        ImGui::SameLine();
-        if (ImGui::Checkbox("ground truth", &v.controls.truth)) {
-            if (!v.controls.truth)
-                next.b.reset();
-            changed = true;
-        }
-        if (compare && next.b && ImGui::CollapsingHeader("filter B", ImGuiTreeNodeFlags_DefaultOpen))
-            changed |= filter_widgets("b", next.b->options);
-        if (ImGui::CollapsingHeader("camera", ImGuiTreeNodeFlags_DefaultOpen)) {
-            ImGui::Checkbox("orbit (else fly)", &v.controls.orbit);
-            ImGui::SameLine();
-            if (ImGui::Button("reset")) {
-                v.controls.camera_set = false;
-                next.frame = 0;
-                changed = true;
-                scene_changed(v);
-            }
-            ImGui::Checkbox("animate along the camera path", &v.controls.animate);
-            ImGui::TextDisabled("WASD/QE fly, drag: turn (orbit), wheel: forward");
-            ImGui::Checkbox("loupe", &v.controls.loupe);
-            ImGui::SameLine();
-            ImGui::SliderInt("zoom", &v.controls.loupe_zoom, 2, 32);
-            ImGui::Checkbox("footprint under the cursor", &v.controls.footprint);
-        }
-        char* shot = v.controls.screenshot_field.data();
-        ImGui::InputText("##shot", shot, v.controls.screenshot_field.size());
-        ImGui::SameLine();
-        if (ImGui::Button("screenshot")) {
-            v.controls.pending_screenshot = shot; // taken between frames, not inside this one
-        }
+        changed |= texture_widgets(v, next);
+        changed |= render_widgets(v, next);
+        changed |= halves_widgets(v, next);
+        changed |= camera_widgets(v, next);
+        screenshot_widgets(v);
     }
     ImGui::End();
     if (changed) {
-        std::string problem = apply_state(v, next);
+        const std::string problem = problem_of([&] { apply_state(v, next); });
         if (!problem.empty())
             v.controls.message = problem;
     }

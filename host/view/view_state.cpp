@@ -323,6 +323,56 @@ std::string state_to_json(const ViewState& state)
     return j.dump(2) + "\n";
 }
 
+namespace {
+
+// The state's "texture" object.
+TextureSource read_texture(const Reader& r, const json& texture)
+{
+    TextureSource t;
+    r.only(texture, "texture", {"name", "size", "linear", "memory-budget", "build", "frame"});
+    t.name_or_path = r.string(r.member(texture, "texture.name", "name"), "texture.name");
+    if (t.name_or_path.empty())
+        r.fail("texture.name", "empty (a procedural name or an image file)");
+    if (texture.contains("size"))
+        t.procedural_size = r.integer(texture["size"], "texture.size", 1, max_texture_dimension);
+    if (texture.contains("linear")) {
+        if (!texture["linear"].is_boolean())
+            r.fail("texture.linear", "expected true or false, got " + texture["linear"].dump());
+        t.color = texture["linear"].get<bool>() ? ColorSpace::linear : ColorSpace::automatic;
+    }
+    if (texture.contains("build"))
+        t.build = r.parsed("texture.build",
+                                   [&] { return parse_texture_build(r.string(texture["build"], "texture.build")); });
+    if (texture.contains("frame")) {
+        t.texture_frame = r.integer(texture["frame"], "texture.frame", 0, max_texture_frame);
+        if (t.texture_frame != 0 && !is_dynamic_texture(t))
+            r.fail("texture.frame", "only the dynamic texture has frames (the texture is " + t.name_or_path + ")");
+    }
+    if (texture.contains("memory-budget")) {
+        const json& budget = texture["memory-budget"];
+        if (!budget.is_number_unsigned() && !(budget.is_number_integer() && budget.get<long long>() >= 0))
+            r.fail("texture.memory-budget", "expected a whole number of bytes (0: the default), got " + budget.dump());
+        t.memory_budget = budget.get<uint64_t>();
+    }
+    return t;
+}
+
+// The state's "render" object: the stage and derivatives `scene` allows.
+RenderOptions read_render(const Reader& r, const json& render, SceneKind scene)
+{
+    r.only(render, "render", {"stage", "derivatives"});
+    const Stage stage = r.parsed("render.stage", [&] {
+        return parse_stage(render.contains("stage") ? r.string(render["stage"], "render.stage") : "fragment");
+    });
+    const Gradients gradients = r.parsed("render.derivatives", [&] {
+        return parse_gradients(render.contains("derivatives") ? r.string(render["derivatives"], "render.derivatives")
+                                                              : "fine");
+    });
+    return r.parsed("render", [&] { return make_render_options(scene, stage, gradients); });
+}
+
+} // namespace
+
 ViewState state_from_json(const std::string& text, const std::string& name)
 {
     json j;
@@ -340,42 +390,10 @@ ViewState state_from_json(const std::string& text, const std::string& name)
     s.scene = r.parsed("scene", [&] { return parse_viewer_scene(r.string(r.member(j, "scene", "scene"), "scene")); });
 
     const json& texture = r.member(j, "texture", "texture");
-    r.only(texture, "texture", {"name", "size", "linear", "memory-budget", "build", "frame"});
-    s.texture.name_or_path = r.string(r.member(texture, "texture.name", "name"), "texture.name");
-    if (s.texture.name_or_path.empty())
-        r.fail("texture.name", "empty (a procedural name or an image file)");
-    if (texture.contains("size"))
-        s.texture.procedural_size = r.integer(texture["size"], "texture.size", 1, max_texture_dimension);
-    if (texture.contains("linear")) {
-        if (!texture["linear"].is_boolean())
-            r.fail("texture.linear", "expected true or false, got " + texture["linear"].dump());
-        s.texture.color = texture["linear"].get<bool>() ? ColorSpace::linear : ColorSpace::automatic;
-    }
-    if (texture.contains("build"))
-        s.texture.build = r.parsed("texture.build",
-                                   [&] { return parse_texture_build(r.string(texture["build"], "texture.build")); });
-    if (texture.contains("frame")) {
-        s.texture.texture_frame = r.integer(texture["frame"], "texture.frame", 0, max_texture_frame);
-        if (s.texture.texture_frame != 0 && !is_dynamic_texture(s.texture))
-            r.fail("texture.frame", "only the dynamic texture has frames (the texture is " + s.texture.name_or_path + ")");
-    }
-    if (texture.contains("memory-budget")) {
-        const json& budget = texture["memory-budget"];
-        if (!budget.is_number_unsigned() && !(budget.is_number_integer() && budget.get<long long>() >= 0))
-            r.fail("texture.memory-budget", "expected a whole number of bytes (0: the default), got " + budget.dump());
-        s.texture.memory_budget = budget.get<uint64_t>();
-    }
+    s.texture = read_texture(r, texture);
 
     const json& render = r.member(j, "render", "render");
-    r.only(render, "render", {"stage", "derivatives"});
-    const Stage stage = r.parsed("render.stage", [&] {
-        return parse_stage(render.contains("stage") ? r.string(render["stage"], "render.stage") : "fragment");
-    });
-    const Gradients gradients = r.parsed("render.derivatives", [&] {
-        return parse_gradients(render.contains("derivatives") ? r.string(render["derivatives"], "render.derivatives")
-                                                              : "fine");
-    });
-    s.render = r.parsed("render", [&] { return make_render_options(s.scene, stage, gradients); });
+    s.render = read_render(r, render, s.scene);
 
     // Sides as `texfilter render --size` takes them, so that the saved frame can be rendered again.
     s.width = r.integer(r.member(j, "width", "width"), "width", 2, 8192);

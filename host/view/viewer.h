@@ -14,6 +14,7 @@
 #include "scene/camera.h"
 #include <array>
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,7 +72,6 @@ struct Viewer {
     VkSurfaceKHR surface = VK_NULL_HANDLE;
     Swapchain swapchain;
     ComposePass compose;
-    ImGuiLayer imgui;
     SceneImages images;
     VkSemaphore acquired = VK_NULL_HANDLE;
     VkFence frame_done = VK_NULL_HANDLE;
@@ -91,8 +91,14 @@ int run_viewer(const ViewOptions& options);
 // viewer.cpp
 SceneParams current_scene(const Viewer& viewer);
 void scene_changed(Viewer& viewer); // camera, frame, size or scene: images start over, the camera counts as moving
-// Applies a new ViewState (scene, texture, filters); a texture that fails keeps the old one and returns the message.
-std::string apply_state(Viewer& viewer, const ViewState& next);
+// The view layer's one error style: what the viewer refuses throws tf::Error (a texture that does not load,
+// a sat filter on the dynamic texture, a texture without frames), with the previous state kept. Before the
+// window opens the error ends the viewer; afterwards the callers that go on (the UI, keys, a dropped file,
+// the script) show its message: problem_of.
+// Applies a new ViewState (scene, texture, filters).
+void apply_state(Viewer& viewer, const ViewState& next);
+// Runs `change`: its tf::Error's message, or "" when it went through.
+std::string problem_of(const std::function<void()>& change);
 // Renders and presents one frame; with_ui false: the scene alone (screenshots). Returns false when there
 // was nothing to present to (minimised).
 // capture (or null): the presented image is also copied there (screenshots).
@@ -106,15 +112,15 @@ bool rebuilt_on_device(const TextureSource& texture);
 bool texture_animates(const Viewer& viewer); // rebuilt on the device and animating
 // The next texture frame (after max_texture_frame, 0 again): the halves re-render at the next draw_frame.
 void advance_texture_frame(Viewer& viewer);
-// A problem (for the UI and the script's stderr) when the texture has no frames; else sets it, "".
-std::string set_viewer_texture_frame(Viewer& viewer, int frame);
+// Throws tf::Error when the texture has no frames.
+void set_viewer_texture_frame(Viewer& viewer, int frame);
 
 void upload_compose_images(Viewer& viewer); // the halves' images into the composition pass's buffers
 bool moving_now(const Viewer& viewer);      // the camera moved within the settle time, or it or the texture animates
 bool images_complete(const Viewer& viewer); // every half at full size with all its samples
 void take_dropped_files(Viewer& viewer);    // a file dropped onto the window becomes the texture
-void create_frame_objects(Viewer& viewer);  // the acquire semaphore, the frame fence, the command buffer
-void destroy_frame_objects(Viewer& viewer);
+// The acquire semaphore, the frame fence, the command pool and buffer; destroyed by `cleanup`.
+void create_frame_objects(Viewer& viewer, Cleanup& cleanup);
 
 // screenshot.cpp: the frame just presented (the scene alone, or with_ui the whole window) to PNG, and beside a
 // scene screenshot PATH.txt (the texfilter render lines) and PATH.json (the state, for --state). Refused,

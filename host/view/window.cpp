@@ -74,12 +74,11 @@ Window* create_window(int width, int height, const std::string& title)
 
 void destroy_window(Window* window)
 {
-    if (window) {
-        glfwDestroyWindow(window->handle);
-        delete window;
-    }
-    glfwTerminate();
+    glfwDestroyWindow(window->handle);
+    delete window;
 }
+
+void terminate_window_system() { glfwTerminate(); }
 
 VkSurfaceKHR create_window_surface(const VulkanContext& context, const Window& window)
 {

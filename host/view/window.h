@@ -1,7 +1,7 @@
 #pragma once
 // The viewer's window: GLFW on X11 with no client API (Vulkan draws into it), and what the window system
 // tells the viewer between frames (size, minimised, files dropped, close).
-#include "vulkan/context.h"
+#include "vulkan/device.h"
 #include <string>
 #include <vector>
 
@@ -16,12 +16,13 @@ struct Window {
 };
 
 // Throws tf::Error with one sentence when there is no display (DISPLAY unset, or the X server refuses).
-// GLFW stays initialised until destroy_window.
+// GLFW stays initialised until terminate_window_system.
 void init_window_system();
+void terminate_window_system();
 // The instance extensions a surface on this window system needs.
 std::vector<std::string> window_instance_extensions();
 Window* create_window(int width, int height, const std::string& title);
-void destroy_window(Window* window); // and terminates GLFW
+void destroy_window(Window* window);
 VkSurfaceKHR create_window_surface(const VulkanContext& context, const Window& window);
 
 // The framebuffer's size in pixels; zero while minimised.

@@ -5,9 +5,10 @@
 #include "core/lookup_stats.h"
 #include "core/lookup.h"
 #include "scene/scene.h"
-#include "vulkan/context.h"
-#include "vulkan/pipeline.h"
-#include "vulkan/upload.h"
+#include "vulkan/device.h"
+#include "vulkan/gpu_build.h"
+#include "vulkan/pipelines.h"
+#include "vulkan/textures.h"
 #include <glm/vec4.hpp>
 #include <functional>
 #include <vector>
@@ -16,7 +17,7 @@ namespace tf {
 
 // Renders the scene: ray-cast in a fragment shader (full-screen triangle) or a compute shader (2x2 quads
 // from subgroup quad operations), or, with render.rasterize, its triangles through the raster pipeline.
-// cache: pipelines kept across renders (vulkan/render_pipeline.h; golden), null for a pipeline of its own.
+// cache: pipelines kept across renders (vulkan/render.h; golden), null for a pipeline of its own.
 struct RenderPipelineCache;
 Image gpu_render(const VulkanContext& context, const GpuTexture& texture, const SceneParams& scene,
                  const SamplerOptions& options, const RenderOptions& render, RenderPipelineCache* cache = nullptr);
@@ -26,7 +27,7 @@ std::vector<glm::vec4> gpu_sample(const VulkanContext& context, const GpuTexture
                                   std::vector<LookupStats>* stats = nullptr,
                                   const std::function<void(VkCommandBuffer)>& prelude = {}); // recorded first, same submission
 // The same through a lookup shader given instead of the built-in one (sample --spirv: SPIR-V from another
-// compiler, checked by vulkan/spirv_module.h), for a float texture bound as the combined kind.
+// compiler, checked by vulkan/pipelines.h), for a float texture bound as the combined kind.
 std::vector<glm::vec4> gpu_sample_with_shader(const VulkanContext& context, const GpuTexture& texture,
                                               const std::vector<Lookup>& lookups, const SamplerOptions& options,
                                               ShaderCode shader, std::vector<LookupStats>* stats = nullptr,

@@ -3,12 +3,9 @@
 
 #include "harness/config.h"
 #include "texture/error.h"
-#include "vulkan/harness_shaders.h"
-#include "vulkan/harness_spirv.h"
-#include "vulkan/pipeline.h"
-#include "vulkan/render_targets.h"
-#include "vulkan/resource_images.h"
-#include "vulkan/samplers.h"
+#include "vulkan/pipelines.h"
+#include "vulkan/render.h"
+#include "vulkan/textures.h"
 #include <cstring>
 
 namespace tf {
@@ -84,6 +81,62 @@ void destroy_environment(const VulkanContext& context, GpuEnvironment& environme
     environment = GpuEnvironment{};
 }
 
+namespace {
+
+// The map with the filter's sampler, and for a cube also with a nearest one.
+std::vector<PassImages> environment_images(const VulkanContext& context, const GpuEnvironment& environment,
+                                           const SamplerOptions& options, Cleanup& cleanup)
+{
+    // The filter's sampler (hw-*: its state; manual filters: trilinear for the hardware taps). A cube's
+    // address modes are not used (cube sampling clamps and crosses faces itself); a lat-long map repeats in u
+    // and clamps in v (the device cannot cross a pole).
+    VkSamplerCreateInfo linear = sampler_create_info(context, options, environment.levels);
+    linear.addressModeU = environment.map == EnvMap::latlong ? VK_SAMPLER_ADDRESS_MODE_REPEAT
+                                                             : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    linear.addressModeV = linear.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    const VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    std::vector<PassImages> images = {{HARNESS_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                       {{make_sampler(context, linear, cleanup), environment.image.view, layout}}}};
+    if (environment.map == EnvMap::cube) {
+        // The manual cube filters read each texel at its centre's direction: NEAREST in and between levels.
+        VkSamplerCreateInfo nearest = linear;
+        nearest.magFilter = nearest.minFilter = VK_FILTER_NEAREST;
+        nearest.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+        nearest.anisotropyEnable = VK_FALSE;
+        nearest.mipLodBias = 0.0f;
+        nearest.minLod = 0.0f;
+        nearest.maxLod = float(environment.levels - 1);
+        images.push_back({HARNESS_BINDING_TEXTURE_NEAREST, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                          {{make_sampler(context, nearest, cleanup), environment.image.view, layout}}});
+    }
+    return images;
+}
+
+// The renderer's pipeline: the cache's for the same map kind, filter and size, else a new one (kept by the
+// cache, or by the renderer).
+VkPipeline environment_pipeline(const VulkanContext& context, const GpuEnvironment& environment, GpuRenderer& r,
+                                const FilterVariant& variant, EnvironmentPipelineCache* cache)
+{
+    if (cache)
+        for (const EnvironmentPipelineCache::Entry& e : cache->entries)
+            if (e.map == environment.map && e.filter == variant && e.width == r.width && e.height == r.height)
+                return e.pipeline;
+    GraphicsPipelineDesc desc;
+    desc.color_format = render_color_format;
+    desc.width = r.width;
+    desc.height = r.height;
+    desc.vertex = harness_shader(HarnessShader::render_vert, TextureFormat::rgba32f);
+    const SpirvWords fragment = environment.map == EnvMap::cube ? env_spirv_cube() : env_spirv_latlong();
+    desc.fragment = {fragment.words, fragment.bytes};
+    const VkPipeline pipeline = create_graphics_pipeline(context, desc, r.pass.pipeline_layout, variant,
+                                                         cache ? cache->cleanup : r.cleanup);
+    if (cache)
+        cache->entries.push_back({environment.map, variant, r.width, r.height, pipeline});
+    return pipeline;
+}
+
+} // namespace
+
 std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& context, const GpuEnvironment& environment,
                                                          const SceneParams& scene, const SamplerOptions& options,
                                                          const RenderOptions& render, EnvironmentPipelineCache* cache)
@@ -108,50 +161,13 @@ std::unique_ptr<GpuRenderer> create_environment_renderer(const VulkanContext& co
     std::memcpy(r.uniforms.mapped, &scene, sizeof(SceneParams));
     r.targets = create_render_targets(context, r.width, r.height, false, cleanup);
 
-    // The filter's sampler (hw-*: its state; manual filters: trilinear for the hardware taps). A cube's
-    // address modes are not used (cube sampling clamps and crosses faces itself); a lat-long map repeats in u
-    // and clamps in v (the device cannot cross a pole).
-    VkSamplerCreateInfo linear = sampler_create_info(context, options, environment.levels);
-    linear.addressModeU = environment.map == EnvMap::latlong ? VK_SAMPLER_ADDRESS_MODE_REPEAT
-                                                             : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    linear.addressModeV = linear.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    const VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    std::vector<PassImages> images = {{HARNESS_BINDING_TEXTURE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                       {{make_sampler(context, linear, cleanup), environment.image.view, layout}}}};
-    if (environment.map == EnvMap::cube) {
-        // The manual cube filters read each texel at its centre's direction: NEAREST in and between levels.
-        VkSamplerCreateInfo nearest = linear;
-        nearest.magFilter = nearest.minFilter = VK_FILTER_NEAREST;
-        nearest.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-        nearest.anisotropyEnable = VK_FALSE;
-        nearest.mipLodBias = 0.0f;
-        nearest.minLod = 0.0f;
-        nearest.maxLod = float(environment.levels - 1);
-        images.push_back({HARNESS_BINDING_TEXTURE_NEAREST, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                          {{make_sampler(context, nearest, cleanup), environment.image.view, layout}}});
-    }
+    const std::vector<PassImages> images = environment_images(context, environment, options, cleanup);
     const std::vector<PassBuffer> buffers = {
         {HARNESS_BINDING_SCENE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, r.uniforms.buffer, sizeof(SceneParams)}};
     r.pass = create_pass_with_images(context, images, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                                      VK_SHADER_STAGE_FRAGMENT_BIT, buffers, cleanup);
     const FilterVariant variant = render_variant(options, render, -1); // views are refused above; no 2D cast
-    if (cache)
-        for (const EnvironmentPipelineCache::Entry& e : cache->entries)
-            if (e.map == environment.map && e.filter == variant && e.width == r.width && e.height == r.height) {
-                r.pipeline = e.pipeline;
-                return renderer;
-            }
-    GraphicsPipelineDesc desc;
-    desc.color_format = render_color_format;
-    desc.width = r.width;
-    desc.height = r.height;
-    desc.vertex = harness_shader(HarnessShader::render_vert, TextureFormat::rgba32f);
-    const SpirvWords fragment = environment.map == EnvMap::cube ? env_spirv_cube() : env_spirv_latlong();
-    desc.fragment = {fragment.words, fragment.bytes};
-    r.pipeline = create_graphics_pipeline(context, desc, r.pass.pipeline_layout, variant,
-                                          cache ? cache->cleanup : cleanup);
-    if (cache)
-        cache->entries.push_back({environment.map, variant, r.width, r.height, r.pipeline});
+    r.pipeline = environment_pipeline(context, environment, r, variant, cache);
     return renderer;
 }
 

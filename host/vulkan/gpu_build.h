@@ -1,19 +1,23 @@
 #pragma once
-// What the filters read, built on the device: the MIP chain (build_mip.comp.glsl, the passes of
-// tf::plan_mip_build) and the summed-area table (build_sat.comp.glsl), recorded into the caller's command
-// buffer, so a texture made on the GPU can be built and filtered in one submission.
+// MIP chains and summed-area tables built on the device (build_mip.comp.glsl, build_sat.comp.glsl), a
+// texture uploaded as level 0 and built there, and the dynamic texture made on the device every frame.
+#include "core/texture_build.h"
 #include "core/texture_format.h"
 #include "texture/mip.h"
 #include "texture/sat.h"
 #include "vulkan/cleanup.h"
-#include "vulkan/image.h"
-#include "vulkan/resources.h"
+#include "vulkan/memory.h"
+#include "vulkan/textures.h"
 #include <glm/vec4.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace tf {
 
+// What the filters read, built on the device: the MIP chain (build_mip.comp.glsl, the passes of
+// tf::plan_mip_build) and the summed-area table (build_sat.comp.glsl), recorded into the caller's command
+// buffer, so a texture made on the GPU can be built and filtered in one submission.
 // The two build pipelines of one device. exact_sat: the SAT quantises in double (shaderFloat64), so its
 // tables equal tf::build_sat's bit for bit; without doubles it quantises in float (within one level).
 struct GpuBuildKernels {
@@ -59,8 +63,17 @@ MipBuildTarget create_mip_build_target(const VulkanContext& context, const GpuBu
 // After: levels 1.. written by compute shaders (the caller's barrier makes them visible to its reads).
 void record_mip_build(VkCommandBuffer command_buffer, const GpuBuildKernels& kernels, const MipBuildTarget& target);
 
-// The two table images (RGBA32UI low words, R32UI high bytes; storage + sampled), the range words and the
-// descriptor set of a SAT build reading `level0_view` (a storage view of an RGBA32F level 0, GENERAL).
+// The two table images of a width x height texture (RGBA32UI low words, R32UI high bytes, one texel more a
+// side; storage + sampled). Throws tf::Error for a side outside 1..sat_max_dimension or beyond the device's
+// maxImageDimension2D. The caller's, as create_image's image is (destroy_sat_images, or a GpuTexture's).
+struct SatImages {
+    GpuImage low, high;
+};
+SatImages create_sat_images(const VulkanContext& context, int width, int height);
+void destroy_sat_images(const VulkanContext& context, SatImages& images);
+
+// The range words and the descriptor set of a SAT build reading `level0_view` (a storage view of an RGBA32F
+// level 0, GENERAL) into the images of create_sat_images (low and high: copies, not owned).
 struct SatBuildTarget {
     int width = 0, height = 0;
     GpuImage low, high;
@@ -69,10 +82,10 @@ struct SatBuildTarget {
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
 };
-// Throws tf::Error for a side outside 1..sat_max_dimension. Everything but the two images goes with the
-// cleanup; the images are the caller's (destroy_image, or hand them on to a GpuTexture).
+// Everything made is destroyed by `cleanup`.
 SatBuildTarget create_sat_build_target(const VulkanContext& context, const GpuBuildKernels& kernels,
-                                       VkImageView level0_view, int width, int height, Cleanup& cleanup);
+                                       VkImageView level0_view, const SatImages& images, int width, int height,
+                                       Cleanup& cleanup);
 
 // Before: level 0 written and visible to compute-shader reads, low and high in GENERAL layout (as
 // record_sat_layouts leaves them). After: both tables written by compute shaders, and the range words
@@ -106,5 +119,101 @@ void record_pack_levels(VkCommandBuffer command_buffer, const GpuBuildKernels& k
 // `texture_name` for a non-finite texel).
 void read_sat_range(const SatBuildTarget& target, const std::string& texture_name, glm::vec4& offset,
                     glm::vec4& scale);
+
+// A texture whose levels (and summed-area table) the device builds, in three steps so the build can share
+// a submission with what fills level 0 and what filters the result: prepare_gpu_build makes the images and
+// the build's objects, record_gpu_build records the build (any number of times: a dynamic texture is
+// rebuilt every frame), finish_gpu_build reads the table's range once a submission has completed.
+// upload_gpu_built_texture (below) is the three in one submission.
+struct GpuBuild {
+    GpuTexture texture;  // what the filters bind; its chain is `built` itself for RGBA32F
+    GpuImage built;      // RGBA32F, every level, storage: where the levels are built
+    bool in_place = true; // texture.chain is built (else each level is stored into the format:)
+    bool pack = false;    // by pack_level with the host's rounding (else blitted: the device's rounding)
+    PackTarget pack_target;
+    bool with_sat = false;
+    GpuBuildKernels kernels;
+    MipBuildTarget mip;
+    SatBuildTarget sat;
+    Buffer staging;        // level 0 as RGBA32F, then packed in the format (no staging without level 0)
+    size_t float_bytes = 0;    // staging: level 0 as given at 0, packed at float_bytes,
+    size_t rounded_offset = 0; // and rounded to the format (what the table sums) here
+    // The build's own objects (not the texture's images, which destroy_texture destroys), and what a user of
+    // the build adds (a dynamic texture's generator): destroyed together by destroy_gpu_build.
+    std::shared_ptr<Cleanup> objects;
+};
+
+// level0: uploaded by the first record_gpu_build (null: the caller writes level 0 of `built` itself, in
+// GENERAL layout, before each record_gpu_build). Throws tf::Error as upload_gpu_built_texture.
+GpuBuild prepare_gpu_build(const VulkanContext& context, const Image* level0, int width, int height, bool with_sat,
+                           TextureFormat format);
+
+// Where level 0 stands when the build is recorded.
+enum class Level0 {
+    from_staging,  // first build: every image UNDEFINED; copy level 0 from the staging buffer
+    written,       // `built` in GENERAL, level 0 just written by a compute shader; the other images as the
+                   // last record_gpu_build left them (SHADER_READ_ONLY), or UNDEFINED the first time
+    written_first, // as written, the first time (texture images UNDEFINED)
+};
+// Leaves texture.chain and the tables in SHADER_READ_ONLY_OPTIMAL, visible to fragment and compute
+// shaders. For a rebuild the caller first makes the last frame's reads finish before level 0's writes
+// (built: SHADER_READ_ONLY -> GENERAL).
+void record_gpu_build(VkCommandBuffer command_buffer, GpuBuild& build, Level0 level0);
+
+// After a submission with record_gpu_build completed: texture.sat_offset and sat_scale (throws naming
+// texture_name for a non-finite texel).
+void finish_gpu_build(GpuBuild& build, const std::string& texture_name = "");
+
+// Destroys the texture and the build's objects.
+void destroy_gpu_build(const VulkanContext& context, GpuBuild& build);
+
+// upload_texture (textures.h) where the texture is built as `build` says (--build).
+// build = gpu: only chain.levels[0] is read (the rest may be missing); it is uploaded as RGBA32F and the
+// device builds every other level (and the summed-area table, with_sat) in one submission
+// (upload_gpu_built_texture). RGBA32F textures are built in place; other float formats in an RGBA32F
+// intermediate, each level then blitted into the format (the blit encodes sRGB: sRGB storage images are
+// not writable on most devices). Throws tf::Error as upload_texture, as check_gpu_build, and when the
+// device cannot store RGBA32F or blit into the format.
+GpuTexture upload_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format,
+                          TextureBuild build);
+GpuTexture upload_gpu_built_texture(const VulkanContext& context, const Image& level0, bool with_sat,
+                                    TextureFormat format);
+
+// Uploads the texture as `build` says, runs body(texture) and destroys it again, also when body throws.
+template <typename Body>
+auto with_texture(const VulkanContext& context, const MipChain& chain, bool with_sat, TextureFormat format,
+                  TextureBuild build, Body&& body)
+{
+    GpuTexture texture = upload_texture(context, chain, with_sat, format, build);
+    Cleanup cleanup;
+    cleanup.add([&] { destroy_texture(context, texture); });
+    return body(texture);
+}
+
+// The "dynamic" procedural texture made on the device every frame: a compute shader writes level 0
+// (dynamic_texture.comp.glsl, tf::dynamic_texture's integers), the GPU build completes the chain, and the
+// frame's filter reads it, all in the caller's command buffer: what a render target, a reflection probe or
+// any animated texture asks of an engine's MIP builder (bench --gpu-build's dynamic row, the viewer).
+struct DynamicTexture {
+    GpuBuild build; // RGBA32F, built in place; build.texture is what the filters bind
+    int size = 0;
+    bool first = true; // the images have no contents yet
+    VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE; // the generator's objects: in build.objects
+};
+
+// size x size (1..16384, the device's limits). No summed-area table: its range is read back after a
+// build, so a table cannot be filtered in the frame that builds it (sat filters need a static texture).
+DynamicTexture create_dynamic_texture(const VulkanContext& context, int size);
+
+// Level 0 at `frame`, then the chain, recorded into `command_buffer`; afterwards the texture is in
+// SHADER_READ_ONLY_OPTIMAL, visible to fragment and compute shaders. The previous frame's reads of the
+// texture (recorded earlier in this or an earlier submission) finish before level 0 is rewritten.
+void record_dynamic_frame(VkCommandBuffer command_buffer, DynamicTexture& texture, int frame);
+
+void destroy_dynamic_texture(const VulkanContext& context, DynamicTexture& texture);
 
 } // namespace tf

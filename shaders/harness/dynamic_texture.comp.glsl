@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Harness: level 0 of the "dynamic" texture at one frame, written into the RGBA32F chain that the GPU build
-// then completes (vulkan/dynamic_texture.cpp): tf::dynamic_texture's integer arithmetic, the same floats bit
+// then completes (vulkan/gpu_build.cpp): tf::dynamic_texture's integer arithmetic, the same floats bit
 // for bit (host/core/procedural.cpp; tests/test_gpu_build.cpp compares them).
 #include "config.h"
 

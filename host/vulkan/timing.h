@@ -1,11 +1,15 @@
 #pragma once
-// How the benchmark times a GpuRenderer's frames.
+// Timing recorded work: a frame's GPU time by timestamps or by the host's wall clock, and the time of any
+// recorded commands.
+#include "vulkan/device.h"
 #include "vulkan/render.h"
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace tf {
 
+// How the benchmark times a GpuRenderer's frames.
 // timestamps: GPU timestamps written before and after each frame's draw or dispatch, all frames in one
 // submit (real GPUs). wall_clock: one submit and wait a frame, timed on the host: lavapipe writes
 // timestamps when it records a command, not when its threads finish the work (they read 0.3 ms for a
@@ -23,7 +27,7 @@ double host_clock_ms(FrameTimer timer);
 
 // The time of `frames` frames after `warmup` untimed ones, in milliseconds each. Throws tf::Error when
 // timestamps are asked for and the queue has none. The wall clock cuts a pathologically slow case short
-// (see vulkan/frame_timer.cpp): it may return fewer than `frames` times, never none.
+// (see timing.cpp): it may return fewer than `frames` times, never none.
 std::vector<double> time_frames(GpuRenderer& renderer, int warmup, int frames, FrameTimer timer);
 
 // time_frames for several renderers that are compared with each other (a scene's baseline and filters). The wall
@@ -33,5 +37,15 @@ std::vector<double> time_frames(GpuRenderer& renderer, int warmup, int frames, F
 // Result i is renderers[i]'s times.
 std::vector<std::vector<double>> time_frames_interleaved(const std::vector<GpuRenderer*>& renderers, int warmup,
                                                          int frames, FrameTimer timer);
+
+// The time of recorded commands (a GPU build, a copy, a frame): each repeat its own submission, timed by GPU
+// timestamps around the commands (real GPUs) or by the host around submit-and-wait (CPU devices: lavapipe
+// writes timestamps when it records, not when its threads finish; see FrameTimer above).
+// Milliseconds of each of `repeats` timed runs of `record`, after `warmup` untimed ones. Throws tf::Error
+// when timestamps are asked for and the queue has none.
+std::vector<double> time_commands(const VulkanContext& context, const std::function<void(VkCommandBuffer)>& record,
+                                  int warmup, int repeats, FrameTimer timer);
+
+double median(std::vector<double> values); // of at least one value
 
 } // namespace tf

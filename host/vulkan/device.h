@@ -1,14 +1,31 @@
 #pragma once
-// Headless Vulkan: instance (optionally with validation), device listing and selection, one queue.
-// Implemented a concern a file: instance.cpp, devices.cpp, context.cpp (the device) and submit.cpp
-// (one-shot command buffers).
+// Instance and device: the loader (volk, libvulkan dlopen'ed), the instance with its validation messenger,
+// device listing and choice, the context (device, queue, command pool), one-shot submission, the device's
+// memory limits and which --format it samples and filters.
+#include "core/filter.h"
+#include "core/memory_budget.h"
+#include "core/texture_format.h"
 #include "vulkan/cleanup.h"
-#include "vulkan/loader.h"
 #include <string>
 #include <vector>
+#include <volk.h>
 
 namespace tf {
 
+// Vulkan entry points through volk, loaded at run time (dlopen of libvulkan.so.1), so that a machine
+// without a Vulkan loader gets one clear sentence instead of a dynamic-linker failure, and the reference
+// backend works with no Vulkan at all. Every vk* function the layer calls is one of volk's pointers.
+// Loads libvulkan and the global entry points. Throws tf::Error with one sentence when it can't.
+void load_vulkan();
+// After vkCreateInstance / vkCreateDevice: the instance's and then the device's entry points (volk).
+void load_instance_functions(VkInstance instance);
+void load_device_functions(VkDevice device);
+// vkDestroyInstance, then volk's instance entry points go back to the newest instance still alive (volk holds
+// one instance's: a second instance, made and destroyed while a context lives, e.g. to read a device's
+// properties, left that context with the destroyed one's vkDestroy* pointers).
+void destroy_instance(VkInstance instance);
+
+// Headless Vulkan: instance (optionally with validation), device listing and selection, one queue.
 struct DeviceInfo {
     int index = 0;
     std::string name;
@@ -63,9 +80,12 @@ struct VulkanContext {
     VkCommandPool command_pool = VK_NULL_HANDLE;
 };
 
-// Throws tf::Error when a Vulkan call fails, naming the call and the result.
+// Throws tf::Error when a Vulkan call fails, naming the call and the result: the layer's one error style.
 void vk_check(VkResult result, const char* what);
 #define TF_VK(call) ::tf::vk_check((call), #call)
+// vkDeviceWaitIdle in a destroy, which runs from a Cleanup step and must not throw: a failure (a lost
+// device) is reported on stderr and the destroy goes on (nothing can still be running on a lost device).
+void wait_idle_before_destroy(const VulkanContext& context) noexcept;
 
 // Instance only (for listing devices). Throws tf::Error with one sentence if there is no loader/driver.
 VkInstance create_instance(bool validate, VkDebugUtilsMessengerEXT* messenger,
@@ -102,5 +122,21 @@ void submit_and_wait(const VulkanContext& context, Record&& record)
 }
 
 std::string version_string(uint32_t version);
+
+// The device's memory limits as the plain numbers load_texture checks before it decodes anything.
+DeviceLimits device_limits(const DeviceInfo& device);
+
+// The Vulkan side of the --format table (core/texture_format.h): each format's VkFormat, and whether this
+// device can sample it and filter it linearly (VkFormatProperties::optimalTilingFeatures), checked before
+// any work starts.
+VkFormat vk_format(TextureFormat format);
+
+// SAMPLED_IMAGE_FILTER_LINEAR with optimal tiling on this device.
+bool format_filterable(const VulkanContext& context, TextureFormat format);
+
+// Throws tf::Error naming the device and the format when it cannot sample the format with optimal tiling
+// (and as a transfer destination), or, for options that filter through the sampler (hw-* modes, --taps
+// hardware), cannot filter it linearly; and as check_format_filter for integer formats.
+void check_format_support(const VulkanContext& context, TextureFormat format, const SamplerOptions& options);
 
 } // namespace tf

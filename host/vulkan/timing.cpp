@@ -1,6 +1,6 @@
-#include "vulkan/frame_timer.h"
+#include "vulkan/timing.h"
 #include "texture/error.h"
-#include "vulkan/frame.h"
+#include "vulkan/render.h"
 #include <algorithm>
 #include <chrono>
 #include <ctime>
@@ -53,30 +53,45 @@ std::vector<std::vector<double>> time_on_host_in_turn(const std::vector<GpuRende
     return ms;
 }
 
+// A pool of `count` timestamps, destroyed by `cleanup`. Throws where the queue writes none.
+VkQueryPool create_timestamp_pool(const VulkanContext& context, uint32_t count, Cleanup& cleanup)
+{
+    if (context.info.timestamp_valid_bits == 0 || context.info.timestamp_period_ns <= 0.0f)
+        throw Error(context.info.name + " has no timestamps on its graphics and compute queue: use the wall-clock timer");
+    VkDevice device = context.device;
+    VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    info.queryCount = count;
+    VkQueryPool pool = VK_NULL_HANDLE;
+    TF_VK(vkCreateQueryPool(device, &info, nullptr, &pool));
+    cleanup.add([=] { vkDestroyQueryPool(device, pool, nullptr); });
+    return pool;
+}
+
+// The bits of a timestamp the queue writes.
+uint64_t timestamp_mask(const VulkanContext& context)
+{
+    return context.info.timestamp_valid_bits >= 64 ? ~0ull : (1ull << context.info.timestamp_valid_bits) - 1;
+}
+
 // All frames in one submit, each bracketed by two timestamps.
 std::vector<double> time_with_timestamps(const GpuRenderer& r, int warmup, int frames)
 {
     const VulkanContext& context = *r.context;
-    if (context.info.timestamp_valid_bits == 0 || context.info.timestamp_period_ns <= 0.0f)
-        throw Error(context.info.name + " has no timestamps on its graphics and compute queue: use the wall-clock timer");
     VkDevice device = context.device;
     Cleanup cleanup;
-    VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-    info.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    info.queryCount = uint32_t(2 * frames);
-    VkQueryPool pool = VK_NULL_HANDLE;
-    TF_VK(vkCreateQueryPool(device, &info, nullptr, &pool));
-    cleanup.add([=] { vkDestroyQueryPool(device, pool, nullptr); });
+    const uint32_t count = uint32_t(2 * frames);
+    const VkQueryPool pool = create_timestamp_pool(context, count, cleanup);
 
     submit_and_wait(context, [&](VkCommandBuffer cb) {
-        vkCmdResetQueryPool(cb, pool, 0, info.queryCount);
+        vkCmdResetQueryPool(cb, pool, 0, count);
         for (int f = 0; f < warmup + frames; ++f)
             record_frame(r, cb, f < warmup ? VK_NULL_HANDLE : pool, uint32_t(2 * (f - warmup)));
     });
-    std::vector<uint64_t> ticks(info.queryCount);
-    TF_VK(vkGetQueryPoolResults(device, pool, 0, info.queryCount, ticks.size() * sizeof(uint64_t), ticks.data(),
+    std::vector<uint64_t> ticks(count);
+    TF_VK(vkGetQueryPoolResults(device, pool, 0, count, ticks.size() * sizeof(uint64_t), ticks.data(),
                                 sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
-    const uint64_t mask = context.info.timestamp_valid_bits >= 64 ? ~0ull : (1ull << context.info.timestamp_valid_bits) - 1;
+    const uint64_t mask = timestamp_mask(context);
     std::vector<double> ms(static_cast<size_t>(frames));
     for (int f = 0; f < frames; ++f) {
         uint64_t elapsed = (ticks[size_t(2 * f + 1)] - ticks[size_t(2 * f)]) & mask; // wraps within valid bits
@@ -130,6 +145,47 @@ FrameTimer parse_frame_timer(const std::string& name)
 std::string to_string(FrameTimer timer)
 {
     return timer == FrameTimer::timestamps ? "timestamps" : timer == FrameTimer::wall_clock ? "wall-clock" : "cpu-time";
+}
+
+std::vector<double> time_commands(const VulkanContext& context, const std::function<void(VkCommandBuffer)>& record,
+                                  int warmup, int repeats, FrameTimer timer)
+{
+    if (warmup < 0 || repeats < 1)
+        throw Error("time_commands: need at least one timed run");
+    for (int w = 0; w < warmup; ++w)
+        submit_and_wait(context, record);
+    std::vector<double> ms;
+    if (timer != FrameTimer::timestamps) {
+        for (int r = 0; r < repeats; ++r) {
+            const double start = host_clock_ms(timer);
+            submit_and_wait(context, record);
+            ms.push_back(host_clock_ms(timer) - start);
+        }
+        return ms;
+    }
+    VkDevice device = context.device;
+    Cleanup cleanup;
+    const VkQueryPool pool = create_timestamp_pool(context, 2, cleanup);
+    const uint64_t mask = timestamp_mask(context);
+    for (int r = 0; r < repeats; ++r) {
+        submit_and_wait(context, [&](VkCommandBuffer cb) {
+            vkCmdResetQueryPool(cb, pool, 0, 2);
+            vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool, 0);
+            record(cb);
+            vkCmdWriteTimestamp(cb, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool, 1);
+        });
+        uint64_t ticks[2] = {};
+        TF_VK(vkGetQueryPoolResults(device, pool, 0, 2, sizeof ticks, ticks, sizeof(uint64_t),
+                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+        ms.push_back(double((ticks[1] - ticks[0]) & mask) * double(context.info.timestamp_period_ns) * 1e-6);
+    }
+    return ms;
+}
+
+double median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    return values.at(values.size() / 2);
 }
 
 } // namespace tf
