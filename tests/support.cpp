@@ -181,6 +181,31 @@ std::string check_id(const std::string& name)
 
 void set_listing_checks() { g_listing_checks = true; }
 
+void named_check(const std::string& name, const std::function<std::string()>& body)
+{
+    const std::string id = check_id(name);
+    if (listing_checks()) {
+        list_check(id);
+        return;
+    }
+    DOCTEST_SUBCASE(id.c_str())
+    {
+        const int failures_before = failures();
+        limit_failure_lines(8); // the first few of a check are enough to see what went wrong
+        std::string detail;
+        try {
+            detail = body();
+        } catch (const std::exception& e) {
+            detail = std::string("exception: ") + e.what();
+            CHECK(!"the check threw", name + ": " + detail);
+        }
+        const bool failed = failures() > failures_before;
+        std::printf("%-58s %s%s%s\n", name.c_str(), failed ? "FAIL" : "PASS", detail.empty() ? "" : "  ",
+                    detail.c_str());
+        std::fflush(stdout);
+    }
+}
+
 bool listing_checks() { return g_listing_checks; }
 
 void list_check(const std::string& id) { std::printf("tf-check\t%s\t%s\n", g_case.c_str(), id.c_str()); }

@@ -89,6 +89,9 @@ std::string check_id(const std::string& name); // lower case, a-z 0-9 and '-' on
 void set_listing_checks();
 bool listing_checks();
 void list_check(const std::string& id);
+// Runs `body` as the named check `name` (its SUBCASE check_id(name), or list_check under --tf-list-checks)
+// and prints its line: name, the detail `body` returns, PASS/FAIL. At most 8 failed checks are shown.
+void named_check(const std::string& name, const std::function<std::string()>& body);
 
 // ---------------------------------------------------------------------------------------------------
 // The device and the `texfilter` command.

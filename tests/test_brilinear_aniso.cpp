@@ -32,7 +32,7 @@ using tf::test::SampleResult;
 namespace {
 
 // ---------------------------------------------------------------------------------------------------
-// Named checks: each runs CHECKs (tests/support.h) and prints one result line.
+// Named checks (test::named_check, tests/support.h): each runs CHECKs and prints one result line.
 
 // The detail lines' numbers: 9 digits.
 std::string str(double x)
@@ -40,34 +40,6 @@ std::string str(double x)
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.9g", x);
     return buf;
-}
-
-// Runs one named check (its own ctest test, brilinear_aniso.ID: support.h's TF_NAMED_CHECK) and prints its
-// line: name, an optional detail the body fills in, PASS/FAIL.
-void run_check_body(const std::string& name, const std::function<std::string()>& body)
-{
-    const int failures_before = test::failures();
-    test::limit_failure_lines(8); // the first few of a check are enough to see what went wrong
-    std::string detail;
-    try {
-        detail = body();
-    } catch (const std::exception& e) {
-        detail = std::string("exception: ") + e.what();
-        CHECK(!"the check threw", name + ": " + detail);
-    }
-    const bool failed = test::failures() > failures_before;
-    std::printf("%-58s %s%s%s\n", name.c_str(), failed ? "FAIL" : "PASS", detail.empty() ? "" : "  ", detail.c_str());
-    std::fflush(stdout);
-}
-
-void run_check(const std::string& name, const std::function<std::string()>& body)
-{
-    const std::string id = test::check_id(name);
-    if (test::listing_checks()) {
-        test::list_check(id);
-        return;
-    }
-    DOCTEST_SUBCASE(id.c_str()) { run_check_body(name, body); }
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -318,7 +290,7 @@ void reference_checks()
     };
     auto blend = [](double w) { return glm::dvec4(1, 0.5 + 0.5 * w, 0, 1); };
 
-    run_check("ref brilinear band 0.25: weights at f = 5/16 .. 11/16", [&] {
+    test::named_check("ref brilinear band 0.25: weights at f = 5/16 .. 11/16", [&] {
         // (1 - B)/2 = 3/8; w = clamp((f - 3/8) / (1/4), 0, 1): 0, 1/4, 1/2, 3/4, 1.
         CHECK_NEAR(green(0.25, 0.3125), blend(0.0), 1e-15);
         CHECK_NEAR(green(0.25, 0.375), blend(0.0), 1e-15);
@@ -329,7 +301,7 @@ void reference_checks()
         CHECK_NEAR(green(0.25, 0.6875), blend(1.0), 1e-15);
         return std::string();
     });
-    run_check("ref brilinear band 0.5 / 1 / 0: weights by hand", [&] {
+    test::named_check("ref brilinear band 0.5 / 1 / 0: weights by hand", [&] {
         CHECK_NEAR(green(0.5, 0.3125), blend(0.125), 1e-15); // (5/16 - 1/4) / (1/2)
         CHECK_NEAR(green(0.5, 0.25), blend(0.0), 1e-15);
         CHECK_NEAR(green(1.0, 0.3125), blend(0.3125), 1e-15); // band 1: w = f
@@ -338,7 +310,7 @@ void reference_checks()
         CHECK_NEAR(green(0.0, 0.5 + 1.0 / 1024), blend(1.0), 1e-15);
         return std::string();
     });
-    run_check("ref brilinear: clamps (lod-max, last level, magnification)", [&] {
+    test::named_check("ref brilinear: clamps (lod-max, last level, magnification)", [&] {
         SamplerOptions o = brilinear(0.25);
         o.lod_max = 1.5f; // lambda 9 clamps to 1.5: w = 1/2
         CHECK_NEAR(reference_sample(colors, o, lookup_texels(0.3, 0.6, 256, 512, 0, 0, 512)), blend(0.5), 1e-15);
@@ -351,14 +323,14 @@ void reference_checks()
 
     const MipChain noise = make_procedural("noise", 256);
     const std::vector<Lookup> lookups = random_lookups(2000, 7);
-    run_check("ref brilinear band 1 == trilinear (exact, 2000 x 3 wraps)", [&] {
+    test::named_check("ref brilinear band 1 == trilinear (exact, 2000 x 3 wraps)", [&] {
         for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror})
             for (const Lookup& l : lookups)
                 CHECK_NEAR(reference_sample(noise, brilinear(1.0, wrap), l),
                            reference_sample(noise, options_for(Filter::trilinear, wrap), l), 0.0);
         return std::string();
     });
-    run_check("ref brilinear band 0 == bilinear-mip (exact, 2000 x 3 wraps)", [&] {
+    test::named_check("ref brilinear band 0 == bilinear-mip (exact, 2000 x 3 wraps)", [&] {
         for (Wrap wrap : {Wrap::repeat, Wrap::clamp, Wrap::mirror})
             for (const Lookup& l : lookups)
                 CHECK_NEAR(reference_sample(noise, brilinear(0.0, wrap), l),
@@ -369,7 +341,7 @@ void reference_checks()
     // aniso, gpu shape. J = diag(8, 2) texels: Pmax/Pmin = 4 -> N = 4, lambda = log2(8/4) = 1: on mipcolors
     // every probe reads level 1 alone.
     const Lookup j82 = lookup_texels(0.3, 0.6, 256, 8, 0, 0, 2);
-    run_check("ref aniso gpu J=diag(8,2): N=4, lambda=1 (mipcolors)", [&] {
+    test::named_check("ref aniso gpu J=diag(8,2): N=4, lambda=1 (mipcolors)", [&] {
         CHECK_NEAR(reference_sample(colors, aniso(16, AnisoShape::gpu), j82), kLevel[1], 0.0);
         CHECK_NEAR(reference_sample(colors, aniso(4, AnisoShape::gpu), j82), kLevel[1], 0.0);
         // probes 2: N = 2, lambda = log2(8/2) = 2.
@@ -387,7 +359,7 @@ void reference_checks()
     // (1/16 uv each), v unchanged, on LOD 1, equal weights. J = [[0, 2], [8, 0]] (y major... x column
     // (0, 8)): probes along v.
     const MipChain small = noise_chain(16, 11);
-    run_check("ref aniso gpu: probe places and weights by hand (16x16)", [&] {
+    test::named_check("ref aniso gpu: probe places and weights by hand (16x16)", [&] {
         for (Wrap wrap : {Wrap::repeat, Wrap::mirror}) {
             auto tri = [&](double u, double v) { return reference_trilinear_at(small, 1.0, u, v, wrap); };
             double u = 0.41, v = 0.23, t = 1.0 / 16;
@@ -421,7 +393,7 @@ void reference_checks()
     // Feline: J = R(30 deg) diag(8, 2) R(-55 deg)^T has singular values 8, 2 and major axis (cos 30, sin 30):
     // N = 4, lambda = log2(max(2, 8/4)) = 1, probes at t = -3/8, -1/8, 1/8, 3/8 of the 8-texel axis
     // (-3, -1, 1, 3 texels), weights exp(-2 (2t)^2) = exp(-1.125), exp(-0.125), exp(-0.125), exp(-1.125).
-    run_check("ref aniso feline: SVD axis, N=4, lambda=1, Gaussian weights", [&] {
+    test::named_check("ref aniso feline: SVD axis, N=4, lambda=1, Gaussian weights", [&] {
         const double pi = 3.14159265358979323846, a = 30 * pi / 180, b = -55 * pi / 180;
         // J = [U0 U1] diag(8, 2) [[cos b, -sin b], [sin b, cos b]], U0 = (cos a, sin a), U1 = (-sin a, cos a).
         const double s1 = 8, s2 = 2, ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b);
@@ -445,7 +417,7 @@ void reference_checks()
         return std::string();
     });
 
-    run_check("ref aniso probes 1 == trilinear (gpu exact, feline 1e-12)", [&] {
+    test::named_check("ref aniso probes 1 == trilinear (gpu exact, feline 1e-12)", [&] {
         // Feline's single probe sits on log2(sigma1), trilinear's on log2(max column): equal only where the
         // columns are orthogonal, as they are in this set (no shear).
         std::mt19937 rng(5);
@@ -463,7 +435,7 @@ void reference_checks()
         return std::string();
     });
 
-    run_check("ref constant texture -> constant (weights sum to 1)", [&] {
+    test::named_check("ref constant texture -> constant (weights sum to 1)", [&] {
         Image flat = make_image(64, 48, glm::vec4(0.25f, 0.5f, 0.75f, 1.0f)); // NPOT-ish chain
         MipChain chain = build_mip_chain(flat);
         glm::dvec4 c(0.25, 0.5, 0.75, 1.0);
@@ -480,7 +452,7 @@ void reference_checks()
         return std::string();
     });
 
-    run_check("ref degenerate: zero -> finest, NaN/Inf -> coarsest, 0-column -> N max", [&] {
+    test::named_check("ref degenerate: zero -> finest, NaN/Inf -> coarsest, 0-column -> N max", [&] {
         const glm::dvec4 last(colors.levels.back().at(0, 0));
         for (AnisoShape shape : {AnisoShape::gpu, AnisoShape::feline}) {
             SamplerOptions o = aniso(16, shape);
@@ -575,7 +547,7 @@ void gpu_checks()
         const MipChain chain = make_procedural(c.texture, 256);
         const SamplerOptions o = brilinear(0.25, c.wrap);
         SampleResult gpu;
-        run_check("gpu brilinear 0.25 vs reference (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
+        test::named_check("gpu brilinear 0.25 vs reference (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
             gpu = sample(c.texture, flags("brilinear", c.wrap) + " --band 0.25", path);
             Tally tally;
             for (size_t i = 0; i < lookups.size(); ++i) {
@@ -592,7 +564,7 @@ void gpu_checks()
             check_caps(gpu);
             return tally.summary();
         });
-        run_check("gpu brilinear 0.25 fetches: 4 outside the band, 8 inside (" + c.texture + ")", [&] {
+        test::named_check("gpu brilinear 0.25 fetches: 4 outside the band, 8 inside (" + c.texture + ")", [&] {
             if (gpu.colors.empty()) // run on its own (each check is its own ctest test)
                 gpu = sample(c.texture, flags("brilinear", c.wrap) + " --band 0.25", path);
             int outside = 0, inside = 0, skipped = 0;
@@ -615,11 +587,11 @@ void gpu_checks()
     }
     {
         const std::string t = "noise";
-        run_check("gpu brilinear band 1 == trilinear (bit for bit)", [&] {
+        test::named_check("gpu brilinear band 1 == trilinear (bit for bit)", [&] {
             return same_results(sample(t, flags("brilinear", Wrap::repeat) + " --band 1", path),
                                 sample(t, flags("trilinear", Wrap::repeat), path));
         });
-        run_check("gpu brilinear band 0 == bilinear-mip (bit for bit)", [&] {
+        test::named_check("gpu brilinear band 0 == bilinear-mip (bit for bit)", [&] {
             SampleResult band = sample(t, flags("brilinear", Wrap::clamp) + " --band 0", path);
             for (const LookupStats& stats : band.stats)
                 CHECK_EQ(double(stats.texel_fetches), 4.0);
@@ -629,7 +601,7 @@ void gpu_checks()
 
     // The nearest-level tie: rho = 1 texel and a bias of 3/2 gives lambda = 1.5 exactly (level 1, the finer);
     // 1.5 + 2^-23 (the next float) must pick level 2, as ceil(d + 1/2) - 1 does in exact arithmetic.
-    run_check("gpu brilinear band 0 at the tie f = 1/2 and 1/2 + 1 ulp", [&] {
+    test::named_check("gpu brilinear band 0 at the tie f = 1/2 and 1/2 + 1 ulp", [&] {
         const std::string tie = (test::work_dir() / "tie.csv").string();
         test::write_lookups_csv(tie, {{0.3, 0.6, 1.0 / 256, 0, 0, 1.0 / 256}});
         const MipChain colors = make_procedural("mipcolors", 256);
@@ -652,7 +624,7 @@ void gpu_checks()
     // one level is read (lod.glsl tfi_log2; without it trilinear read 8 texels, aniso 32, for a level-2 weight
     // of ~1e-7), and the colour is level 1's. J = 2 (1 + 2^-23) texels (trilinear, brilinear's band 0.25 is
     // the same), diag(8 (1 + 2^-23), 2) for aniso (N = 4).
-    run_check("gpu lod within float rounding of a level reads that level alone", [&] {
+    test::named_check("gpu lod within float rounding of a level reads that level alone", [&] {
         const std::string path = (test::work_dir() / "near-level.csv").string();
         const double t = 1.0 / 256, up = 1.0 + std::ldexp(1.0, -23);
         test::write_lookups_csv(path, {{0.3, 0.6, 2 * up * t, 0, 0, 2 * up * t}, {0.3, 0.6, 8 * up * t, 0, 0, 2 * t}});
@@ -668,7 +640,7 @@ void gpu_checks()
     // Known footprints on mipcolors (each level one colour), counted: J = diag(8, 2) texels -> N = 4 on
     // LOD 1 exactly (4 fetches a probe: 16); diag(8, 3) -> N = 3, LOD log2(8/3) (24 fetches); one column
     // (64, 0) -> N = 16, LOD 2 (64 fetches); zero -> level 0, NaN -> the last level, one probe (4 fetches).
-    run_check("gpu aniso known footprints: N, LOD, fetches (mipcolors)", [&] {
+    test::named_check("gpu aniso known footprints: N, LOD, fetches (mipcolors)", [&] {
         const std::string known = (test::work_dir() / "known.csv").string();
         const double t = 1.0 / 256;
         const std::vector<Lookup> ls = {{0.3, 0.6, 8 * t, 0, 0, 2 * t},  {0.3, 0.6, 8 * t, 0, 0, 3 * t},
@@ -713,7 +685,7 @@ void gpu_checks()
                 layouts.push_back(layout_of(chain, o, l));
                 edge.push_back(knife_edge_count(layouts.back(), 16));
             }
-            run_check("gpu aniso " + s + " manual vs reference (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
+            test::named_check("gpu aniso " + s + " manual vs reference (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
                 manual = sample(c.texture, f + " --taps manual", path);
                 Tally tally;
                 for (size_t i = 0; i < lookups.size(); ++i) {
@@ -730,7 +702,7 @@ void gpu_checks()
                 check_caps(manual);
                 return tally.summary();
             });
-            run_check("gpu aniso " + s + " manual fetches = 8N (4N on a level) (" + c.texture + ")", [&] {
+            test::named_check("gpu aniso " + s + " manual fetches = 8N (4N on a level) (" + c.texture + ")", [&] {
                 if (manual.colors.empty()) // run on its own (each check is its own ctest test)
                     manual = sample(c.texture, f + " --taps manual", path);
                 double mean = 0;
@@ -749,7 +721,7 @@ void gpu_checks()
                 }
                 return "mean " + str(mean / checked) + " fetches over " + std::to_string(checked) + " lookups";
             });
-            run_check("gpu aniso " + s + " hardware vs manual taps (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
+            test::named_check("gpu aniso " + s + " hardware vs manual taps (" + c.texture + ", " + to_string(c.wrap) + ")", [&] {
                 hardware = sample(c.texture, f + " --taps hardware", path);
                 if (manual.colors.empty())
                     manual = sample(c.texture, f + " --taps manual", path);
@@ -773,14 +745,14 @@ void gpu_checks()
             });
         }
     }
-    run_check("gpu aniso gpu --probes 1 == trilinear (bit for bit)", [&] {
+    test::named_check("gpu aniso gpu --probes 1 == trilinear (bit for bit)", [&] {
         return same_results(sample("zoneplate", flags("aniso", Wrap::mirror) + " --probes 1", path),
                             sample("zoneplate", flags("trilinear", Wrap::mirror), path));
     });
     // A finite uv whose texel coordinate overflows float (u * 512 > 3.4e38) once gave NaN weights (Inf - Inf)
     // in every bilinear-based manual form; the coordinate is clamped to +-2^24 now. The value is that of some
     // texel, so only finiteness and the [0, 1] range of a checker are asserted.
-    run_check("gpu huge finite uv: manual bilinear-based forms stay finite", [&] {
+    test::named_check("gpu huge finite uv: manual bilinear-based forms stay finite", [&] {
         const std::vector<Lookup> huge = {{1e38, 0.5, 0.001, 0, 0, 0.001}, {-3e38, 1e38, 0.01, 0, 0, 0.02},
                                           {3.4e38, -3.4e38, 0.003, 0.002, -0.001, 0.004}};
         const std::string huge_path = (test::work_dir() / "huge.csv").string();
