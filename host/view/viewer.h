@@ -86,9 +86,17 @@ struct Viewer {
     WrittenFiles written; // the screenshots' files: the only existing files a screenshot replaces
 };
 
-int run_viewer(const ViewOptions& options);
+// The files below call one way only, so a change followed from the CLI, a key or a script line enters each
+// file once: viewer.cpp (the lifetime and the loop) -> input.cpp, script_runner.cpp -> screenshot.cpp ->
+// frame.cpp -> ui.cpp -> viewer_state.cpp -> scene_images.cpp and vulkan/.
 
-// viewer.cpp
+// viewer.cpp: checks, window, device, the loop, teardown.
+int run_viewer(const ViewOptions& options);
+void take_dropped_files(Viewer& viewer); // a file dropped onto the window becomes the texture
+// The acquire semaphore, the frame fence, the command pool and buffer; destroyed by `cleanup`.
+void create_frame_objects(Viewer& viewer, Cleanup& cleanup);
+
+// viewer_state.cpp: the state applied and queried; calls none of the files above it.
 SceneParams current_scene(const Viewer& viewer);
 void scene_changed(Viewer& viewer); // camera, frame, size or scene: images start over, the camera counts as moving
 // The view layer's one error style: what the viewer refuses throws tf::Error (a texture that does not load,
@@ -99,14 +107,7 @@ void scene_changed(Viewer& viewer); // camera, frame, size or scene: images star
 void apply_state(Viewer& viewer, const ViewState& next);
 // Runs `change`: its tf::Error's message, or "" when it went through.
 std::string problem_of(const std::function<void()>& change);
-// Renders and presents one frame; with_ui false: the scene alone (screenshots). Returns false when there
-// was nothing to present to (minimised).
-// capture (or null): the presented image is also copied there (screenshots).
-bool draw_frame(Viewer& viewer, bool with_ui, const Buffer* capture = nullptr);
-// Renders every half to completion at full size (screenshots).
-void finish_images(Viewer& viewer);
 std::string view_title(const Viewer& viewer);
-
 // The dynamic texture made and built on the device, frame by frame (the viewer's SceneImages::dynamic).
 bool rebuilt_on_device(const TextureSource& texture);
 bool texture_animates(const Viewer& viewer); // rebuilt on the device and animating
@@ -114,13 +115,17 @@ bool texture_animates(const Viewer& viewer); // rebuilt on the device and animat
 void advance_texture_frame(Viewer& viewer);
 // Throws tf::Error when the texture has no frames.
 void set_viewer_texture_frame(Viewer& viewer, int frame);
-
-void upload_compose_images(Viewer& viewer); // the halves' images into the composition pass's buffers
 bool moving_now(const Viewer& viewer);      // the camera moved within the settle time, or it or the texture animates
 bool images_complete(const Viewer& viewer); // every half at full size with all its samples
-void take_dropped_files(Viewer& viewer);    // a file dropped onto the window becomes the texture
-// The acquire semaphore, the frame fence, the command pool and buffer; destroyed by `cleanup`.
-void create_frame_objects(Viewer& viewer, Cleanup& cleanup);
+
+// frame.cpp: one frame drawn.
+// Renders and presents one frame; with_ui false: the scene alone (screenshots). Returns false when there
+// was nothing to present to (minimised).
+// capture (or null): the presented image is also copied there (screenshots).
+bool draw_frame(Viewer& viewer, bool with_ui, const Buffer* capture = nullptr);
+// Renders every half to completion at full size (screenshots).
+void finish_images(Viewer& viewer);
+void upload_compose_images(Viewer& viewer); // the halves' images into the composition pass's buffers
 
 // screenshot.cpp: the frame just presented (the scene alone, or with_ui the whole window) to PNG, and beside a
 // scene screenshot PATH.txt (the texfilter render lines) and PATH.json (the state, for --state). Refused,
