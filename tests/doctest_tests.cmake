@@ -12,6 +12,8 @@ function(tf_add_doctest name)
   add_executable(${target} ${target}.cpp)
   target_link_libraries(${target} PRIVATE texfilter_test_support)
   target_compile_options(${target} PRIVATE ${TF_WARNINGS})
+  # The test list is written when the executable links: relink when the script that writes it changes.
+  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/list_doctest_cases.cmake)
 
   set(tests_file ${CMAKE_CURRENT_BINARY_DIR}/${target}_tests.cmake)
   add_custom_command(

@@ -55,7 +55,10 @@ foreach(line IN LISTS lines)
     list(APPEND names "${test}")
     string(APPEND script "add_test([==[${test}]==] [==[${EXECUTABLE}]==] [==[--test-case=${case}]==] ${subcase})\n"
            "set_tests_properties([==[${test}]==] PROPERTIES ENVIRONMENT [==[${ENVIRONMENT}]==]"
-           " LABELS [==[${labels}]==] SKIP_REGULAR_EXPRESSION [==[SKIP: .* lacks ]==])\n")
+           " LABELS [==[${labels}]==] SKIP_REGULAR_EXPRESSION [==[SKIP: .* lacks ]==]"
+           # A case runs in process, GPU work included: a hung device stops here, not at ctest's 1500 s. The
+           # slowest case takes ~12 s on lavapipe with 2 cores.
+           " TIMEOUT 300)\n")
     if(FIXTURES)
       string(APPEND script "set_tests_properties([==[${test}]==] PROPERTIES FIXTURES_REQUIRED [==[${FIXTURES}]==])\n")
     endif()
