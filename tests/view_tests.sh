@@ -39,12 +39,33 @@ fail() {
     failed=1
 }
 
+# with_xvfb SCREEN COMMAND...: runs COMMAND with DISPLAY on an X server of its own (SCREEN: WxHxDEPTH), stopped
+# afterwards; returns COMMAND's status. Xvfb picks a free display and writes its number to -displayfd's
+# descriptor, so two tests never race for one (xvfb-run -a can), and nothing is left in /tmp.
+with_xvfb() {
+    local screen=$1 xvfb status=0
+    shift
+    : >display.txt
+    Xvfb -displayfd 3 -screen 0 "$screen" -nolisten tcp 3>display.txt >xvfb.log 2>&1 &
+    xvfb=$!
+    for _ in $(seq 100); do [[ -s display.txt ]] && break; sleep 0.1; done
+    if [[ ! -s display.txt ]]; then
+        kill "$xvfb" 2>/dev/null || true
+        echo "Xvfb did not start: $(cat xvfb.log)" >&2
+        return 1
+    fi
+    DISPLAY=:$(head -n1 display.txt) "$@" || status=$?
+    kill "$xvfb" 2>/dev/null || true
+    wait "$xvfb" 2>/dev/null || true
+    return "$status"
+}
+
 # view SCRIPT_TEXT [FLAGS...]: runs the viewer on a script under its own X server; sets rc.
 view() {
     printf '%s\n' "$1" >script.txt
     shift
     rc=0
-    timeout 300 xvfb-run -a -s "-screen 0 1280x1024x24" "$TEXFILTER" view --script script.txt --size "$SIZE" "$@" \
+    with_xvfb 1280x1024x24 timeout 300 "$TEXFILTER" view --script script.txt --size "$SIZE" "$@" \
         >view.stdout 2>view.stderr || rc=$?
 }
 
@@ -78,7 +99,7 @@ same_as_render() {
 # and the script holds its frame, captures the X root into root.xwd (the server is the test's own); sets rc.
 view_and_capture() {
     rc=0
-    xvfb-run -a -s "-screen 0 640x480x24" bash -c '
+    with_xvfb 640x480x24 bash -c '
         "$1" view --script script.txt --size 256x256 >view.stdout 2>view.stderr & pid=$!
         for i in $(seq 600); do [[ -s $2 ]] && break; sleep 0.1; done
         sleep 1
@@ -361,7 +382,7 @@ side-files)
     printf '%s\n' "texture checker --texture-size 64" "ui off" "screenshot twice.png" "camera fly 0.1 0.05 0.3" \
         "screenshot twice.png" "hold 5000" "screenshot late.png" "quit" >script.txt
     rc=0
-    xvfb-run -a -s "-screen 0 640x480x24" bash -c '
+    with_xvfb 640x480x24 bash -c '
         "$1" view --script script.txt --size 256x256 >view.stdout 2>view.stderr & pid=$!
         for i in $(seq 600); do grep -q -- --camera twice.txt 2>/dev/null && break; sleep 0.1; done
         echo "my notes" >late.txt
