@@ -45,7 +45,7 @@ fail() {
 with_xvfb() {
     local screen=$1 xvfb status=0
     shift
-    : >display.txt
+    : >display.txt # emptied before Xvfb starts: the wait below must not read an earlier server's number
     Xvfb -displayfd 3 -screen 0 "$screen" -nolisten tcp 3>display.txt >xvfb.log 2>&1 &
     xvfb=$!
     for _ in $(seq 100); do [[ -s display.txt ]] && break; sleep 0.1; done
